@@ -1,0 +1,41 @@
+#pragma once
+/// \file
+/// Principal stresses and the paper's failure criteria (Section 2.1, Eq. 11, Fig. 3). Tension positive.
+#include <array>
+
+namespace hm::analytic {
+
+/// Principal values of a symmetric 2D tensor, sigma_1 >= sigma_2, and the angle (rad) of sigma_1's
+/// direction from the x axis.
+struct Principal2D {
+  double sigma_1;
+  double sigma_2;
+  double angle;
+};
+Principal2D principal_stresses(double s_xx, double s_yy, double s_xy);
+
+/// Largest and smallest of three principal stresses (e.g. sigma_r, sigma_theta, sigma_z).
+struct MajorMinor {
+  double sigma_1;  ///< major (most tensile)
+  double sigma_3;  ///< minor (most compressive)
+};
+MajorMinor major_minor(const std::array<double, 3>& principal);
+
+/// Coulomb stress of Eq. 11: [(1 + mu_i^2)^(1/2) + mu_i]^2 sigma_1 - sigma_3 (tension positive;
+/// shear failure when it exceeds C_u). Equivalent to the compression-positive Coulomb line
+/// sigma_1' = C_u + K sigma_3' with K = [(1+mu^2)^(1/2)+mu]^2.
+double coulomb_stress(double sigma_1, double sigma_3, double friction);
+
+/// Failure mode of a stress state against T_u and C_u; `none` if neither criterion is met.
+enum class FailureMode { none, tensile, shear };
+
+/// Which criterion a stress state exceeds, and by how much relative to its strength
+/// (max(sigma_1/T_u, sigma_CC/C_u)); the mode is the one with the larger ratio.
+struct FailureCheck {
+  FailureMode mode;
+  double ratio;  ///< >= 1 means failure
+};
+FailureCheck check_failure(double sigma_1, double sigma_3, double tensile_strength,
+                           double compressive_strength, double friction);
+
+}  // namespace hm::analytic

@@ -1,0 +1,60 @@
+#include "hm/analytic/physical_parameters.hpp"
+
+#include "hm/analytic/biot_modulus.hpp"
+#include "hm/analytic/input_error.hpp"
+#include "hm/analytic/validation.hpp"
+
+namespace hm::analytic {
+
+void PhysicalParameters::validate() const {
+  require_positive(E_si, "E");
+  require_open(nu, "nu", 0.0, 0.5);
+  require_positive(k_si, "k");
+  require_positive(k_f_si, "k_f");
+  require_positive(mu_si, "mu");
+  require_non_negative(q_si, "q");
+  require_positive(R_si, "R");
+  require_half_open(R_i_si, "R_i", 0.0, R_si);
+  require_open(porosity, "porosity", 0.0, 1.0);
+  require_positive(K_w_si, "K_w");
+  require_closed(b, "b", 0.0, 1.0);
+  require_positive(T_u_si, "T_u");
+  require_positive(C_u_si, "C_u");
+  require_non_negative(mu_i, "mu_i");
+  // Eq. 22 gives E/M <= 0 when b is well below the porosity: no physical Biot modulus.
+  if (E_over_M_eq22(b, nu, porosity, E_si / K_w_si) <= 0.0)
+    throw InputError("b = " + format_value(b) + ", allowed: b large enough that Eq. 22 gives M > 0 (porosity = " +
+                     format_value(porosity) + ")");
+}
+
+void DimensionlessParameters::validate() const {
+  material.validate();
+  require_non_negative(Q, "Q");
+  require_positive(iota, "iota");
+  require_half_open(R_i, "R_i", 0.0, 1.0);
+  require_positive(tensile_strength, "tensile_strength");
+  require_positive(compressive_strength, "compressive_strength");
+  require_non_negative(friction, "friction");
+}
+
+DimensionlessParameters to_dimensionless(const PhysicalParameters& phys, VolStrain vol_strain) {
+  phys.validate();
+  DimensionlessParameters d;
+  d.material.nu = phys.nu;
+  d.material.b = phys.b;
+  d.material.E_over_M = E_over_M_eq22(phys.b, phys.nu, phys.porosity, phys.E_si / phys.K_w_si);
+  d.material.vol_strain = vol_strain;
+  d.Q = phys.mu_si * phys.q_si / (phys.k_si * phys.E_si);
+  d.iota = phys.k_f_si / phys.k_si;
+  d.R_i = phys.R_i_si / phys.R_si;
+  d.tensile_strength = phys.T_u_si / phys.E_si;
+  d.compressive_strength = phys.C_u_si / phys.E_si;
+  d.friction = phys.mu_i;
+  return d;
+}
+
+Scales scales_of(const PhysicalParameters& phys) {
+  return {phys.R_si, phys.E_si, phys.mu_si * phys.R_si * phys.R_si / (phys.k_si * phys.E_si)};
+}
+
+}  // namespace hm::analytic

@@ -1,0 +1,33 @@
+#include "hm/analytic/poroelastic_parameters.hpp"
+
+#include "hm/analytic/input_error.hpp"
+#include "hm/analytic/validation.hpp"
+
+namespace hm::analytic {
+
+VolStrain parse_vol_strain(std::string_view text, std::string_view key) {
+  if (text == "plane-strain") return VolStrain::plane_strain;
+  if (text == "appendix-a") return VolStrain::appendix_a;
+  throw InputError(std::string(key) + " = \"" + std::string(text) +
+                   "\", allowed: \"plane-strain\" or \"appendix-a\"");
+}
+
+std::string to_string(VolStrain v) {
+  return v == VolStrain::plane_strain ? "plane-strain" : "appendix-a";
+}
+
+double vol_strain_factor(VolStrain v) { return v == VolStrain::plane_strain ? 1.0 : 1.0 / 3.0; }
+
+void PoroelasticParameters::validate() const {
+  require_open(nu, "nu", 0.0, 0.5);
+  require_closed(b, "b", 0.0, 1.0);
+  require_positive(E_over_M, "E_over_M");
+}
+
+double oedometric_compliance(double nu) { return (1.0 + nu) * (1.0 - 2.0 * nu) / (1.0 - nu); }
+
+double storage_coefficient(const PoroelasticParameters& m) {
+  return m.E_over_M + vol_strain_factor(m.vol_strain) * m.b * m.b * oedometric_compliance(m.nu);
+}
+
+}  // namespace hm::analytic
