@@ -1,3 +1,62 @@
+// hmlattice — command-line front end of the toolkit (Ulven & Sun 2017).
+//
+//   hmlattice verify [--tier quick|paper] [--out DIR]     run the verification suite, write a report
+//   hmlattice analytic rudnicki --Q 0.1 --b 0.5 --t 3e-4 --r 0.01,0.02   closed forms as CSV
+//
+// Exit codes: 0 success; 1 a verification check failed; 2 bad input (one line on stderr naming the
+// parameter, the value and what is allowed; nothing is written).
+#include <CLI/CLI.hpp>
 #include <iostream>
-#include "hm/verification/version.hpp"
-int main() { std::cout << "hmlattice " << hm::verification::version() << "\n"; }
+#include <string>
+
+#include "commands.hpp"
+#include "hm/analytic/input_error.hpp"
+
+namespace {
+
+std::string joined(int argc, char** argv) {
+  std::string s;
+  for (int i = 0; i < argc; ++i) s += (i ? " " : "") + std::string(argv[i]);
+  return s;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"hmlattice: fluid-driven fracture in porous rock, verified (Ulven & Sun 2017)", "hmlattice"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", HM_VERSION);
+  int exit_code = 0;
+  hm::app::add_verify_command(app, exit_code, joined(argc, argv));
+  hm::app::add_analytic_command(app, exit_code);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::string what = e.what();
+    if (argc > 1 && argv[1][0] != '-') {
+      std::string allowed;
+      bool known = false;
+      for (const auto* sub : app.get_subcommands([](CLI::App*) { return true; })) {
+        allowed += (allowed.empty() ? "" : ", ") + sub->get_name();
+        known = known || sub->get_name() == argv[1];
+      }
+      if (!known) what = std::string("unknown subcommand '") + argv[1] + "', allowed: " + allowed;
+    }
+    std::cerr << "hmlattice: " << what << " (see hmlattice --help)\n";
+    return 2;
+  } catch (const hm::InputError& e) {
+    std::cerr << "hmlattice: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "hmlattice: error: " << e.what() << "\n";
+    return 1;
+  }
+  return exit_code;
+}

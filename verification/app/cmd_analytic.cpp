@@ -1,0 +1,155 @@
+// hmlattice analytic <solution>: evaluate a closed-form solution of analytic/ and print CSV
+// (a header row, then one row per radius) to stdout. Dimensionless, tension positive.
+#include <iostream>
+#include <memory>
+
+#include "commands.hpp"
+#include "hm/analytic/biot_modulus.hpp"
+#include "hm/analytic/lame.hpp"
+#include "hm/analytic/rudnicki.hpp"
+#include "hm/analytic/sneddon.hpp"
+#include "hm/analytic/steady_borehole.hpp"
+#include "hm/analytic/validation.hpp"
+#include "hm/verification/csv_writer.hpp"
+
+namespace hm::app {
+
+namespace {
+
+using namespace hm::analytic;
+using verification::CsvWriter;
+
+const std::vector<std::string> radial_columns = {"r", "p", "u_r", "sigma_r", "sigma_theta", "sigma_z"};
+
+void print_radial(const std::vector<double>& radii, const std::function<RadialState(double)>& state) {
+  CsvWriter w(std::cout, radial_columns);
+  for (double r : radii) {
+    const RadialState s = state(r);
+    w.row({r, s.p, s.u_r, s.sigma_r, s.sigma_theta, s.sigma_z});
+  }
+}
+
+void require_radii_within(const std::vector<double>& radii, const char* name, double lo, double hi) {
+  for (double r : radii) require_closed(r, name, lo, hi);
+}
+
+CLI::Option* add_radii(CLI::App* cmd, std::vector<double>& radii, const char* name = "--r") {
+  return cmd->add_option(name, radii, "comma-separated positions")->delimiter(',')->required();
+}
+
+void add_rudnicki(CLI::App* parent) {
+  struct Args {
+    double Q = 0.1, b = 0.5, nu = 0.25, t = 3e-4, E_over_M = -1;
+    std::string vol_strain = "plane-strain";
+    std::vector<double> r;
+  };
+  auto a = std::make_shared<Args>();
+  auto* cmd = parent->add_subcommand("rudnicki", "Line source in an unbounded plane (Section 3.1)");
+  cmd->add_option("--Q", a->Q, "injection rate")->capture_default_str();
+  cmd->add_option("--b", a->b, "Biot coefficient")->capture_default_str();
+  cmd->add_option("--nu", a->nu, "Poisson ratio")->capture_default_str();
+  cmd->add_option("--t", a->t, "time since injection started")->capture_default_str();
+  cmd->add_option("--E_over_M", a->E_over_M, "E/M [default: Eq. 22 with Table 1's porosity, K_w, E]");
+  cmd->add_option("--vol_strain", a->vol_strain, "plane-strain or appendix-a")->capture_default_str();
+  add_radii(cmd, a->r);
+  cmd->callback([a] {
+    PoroelasticParameters m;
+    m.b = a->b;
+    m.nu = a->nu;
+    m.E_over_M = a->E_over_M < 0 ? E_over_M_table1(a->b, a->nu) : a->E_over_M;
+    m.vol_strain = parse_vol_strain(a->vol_strain);
+    m.validate();
+    require_non_negative(a->Q, "Q");
+    require_positive(a->t, "t");
+    for (double r : a->r) require_positive(r, "r");
+    const RudnickiLineSource sol(a->Q, m);
+    print_radial(a->r, [&](double r) { return sol.state(r, a->t); });
+  });
+}
+
+void add_borehole_steady(CLI::App* parent) {
+  struct Args {
+    double Q = 0.01, b = 0.5, nu = 0.25, Ri = 0.138;
+    std::vector<double> r;
+  };
+  auto a = std::make_shared<Args>();
+  auto* cmd = parent->add_subcommand("borehole-steady", "Steady borehole injection (Appendix B, corrected)");
+  cmd->add_option("--Q", a->Q, "injection rate")->capture_default_str();
+  cmd->add_option("--b", a->b, "Biot coefficient")->capture_default_str();
+  cmd->add_option("--nu", a->nu, "Poisson ratio")->capture_default_str();
+  cmd->add_option("--Ri", a->Ri, "borehole radius R_i/R")->capture_default_str();
+  add_radii(cmd, a->r);
+  cmd->callback([a] {
+    require_non_negative(a->Q, "Q");
+    require_closed(a->b, "b", 0.0, 1.0);
+    require_open(a->nu, "nu", 0.0, 0.5);
+    require_open(a->Ri, "Ri", 0.0, 1.0);
+    require_radii_within(a->r, "r", a->Ri, 1.0);
+    const SteadyBorehole sol(a->Q, a->b, a->nu, a->Ri);
+    print_radial(a->r, [&](double r) { return sol.state(r); });
+  });
+}
+
+void add_sneddon(CLI::App* parent) {
+  struct Args {
+    double p = 1e-3, c = 0.1, nu = 0.25;
+    std::vector<double> x;
+  };
+  auto a = std::make_shared<Args>();
+  auto* cmd = parent->add_subcommand("sneddon", "Pressurised crack aperture (Appendix C, Eq. C1)");
+  cmd->add_option("--p", a->p, "crack pressure p/E")->capture_default_str();
+  cmd->add_option("--c", a->c, "crack half length")->capture_default_str();
+  cmd->add_option("--nu", a->nu, "Poisson ratio")->capture_default_str();
+  add_radii(cmd, a->x, "--x");
+  cmd->callback([a] {
+    require_non_negative(a->p, "p");
+    require_positive(a->c, "c");
+    require_open(a->nu, "nu", 0.0, 0.5);
+    for (double x : a->x) require_finite(x, "x");
+    const SneddonCrack crack{a->p, a->c, a->nu};
+    CsvWriter w(std::cout, {"x", "w"});
+    for (double x : a->x) w.row({x, crack.half_aperture(x)});
+  });
+}
+
+void add_lame(CLI::App* parent) {
+  struct Args {
+    double pi = 1e-3, po = 0.0, Ri = 0.138, Ro = 1.0, nu = 0.25;
+    std::vector<double> r;
+  };
+  auto a = std::make_shared<Args>();
+  auto* cmd = parent->add_subcommand("lame", "Thick-walled cylinder, plane strain (pressures positive inward)");
+  cmd->add_option("--pi", a->pi, "inner pressure")->capture_default_str();
+  cmd->add_option("--po", a->po, "outer pressure")->capture_default_str();
+  cmd->add_option("--Ri", a->Ri, "inner radius")->capture_default_str();
+  cmd->add_option("--Ro", a->Ro, "outer radius")->capture_default_str();
+  cmd->add_option("--nu", a->nu, "Poisson ratio")->capture_default_str();
+  add_radii(cmd, a->r);
+  cmd->callback([a] {
+    require_finite(a->pi, "pi");
+    require_finite(a->po, "po");
+    require_positive(a->Ro, "Ro");
+    require_open(a->Ri, "Ri", 0.0, a->Ro);
+    require_open(a->nu, "nu", 0.0, 0.5);
+    require_radii_within(a->r, "r", a->Ri, a->Ro);
+    const LameCylinder sol(a->pi, a->po, a->Ri, a->Ro, a->nu);
+    CsvWriter w(std::cout, {"r", "u_r", "sigma_r", "sigma_theta", "sigma_z"});
+    for (double r : a->r) {
+      const RadialState s = sol.state(r);
+      w.row({r, s.u_r, s.sigma_r, s.sigma_theta, s.sigma_z});
+    }
+  });
+}
+
+}  // namespace
+
+void add_analytic_command(CLI::App& app, int& /*exit_code*/) {
+  auto* cmd = app.add_subcommand("analytic", "Print a closed-form solution as CSV");
+  cmd->require_subcommand(1);
+  add_rudnicki(cmd);
+  add_borehole_steady(cmd);
+  add_sneddon(cmd);
+  add_lame(cmd);
+}
+
+}  // namespace hm::app

@@ -1,0 +1,11 @@
+#pragma once
+// The subcommands of `hmlattice`. Each adds itself to the CLI11 app; its callback runs the
+// command and stores the process exit code in `exit_code` (0 ok, 1 failed checks).
+#include <CLI/CLI.hpp>
+
+namespace hm::app {
+
+void add_analytic_command(CLI::App& app, int& exit_code);
+void add_verify_command(CLI::App& app, int& exit_code, const std::string& command_line);
+
+}  // namespace hm::app

@@ -1,0 +1,82 @@
+#pragma once
+/// \file
+/// The verification harness's vocabulary: a benchmark is a small descriptor (what is compared with
+/// what, how, and why the tolerance is what it is) plus a function that runs it and returns metrics.
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace hm::verification {
+
+/// quick: seconds, runs in CI on every change. paper: paper resolution, runs on request.
+enum class Tier { quick, paper };
+
+/// How a metric's value is judged against its reference and tolerance.
+enum class Comparison {
+  abs_error,  ///< |value - reference| <= tolerance
+  rel_error,  ///< |value - reference| <= tolerance * |reference|
+  at_most,    ///< value <= tolerance (reference shown for context, e.g. an error norm)
+  at_least,   ///< value >= tolerance (e.g. an observed convergence order floor)
+};
+
+/// One checked number. `gating` metrics decide the exit code of `hmlattice verify`; non-gating ones
+/// (e.g. the paper's own reading of its figures) are reported beside the paper's value but never
+/// fail the run, so nothing is tuned to hit them.
+struct Metric {
+  std::string name;           ///< what is measured, e.g. "max |p - p_B3| / p_h"
+  double value = 0.0;         ///< what the toolkit computed
+  double reference = 0.0;     ///< what it is compared with (analytic, 1D, paper)
+  double tolerance = 0.0;     ///< see Comparison
+  Comparison comparison = Comparison::abs_error;
+  std::string justification;  ///< where the tolerance comes from
+  bool gating = true;
+
+  bool passes() const;
+};
+
+/// A free-form table for the report (convergence table, paper-vs-toolkit table).
+struct Table {
+  std::string title;
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;
+};
+
+/// A figure drawn by figures/<script> from CSV files the benchmark wrote into the data folder.
+/// The script is called as: python3 figures/<script> --data <data_dir> --out <figure_dir>, and
+/// must write <figure_dir>/<file> (PNG; PDF beside it).
+struct Figure {
+  std::string script;   ///< e.g. "verify_borehole_steady.py"
+  std::string file;     ///< e.g. "verify_borehole_steady.png"
+  std::string caption;
+};
+
+struct BenchmarkResult {
+  std::vector<Metric> metrics;
+  std::vector<Table> tables;
+  std::vector<Figure> figures;
+  std::vector<std::string> notes;  ///< one paragraph each, markdown
+};
+
+/// What a benchmark may use while it runs.
+struct BenchmarkContext {
+  Tier tier = Tier::quick;
+  std::filesystem::path data_dir;  ///< write CSV for figures here (exists)
+};
+
+struct Benchmark {
+  std::string id;           ///< short, unique, file-name safe: "analytic.steady_borehole"
+  std::string title;        ///< heading in the report
+  std::string description;  ///< what is compared with what (markdown)
+  /// quick benchmarks run in both tiers; paper benchmarks only in the paper tier.
+  Tier tier = Tier::quick;
+  std::function<BenchmarkResult(const BenchmarkContext&)> run;
+};
+
+/// Every registered benchmark, in report order. Each module's benchmarks are added by one
+/// function (add_analytic_benchmarks, ...), listed in registry.cpp: adding one is a few lines.
+const std::vector<Benchmark>& all_benchmarks();
+
+void add_analytic_benchmarks(std::vector<Benchmark>& into);
+
+}  // namespace hm::verification

@@ -1,0 +1,77 @@
+#pragma once
+/// \file
+/// Reading simulation cases (TOML, toml11). Every key is consumed exactly once by the code that
+/// understands it; whatever is left over is an error, so a misspelt key never passes silently.
+/// All errors are hm::InputError with one line: "<file>: [<table>] <key> = <value>, allowed: <rule>".
+#include <filesystem>
+#include <optional>
+#include <set>
+#include <string>
+#include <toml.hpp>
+#include <vector>
+
+#include "hm/analytic/physical_parameters.hpp"
+
+namespace hm::verification {
+
+/// One TOML table being read; remembers which keys were used.
+class CaseTable {
+ public:
+  CaseTable(const toml::value& table, std::string file, std::string name);
+
+  bool has(const std::string& key) const;
+  double get_double(const std::string& key, double default_value);
+  double get_double(const std::string& key);  ///< required
+  long long get_int(const std::string& key, long long default_value);
+  std::string get_string(const std::string& key, const std::string& default_value);
+  bool get_bool(const std::string& key, bool default_value);
+  std::vector<double> get_doubles(const std::string& key, const std::vector<double>& default_value);
+  /// Marks a key as understood without reading it (e.g. [provenance] in a resolved config).
+  void ignore(const std::string& key) { used_.insert(key); }
+  /// A sub-table; an empty one if absent.
+  CaseTable table(const std::string& key);
+
+  /// Throws for the first key nobody asked for, listing the keys that are understood here.
+  void reject_unknown() const;
+  /// Prefixes an InputError message from validate() with file and table.
+  [[noreturn]] void fail(const std::string& message) const;
+  const std::string& file() const { return file_; }
+  const std::string& name() const { return name_; }
+
+ private:
+  const toml::value* find(const std::string& key);
+  [[noreturn]] void wrong_type(const std::string& key, const std::string& wanted) const;
+
+  toml::value table_;
+  std::string file_, name_;
+  std::set<std::string> used_;
+};
+
+/// A parsed case file: the root table plus where it came from.
+class CaseFile {
+ public:
+  /// Parses `path`; a missing file or malformed TOML is an InputError "<path>:<line>: ...".
+  explicit CaseFile(const std::filesystem::path& path);
+  CaseTable root() const { return CaseTable(root_, path_.string(), ""); }
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+  toml::value root_;
+};
+
+/// The physics of a case, from exactly one of [physics] (dimensionless, paper units) or
+/// [physics_si] (Table 1 values, converted by hm::analytic::to_dimensionless). Validated.
+struct CasePhysics {
+  hm::analytic::DimensionlessParameters parameters;
+  /// Present when the case gave physical values: the scales that turn results back into SI.
+  std::optional<hm::analytic::PhysicalParameters> physical;
+  std::optional<hm::analytic::Scales> scales;
+};
+CasePhysics read_physics(CaseTable& root);
+
+/// The resolved physics as TOML: [physics] with every field, and the physical inputs and scales as
+/// comments if the case gave [physics_si]. Written beside results; itself a valid case section.
+std::string physics_to_toml(const CasePhysics& physics);
+
+}  // namespace hm::verification

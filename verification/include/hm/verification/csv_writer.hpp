@@ -1,0 +1,23 @@
+#pragma once
+/// \file
+/// Minimal CSV writer: a header row, then rows of numbers with 10 significant digits
+/// (well beyond any plot or check in the toolkit).
+#include <initializer_list>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace hm::verification {
+
+class CsvWriter {
+ public:
+  CsvWriter(std::ostream& out, const std::vector<std::string>& columns);
+  void row(const std::vector<double>& values);
+  void row(std::initializer_list<double> values) { row(std::vector<double>(values)); }
+
+ private:
+  std::ostream& out_;
+  std::size_t n_columns_;
+};
+
+}  // namespace hm::verification

@@ -1,0 +1,75 @@
+#include "hm/verification/harness.hpp"
+
+#include <chrono>
+#include <exception>
+
+#include "figure_runner.hpp"
+#include "hm/analytic/input_error.hpp"
+#include "hm/verification/output_dir.hpp"
+#include "report_writer.hpp"
+
+namespace hm::verification {
+
+namespace fs = std::filesystem;
+
+std::string to_string(Tier tier) { return tier == Tier::quick ? "quick" : "paper"; }
+
+Tier parse_tier(const std::string& text) {
+  if (text == "quick") return Tier::quick;
+  if (text == "paper") return Tier::paper;
+  throw InputError("--tier = " + text + ", allowed: quick or paper");
+}
+
+HarnessSummary run_harness(const std::vector<Benchmark>& benchmarks, const HarnessOptions& options,
+                           std::ostream& log) {
+  StagedDirectory out(options.out_dir);
+  const fs::path data_dir = out.path() / "data", figure_dir = out.path() / "figures";
+  fs::create_directories(data_dir);
+  fs::create_directories(figure_dir);
+
+  std::vector<const Benchmark*> selected;
+  for (const auto& b : benchmarks)
+    if ((options.tier == Tier::paper || b.tier == Tier::quick) &&
+        b.id.find(options.filter) != std::string::npos)
+      selected.push_back(&b);
+
+  HarnessSummary summary;
+  std::vector<BenchmarkOutcome> outcomes;
+  for (std::size_t i = 0; i < selected.size(); ++i) {
+    BenchmarkOutcome o;
+    o.benchmark = selected[i];
+    log << "[" << i + 1 << "/" << selected.size() << "] " << o.benchmark->id << " ... " << std::flush;
+    const auto start = std::chrono::steady_clock::now();
+    try {
+      o.result = o.benchmark->run(BenchmarkContext{options.tier, data_dir});
+    } catch (const std::exception& e) {
+      o.error = e.what();
+    }
+    for (const auto& f : o.result.figures)
+      if (auto why = draw_figure(f, data_dir, figure_dir); !why.empty()) o.figure_errors.push_back(why);
+    o.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    int failed = 0;
+    for (const auto& m : o.result.metrics) failed += (m.gating && !m.passes());
+    summary.n_metrics += static_cast<int>(o.result.metrics.size());
+    summary.n_failed += failed;
+    summary.n_benchmark_errors += !o.error.empty();
+    summary.n_missing_figures += static_cast<int>(o.figure_errors.size());
+    if (!o.error.empty())
+      log << "ERROR: " << o.error << "\n";
+    else
+      log << (failed ? "FAILED " + std::to_string(failed) + " of " : "ok, ")
+          << o.result.metrics.size() << " metrics (" << format_number(o.seconds) << " s)\n";
+    for (const auto& e : o.figure_errors) log << "    figure missing: " << e << "\n";
+    outcomes.push_back(std::move(o));
+  }
+  summary.n_benchmarks = static_cast<int>(outcomes.size());
+
+  write_report_markdown(out.path() / "report.md", outcomes, make_provenance(options.command_line), options.tier);
+  write_metrics_json(out.path() / "metrics.json", outcomes);
+  out.commit();
+  summary.report = options.out_dir / "report.md";
+  return summary;
+}
+
+}  // namespace hm::verification

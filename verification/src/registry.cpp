@@ -1,0 +1,14 @@
+#include "hm/verification/benchmark.hpp"
+
+namespace hm::verification {
+
+const std::vector<Benchmark>& all_benchmarks() {
+  static const std::vector<Benchmark> registry = [] {
+    std::vector<Benchmark> all;
+    add_analytic_benchmarks(all);
+    return all;
+  }();
+  return registry;
+}
+
+}  // namespace hm::verification

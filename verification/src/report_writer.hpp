@@ -1,0 +1,28 @@
+#pragma once
+// Writes the verification report (markdown) and the machine-readable metrics (JSON).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "hm/verification/benchmark.hpp"
+#include "hm/verification/provenance.hpp"
+
+namespace hm::verification {
+
+/// One benchmark's outcome as the report sees it.
+struct BenchmarkOutcome {
+  const Benchmark* benchmark = nullptr;
+  BenchmarkResult result;
+  std::string error;                        ///< non-empty if the benchmark threw
+  std::vector<std::string> figure_errors;   ///< one per figure that could not be drawn
+  double seconds = 0.0;
+};
+
+void write_report_markdown(const std::filesystem::path& file, const std::vector<BenchmarkOutcome>& outcomes,
+                           const Provenance& provenance, Tier tier);
+void write_metrics_json(const std::filesystem::path& file, const std::vector<BenchmarkOutcome>& outcomes);
+
+/// "3.14e-05"-style formatting used in every report table.
+std::string format_number(double value);
+
+}  // namespace hm::verification
