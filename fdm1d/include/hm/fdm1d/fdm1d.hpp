@@ -19,7 +19,8 @@ namespace hm::fdm1d {
 /// Numerical settings of the 1D model. Every field has its default here; validate() checks them.
 struct Fdm1dNumerics {
   /// n_r, number of grid intervals on [R_i, 1] (nodes r_i = R_i + i dr, i = 0..n_r). Allowed: >= 8.
-  int n_r = 200;
+  /// Default 400: steady u and wall stresses within ~0.2% of Appendix B (tests/fdm1d/test_fdm1d.cpp).
+  int n_r = 400;
   /// First time step (dimensionless t / t_s). Allowed: > 0.
   double dt_initial = 1e-5;
   /// Geometric growth factor of the time step, dt_{k+1} = min(dt_growth dt_k, dt_max). Allowed: >= 1.
