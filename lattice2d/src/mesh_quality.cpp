@@ -37,7 +37,7 @@ MeshQuality mesh_quality(const Lattice& lattice, const DualGraph& dual) {
   q.min_spacing = lattice.min_spacing;
   q.domain_area = domain_area(lattice.spec);
 
-  RangeBuilder angle, area_s, length, d_st, d_su, cond, area_i;
+  RangeBuilder angle, area_s, length, d_st, d_su, ratio_st, ratio_su, cond, area_i;
   for (int s = 0; s < lattice.n_triangles(); ++s) {
     const auto& t = lattice.triangles[static_cast<std::size_t>(s)];
     for (int k = 0; k < 3; ++k) {
@@ -53,6 +53,7 @@ MeshQuality mesh_quality(const Lattice& lattice, const DualGraph& dual) {
   for (int e = 0; e < lattice.n_beams(); ++e) {
     length.add(lattice.length[e]);
     (lattice.is_boundary_beam(e) ? d_su : d_st).add(dual.dual_length[e]);
+    (lattice.is_boundary_beam(e) ? ratio_su : ratio_st).add(dual.dual_length[e] / lattice.length[e]);
     cond.add(dual.conductance[e]);
     if (lattice.is_boundary_beam(e)) ++q.n_boundary_beams;
     if (dual.is_floored[static_cast<std::size_t>(e)]) ++q.n_floored;
@@ -66,6 +67,8 @@ MeshQuality mesh_quality(const Lattice& lattice, const DualGraph& dual) {
   q.beam_length = length.range();
   q.dual_length = d_st.range();
   q.surface_distance = d_su.range();
+  q.dual_ratio = ratio_st.range();
+  q.surface_ratio = ratio_su.range();
   q.conductance = cond.range();
   q.particle_area = area_i.range();
   return q;
@@ -85,6 +88,7 @@ std::string to_string(const MeshQuality& q) {
                 q.n_floored, q.sum_particle_area, q.sum_triangle_area, q.domain_area);
   return std::string(buf) + row("triangle angle [deg]", q.triangle_angle_deg) + row("beam length L", q.beam_length) +
          row("d_st (interior)", q.dual_length) + row("d_su (boundary)", q.surface_distance) +
+         row("d_st / L", q.dual_ratio) + row("d_su / L", q.surface_ratio) +
          row("conductance A/d", q.conductance) + row("particle area V_i", q.particle_area) +
          row("triangle area V_s", q.triangle_area);
 }

@@ -34,6 +34,8 @@ TEST_CASE("The mesh-quality report is consistent with the lattice", "[lattice2d]
   CHECK(q.beam_length.min == hm::test::roundoff(lattice.length.minCoeff()));
   CHECK(q.sum_particle_area == hm::test::roundoff(q.sum_triangle_area));
   CHECK(q.conductance.max <= 1.0 / dual.options.min_dual_ratio * (1.0 + 1e-12));
+  CHECK(q.dual_ratio.min > -1e-12);   // Delaunay, round-off
+  CHECK(q.surface_ratio.min > 0.25);  // boundary spacing, see test_dual_graph
   std::ostringstream out;
   out << q;
   CHECK_THAT(out.str(), Catch::Contains("conductance A/d"));

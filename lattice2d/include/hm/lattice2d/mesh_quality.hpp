@@ -29,6 +29,8 @@ struct MeshQuality {
   Range beam_length;          ///< L_ij
   Range dual_length;          ///< d_st, interior beams (exact Voronoi segment)
   Range surface_distance;     ///< d_su, boundary beams
+  Range dual_ratio;           ///< d_st / L, interior beams (>= 0 on a Delaunay triangulation)
+  Range surface_ratio;        ///< d_su / L, boundary beams (> 0.28 by the boundary spacing)
   Range conductance;          ///< A/d_flow = L/max(d, min_dual_ratio L), all beams
   int n_floored = 0;          ///< beams whose flow distance was raised to the floor
   Range particle_area;        ///< V_i
