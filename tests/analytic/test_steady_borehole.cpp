@@ -331,3 +331,29 @@ TEST_CASE("Section 3.2: C_u/T_u below which shear failure precedes tensile at th
     CHECK(threshold(1.0, b) == hm::test::roundoff(threshold(0.01, b)));  // Q-independence
   }
 }
+
+TEST_CASE("Section 3.2's statements about the steady-state stresses hold", "[analytic]") {
+  // "The tangential, axial and coulomb stresses are always positive"; the radial stress is tensile
+  // nowhere for b = 0 and everywhere for b = 1; the tangential stress dominates and peaks at the wall.
+  for (double b : {0.0, 0.5, 1.0}) {
+    CAPTURE(b);
+    const SteadyBorehole bh(0.01, b, 0.25, 0.138);
+    const auto wall = bh.state(0.138);
+    for (double r : radii(0.138, 201)) {
+      CAPTURE(r);
+      const auto s = bh.state(r);
+      CHECK(s.sigma_theta > 0.0);
+      CHECK(s.sigma_z > 0.0);
+      CHECK(s.sigma_theta >= s.sigma_r);
+      CHECK(s.sigma_theta >= s.sigma_z);
+      CHECK(s.sigma_theta <= wall.sigma_theta);
+      // Signs hold up to round-off at the ends, where sigma_r is exactly 0 (r = 1; r = R_i for b = 1).
+      if (b == 0.0) CHECK(s.sigma_r <= 1e-18);
+      if (b == 1.0) CHECK(s.sigma_r >= -1e-18);
+    }
+  }
+  // b = 0.5 in between: tensile over part of the annulus only.
+  const SteadyBorehole mid(0.01, 0.5, 0.25, 0.138);
+  CHECK(mid.state(0.138).sigma_r < 0.0);
+  CHECK(mid.state(0.5).sigma_r > 0.0);
+}
