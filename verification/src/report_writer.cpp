@@ -37,10 +37,15 @@ std::string verdict(const Metric& m) {
   return m.passes() ? "pass" : "**FAIL**";
 }
 
-std::string cell(std::string s) {  // keep markdown tables intact
-  for (auto& c : s)
-    if (c == '|' || c == '\n') c = (c == '|') ? '/' : ' ';
-  return s;
+std::string cell(const std::string& s) {  // keep markdown tables intact
+  std::string out;
+  for (char c : s) out += (c == '|') ? std::string("\\|") : std::string(1, c == '\n' ? ' ' : c);
+  return out;
+}
+
+std::string reference_text(const Metric& m) {  // bounds (at_most/at_least) usually have no reference
+  const bool bound = m.comparison == Comparison::at_most || m.comparison == Comparison::at_least;
+  return (bound && m.reference == 0.0) ? "—" : format_number(m.reference);
 }
 
 void write_table(std::ofstream& md, const Table& t) {
@@ -90,7 +95,7 @@ void write_report_markdown(const fs::path& file, const std::vector<BenchmarkOutc
     if (!o.result.metrics.empty()) {
       md << "| metric | value | reference | check | verdict | why this tolerance |\n|---|---|---|---|---|---|\n";
       for (const auto& m : o.result.metrics)
-        md << "| " << cell(m.name) << " | " << format_number(m.value) << " | " << format_number(m.reference)
+        md << "| " << cell(m.name) << " | " << format_number(m.value) << " | " << reference_text(m)
            << " | " << comparison_text(m) << " | " << verdict(m) << " | " << cell(m.justification) << " |\n";
       md << "\n";
     }

@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# The main job: install dependencies, build, run the verification suite, say where the report is.
+#   scripts/run-verification.sh                  quick tier (minutes) into out/verify
+#   scripts/run-verification.sh --tier paper     paper resolution
+# Extra arguments go to `hmlattice verify`.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/install-deps.sh
+bash scripts/build.sh
+./build/hmlattice verify "$@"

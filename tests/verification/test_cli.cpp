@@ -1,0 +1,78 @@
+// The command line as a user meets it: bad input gives one line naming the parameter, the value
+// and what is allowed, exit code 2, and writes nothing.
+#include <catch2/catch.hpp>
+
+#include "verification/run_command.hpp"
+
+using hm::test::count_lines;
+using hm::test::run_hmlattice;
+using hm::test::TempDir;
+
+namespace {
+
+void require_clean_rejection(const hm::test::CommandResult& r, const std::string& must_mention) {
+  INFO("stderr: " << r.err);
+  CHECK(r.exit_code == 2);
+  CHECK(count_lines(r.err) == 1);
+  CHECK(r.err.find(must_mention) != std::string::npos);
+  CHECK(r.out.empty());
+}
+
+}  // namespace
+
+TEST_CASE("An unknown subcommand is rejected with the list of allowed ones", "[verification][cli]") {
+  TempDir dir("cli-unknown");
+  const auto r = run_hmlattice("frobnicate", dir.path);
+  require_clean_rejection(r, "unknown subcommand 'frobnicate', allowed: verify, analytic");
+  CHECK(dir.is_empty());
+}
+
+TEST_CASE("Out-of-range analytic parameters name the parameter, the value and the range", "[verification][cli]") {
+  TempDir dir("cli-analytic");
+  SECTION("Biot coefficient above 1") {
+    require_clean_rejection(run_hmlattice("analytic rudnicki --b 1.5 --r 0.01", dir.path), "b = 1.5, allowed: 0 <= b <= 1");
+  }
+  SECTION("Poisson ratio at 0.5") {
+    require_clean_rejection(run_hmlattice("analytic borehole-steady --nu 0.5 --r 0.5", dir.path),
+                            "nu = 0.5, allowed: 0 < nu < 0.5");
+  }
+  SECTION("borehole radius not below the outer radius") {
+    require_clean_rejection(run_hmlattice("analytic borehole-steady --Ri 1 --r 0.5", dir.path),
+                            "Ri = 1, allowed: 0 < Ri < 1");
+  }
+  SECTION("radius outside the annulus") {
+    require_clean_rejection(run_hmlattice("analytic borehole-steady --r 0.1", dir.path),
+                            "r = 0.1, allowed: 0.138 <= r <= 1");
+  }
+  SECTION("non-positive time") {
+    require_clean_rejection(run_hmlattice("analytic rudnicki --t 0 --r 0.1", dir.path), "t = 0, allowed: t > 0");
+  }
+  SECTION("unknown volumetric-strain variant") {
+    require_clean_rejection(run_hmlattice("analytic rudnicki --vol_strain 3d --r 0.1", dir.path),
+                            "vol_strain = \"3d\", allowed: \"plane-strain\" or \"appendix-a\"");
+  }
+  SECTION("a value that is not a number") {
+    require_clean_rejection(run_hmlattice("analytic rudnicki --Q fast --r 0.1", dir.path), "--Q = fast");
+  }
+  CHECK(dir.is_empty());
+}
+
+TEST_CASE("A bad verification tier writes no report", "[verification][cli]") {
+  TempDir dir("cli-verify");
+  require_clean_rejection(run_hmlattice("verify --tier full --out report", dir.path), "--tier = full, allowed: quick or paper");
+  CHECK(dir.is_empty());
+}
+
+TEST_CASE("hmlattice analytic prints a CSV header and one row per radius", "[verification][cli]") {
+  TempDir dir("cli-csv");
+  const auto r = run_hmlattice("analytic lame --pi 1e-3 --Ri 0.5 --Ro 1 --nu 0.25 --r 0.5,1", dir.path);
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.err.empty());
+  // Hand check (plane strain, E = 1): A = p_i R_i^2/(R_o^2 - R_i^2) = 1e-3 * 0.25/0.75 = 3.3333e-4,
+  // B = A R_o^2 = 3.3333e-4; at r = 1: sigma_r = A - B = 0, sigma_theta = 2A = 6.6667e-4, sigma_z = 2 nu A.
+  // u_r(1) = (1+nu)((1-2nu) A + B) = 1.25 * 1.5 * 3.3333e-4 = 6.25e-4; at r = 0.5: sigma_r = A - 4B = -1e-3,
+  // sigma_theta = A + 4B, u_r = 1.25 (0.5 A 0.5 + 2B) = 9.375e-4.
+  CHECK(r.out == "r,u_r,sigma_r,sigma_theta,sigma_z\n"
+                 "0.5,0.0009375,-0.001,0.001666666667,0.0001666666667\n"
+                 "1,0.000625,0,0.0006666666667,0.0001666666667\n");
+}

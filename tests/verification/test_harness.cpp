@@ -1,0 +1,104 @@
+// The harness judges metrics as documented, writes report.md and metrics.json, records a
+// benchmark that throws as an error, and leaves no output folder behind when it is interrupted.
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <stdexcept>
+
+#include "hm/verification/harness.hpp"
+#include "hm/verification/output_dir.hpp"
+#include "verification/run_command.hpp"
+
+using namespace hm::verification;
+using hm::test::slurp;
+using hm::test::TempDir;
+
+namespace {
+Metric metric(double value, double reference, double tolerance, Comparison how = Comparison::abs_error,
+              bool gating = true) {
+  Metric m;
+  m.name = "metric";
+  m.value = value;
+  m.reference = reference;
+  m.tolerance = tolerance;
+  m.comparison = how;
+  m.justification = "round-off";
+  m.gating = gating;
+  return m;
+}
+}  // namespace
+
+TEST_CASE("Metrics pass or fail exactly at their tolerance", "[verification][harness]") {
+  CHECK(metric(1.05, 1.0, 0.1).passes());
+  CHECK_FALSE(metric(1.2, 1.0, 0.1).passes());
+  CHECK(metric(2.1, 2.0, 0.06, Comparison::rel_error).passes());
+  CHECK_FALSE(metric(2.2, 2.0, 0.06, Comparison::rel_error).passes());
+  CHECK(metric(1e-9, 0.0, 1e-8, Comparison::at_most).passes());
+  CHECK_FALSE(metric(1e-7, 0.0, 1e-8, Comparison::at_most).passes());
+  CHECK(metric(1.95, 0.0, 1.8, Comparison::at_least).passes());
+  CHECK_FALSE(metric(1.5, 0.0, 1.8, Comparison::at_least).passes());
+  CHECK_FALSE(metric(std::nan(""), 0.0, 1.0, Comparison::at_most).passes());
+}
+
+TEST_CASE("The harness writes report and metrics, and a failing gating metric fails the run", "[verification][harness]") {
+  TempDir dir("harness");
+  std::vector<Benchmark> benchmarks = {
+      {"demo.good", "Good", "passes", Tier::quick,
+       [](const BenchmarkContext&) {
+         BenchmarkResult r;
+         r.metrics.push_back(metric(1e-9, 0.0, 1e-6, Comparison::at_most));
+         r.metrics.push_back(metric(0.3, 0.22, 0.01, Comparison::abs_error, false));
+         return r;
+       }},
+      {"demo.bad", "Bad", "fails", Tier::quick,
+       [](const BenchmarkContext&) {
+         BenchmarkResult r;
+         r.metrics.push_back(metric(1.0, 0.0, 1e-6, Comparison::at_most));
+         return r;
+       }},
+      {"demo.throws", "Throws", "errors", Tier::quick,
+       [](const BenchmarkContext&) -> BenchmarkResult { throw std::runtime_error("solver diverged"); }},
+      {"demo.paper", "Paper only", "skipped in quick", Tier::paper,
+       [](const BenchmarkContext&) -> BenchmarkResult { throw std::logic_error("must not run in quick tier"); }},
+  };
+  HarnessOptions options;
+  options.out_dir = dir.path / "report";
+  std::ostringstream log;
+  const HarnessSummary s = run_harness(benchmarks, options, log);
+  CHECK(s.n_benchmarks == 3);
+  CHECK(s.n_metrics == 3);
+  CHECK(s.n_failed == 1);  // the non-gating paper value differs but does not count
+  CHECK(s.n_benchmark_errors == 1);
+  CHECK_FALSE(s.ok());
+
+  const auto json = nlohmann::json::parse(slurp(options.out_dir / "metrics.json"));
+  REQUIRE(json.size() == 4);  // 3 metrics + 1 error record
+  CHECK(json[0]["benchmark"] == "demo.good");
+  CHECK(json[0]["pass"] == true);
+  CHECK(json[1]["gating"] == false);
+  CHECK(json[2]["pass"] == false);
+  CHECK(json[3]["error"] == "solver diverged");
+
+  const std::string md = slurp(options.out_dir / "report.md");
+  CHECK_THAT(md, Catch::Contains("| metric | 1.000e-09 | — | ≤ 1.000e-06 | pass | round-off |"));
+  CHECK_THAT(md, Catch::Contains("differs (info)"));
+  CHECK_THAT(md, Catch::Contains("**The benchmark stopped with an error:** solver diverged"));
+}
+
+TEST_CASE("A staged output folder appears only on commit", "[verification][harness]") {
+  TempDir dir("staged");
+  const auto target = dir.path / "run";
+  {
+    StagedDirectory staged(target);
+    std::ofstream(staged.path() / "half.csv") << "t\n";
+    CHECK_FALSE(std::filesystem::exists(target));
+  }  // abandoned, as when a run throws
+  CHECK_FALSE(std::filesystem::exists(target));
+  CHECK(dir.is_empty());
+  {
+    StagedDirectory staged(target);
+    std::ofstream(staged.path() / "done.csv") << "t\n";
+    staged.commit();
+  }
+  CHECK(std::filesystem::exists(target / "done.csv"));
+}
