@@ -1,0 +1,68 @@
+#pragma once
+/// \file
+/// Linear 2D beams between particles (Section 2.1, Eqs. 3-7, 9-10): 3 degrees of freedom per particle
+/// (x, y displacement and rotation omega, in that order: dof = 3 i + component), one symmetric 6 x 6
+/// element matrix per beam, assembled into a sparse stiffness K so that the internal force is -K u.
+/// Dimensionless (stresses over E).
+///
+/// Energy form: with the chord rotation phi = (u_j - u_i).s / L and the end deflections
+/// theta_i = omega_i - phi, theta_j = omega_j - phi (Fig. 2), the beam stores
+///   W = 1/2 k_n ((u_j - u_i).n)^2 + 1/2 [theta_i theta_j] D [theta_i theta_j]^T,
+///   D = 2 k_omega L^2 [[gamma + 1/3, 1/6 - gamma], [1/6 - gamma, gamma + 1/3]],
+/// whose derivatives are Eq. 3's force (shear k_omega L (theta_i + theta_j)) and Eq. 4's moment.
+/// Its Hessian reproduces every coefficient of Eqs. 5-7 except that Eq. 7 prints 2 k_omega L (not
+/// L^2) on the rotation terms; the L^2 of Eq. 4 is the consistent one (docs/lattice.md).
+/// Limits: small displacements and rotations (geometrically linear); no pressure terms (Eq. 17-20).
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include "hm/lattice2d/lattice.hpp"
+
+namespace hm::lattice2d {
+
+/// Beam constants of Eqs. 3-4. The defaults are placeholders until the lattice calibration
+/// (E = 1, nu = 0.25 measured on the lattice) chooses them.
+struct BeamParameters {
+  /// k_n, normal spring constant (Eq. 3), the same for every beam. Allowed: > 0.
+  double normal_stiffness = 1.0;
+  /// a = d / L_eq, beam width over length (Eq. 4: gamma = a^2 (1 + nu0) / 6,
+  /// k_omega = k_n (2/a^2 + 4 (1 + nu0))^-1). Allowed: > 0.
+  double aspect = 1.0;
+  /// nu0, Poisson ratio of the beam material (Eq. 4). Allowed: -1 < nu0 < 0.5.
+  double beam_poisson = 0.25;
+
+  void validate() const;
+  /// k_omega = k_n (2/a^2 + 4 (1 + nu0))^-1 (text after Eq. 4).
+  double rotational_stiffness() const;
+  /// gamma = a^2 (1 + nu0) / 6 (text after Eq. 4).
+  double gamma() const;
+};
+
+/// State of the connection between two particles.
+enum class BeamState : std::uint8_t {
+  intact,   ///< full beam, Eqs. 5-7
+  contact,  ///< broken, particles overlapping: normal spring only, Eqs. 9-10
+  open,     ///< broken, particles apart: no force (Eq. 8 with H = 0)
+};
+
+using Matrix6d = Eigen::Matrix<double, 6, 6>;
+
+/// Element stiffness of one connection of length L at angle theta (Fig. 2) in global components,
+/// ordered (x_i, y_i, omega_i, x_j, y_j, omega_j). Symmetric, positive semi-definite with the three
+/// rigid-body motions in its null space (intact), or rank one (contact), or zero (open).
+Matrix6d beam_element_stiffness(double length, double angle, const BeamParameters& parameters,
+                                BeamState state = BeamState::intact);
+
+/// Degree of freedom of a particle's component (0 = x, 1 = y, 2 = rotation).
+constexpr int dof_index(int particle, int component) { return 3 * particle + component; }
+
+/// K (3 n x 3 n, both triangles stored) for the lattice's undeformed beam geometry; `states` is
+/// empty (all intact) or one per beam. Validates `parameters` (throws hm::InputError).
+/// Singular until displacements are prescribed somewhere (three rigid-body modes per connected part).
+Eigen::SparseMatrix<double> assemble_stiffness(const Lattice& lattice, const BeamParameters& parameters,
+                                               const std::vector<BeamState>& states = {});
+
+}  // namespace hm::lattice2d

@@ -1,0 +1,74 @@
+#include "hm/lattice2d/beam_stiffness.hpp"
+
+#include <cassert>
+#include <cmath>
+
+#include "hm/analytic/validation.hpp"
+
+namespace hm::lattice2d {
+
+void BeamParameters::validate() const {
+  using namespace hm::analytic;
+  require_positive(normal_stiffness, "normal_stiffness");
+  require_positive(aspect, "aspect");
+  require_open(beam_poisson, "beam_poisson", -1.0, 0.5);
+}
+
+double BeamParameters::rotational_stiffness() const {
+  return normal_stiffness / (2.0 / (aspect * aspect) + 4.0 * (1.0 + beam_poisson));
+}
+
+double BeamParameters::gamma() const { return aspect * aspect * (1.0 + beam_poisson) / 6.0; }
+
+Matrix6d beam_element_stiffness(double length, double angle, const BeamParameters& p, BeamState state) {
+  Matrix6d local = Matrix6d::Zero();  // (u_n,i, u_s,i, omega_i, u_n,j, u_s,j, omega_j)
+  if (state != BeamState::open) {
+    const double k_n = p.normal_stiffness;
+    local(0, 0) = local(3, 3) = k_n;
+    local(0, 3) = local(3, 0) = -k_n;
+  }
+  if (state == BeamState::intact) {
+    const double k_w = p.rotational_stiffness(), g = p.gamma(), L = length;
+    Eigen::Matrix2d D;
+    D << g + 1.0 / 3.0, 1.0 / 6.0 - g, 1.0 / 6.0 - g, g + 1.0 / 3.0;
+    D *= 2.0 * k_w * L * L;
+    // theta_i = omega_i - (u_s,j - u_s,i)/L, theta_j = omega_j - (u_s,j - u_s,i)/L.
+    Eigen::Matrix<double, 2, 6> B;
+    B << 0, 1 / L, 1, 0, -1 / L, 0,  //
+        0, 1 / L, 0, 0, -1 / L, 1;
+    local += B.transpose() * D * B;
+  }
+  const double c = std::cos(angle), s = std::sin(angle);
+  Eigen::Matrix3d R;  // global (x, y, omega) -> local (n, s, omega)
+  R << c, s, 0, -s, c, 0, 0, 0, 1;
+  Matrix6d T = Matrix6d::Zero();
+  T.topLeftCorner<3, 3>() = R;
+  T.bottomRightCorner<3, 3>() = R;
+  return T.transpose() * local * T;
+}
+
+Eigen::SparseMatrix<double> assemble_stiffness(const Lattice& lattice, const BeamParameters& parameters,
+                                               const std::vector<BeamState>& states) {
+  parameters.validate();
+  assert((states.empty() || static_cast<int>(states.size()) == lattice.n_beams()) && "one state per beam");
+  std::vector<Eigen::Triplet<double>> triplets;
+  triplets.reserve(36 * static_cast<std::size_t>(lattice.n_beams()));
+  for (int e = 0; e < lattice.n_beams(); ++e) {
+    const BeamState state = states.empty() ? BeamState::intact : states[static_cast<std::size_t>(e)];
+    if (state == BeamState::open) continue;
+    const Matrix6d k = beam_element_stiffness(lattice.length[e], lattice.angle[e], parameters, state);
+    const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
+    const int dofs[6] = {dof_index(i, 0), dof_index(i, 1), dof_index(i, 2),
+                         dof_index(j, 0), dof_index(j, 1), dof_index(j, 2)};
+    // All 36 entries, zeros included: the sparsity pattern then depends only on the beam states,
+    // not on beam angles, which keeps a symbolic factorisation reusable.
+    for (int a = 0; a < 6; ++a)
+      for (int b = 0; b < 6; ++b) triplets.emplace_back(dofs[a], dofs[b], k(a, b));
+  }
+  const int n = 3 * lattice.n_particles();
+  Eigen::SparseMatrix<double> K(n, n);
+  K.setFromTriplets(triplets.begin(), triplets.end());
+  return K;
+}
+
+}  // namespace hm::lattice2d
