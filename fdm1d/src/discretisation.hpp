@@ -16,6 +16,12 @@
 //   (exact for the face values; u at interior faces by the mean of its two nodes).
 //   E_i telescopes, so the sum over rings is 2 pi (u_n - R_i u_0), the area change of the annulus:
 //   the scheme is conservative and the volume balance closes to round-off.
+//   (A6 instead takes the centred nodal eps_v times V_i = 2 pi r_i dr; that differs by
+//   dr (u_{i+1} - 2u_i + u_{i-1})/4 per ring, still second order but not telescoping.)
+// Borehole node: the borehole itself stores no fluid, as in A6 (the paper's 2D Eq. 16 gives it a
+//   volume V_h; A6 has no such term). Node 0 is the wall; its half ring receives the whole injection,
+//   no flux crosses r = R_i otherwise. A fluid-filled borehole would add (E/K_w) pi R_i^2 dp_0/dt +
+//   2 pi R_i du_0/dt to ring 0 and slow the early transient; we follow A6 so the numbers are the paper's.
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 

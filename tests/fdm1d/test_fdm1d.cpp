@@ -143,6 +143,23 @@ TEST_CASE("Output times are hit exactly and t_end is always stored", "[fdm1d]") 
   CHECK(res.r.back() == 1.0);
 }
 
+TEST_CASE("The progress callback sees every step and ends at t_end", "[fdm1d]") {
+  Fdm1dNumerics n;
+  n.n_r = 20;
+  n.t_end = 0.05;
+  n.output_times = {0.01};
+  long calls = 0;
+  double last = 0.0;
+  const Fdm1dResult res = run_fdm1d(section32_case(0.5), n, [&](double t, double t_end) {
+    ++calls;
+    CHECK(t > last);
+    CHECK(t_end == 0.05);
+    last = t;
+  });
+  CHECK(calls == res.summary.n_steps);
+  CHECK(last == 0.05);
+}
+
 TEST_CASE("The steady state matches Appendix B at second order in dr", "[fdm1d]") {
   // Discrete steady state: p is the finite-volume solution of B1 whatever b and vol_strain are; u
   // and the stresses follow from p through the mechanics rows. The grid is uniform, so the error

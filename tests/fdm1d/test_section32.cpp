@@ -53,7 +53,7 @@ TEST_CASE("The time to 99% of the steady pressure is interpolated between steps"
   CHECK(std::isnan(hm::fdm1d::time_to_fraction(res, 2.0)));
 }
 
-TEST_CASE("Negative probe pressure: depth, time and duration", "[fdm1d]") {
+TEST_CASE("Negative probe pressure is measured in depth and time and duration", "[fdm1d]") {
   // p: 0 -> -1 (t = 1) -> -3 (t = 2) -> 1 (t = 3): negative on (0, 2.75).
   const auto res = series({0.0, 1.0, 2.0, 3.0}, {0, 0, 0, 0}, {0.0, -1.0, -3.0, 1.0});
   const auto d = hm::fdm1d::section32_diagnostics(res, section32_case(0.5));
