@@ -5,6 +5,9 @@
 #include <limits>
 #include <numbers>
 
+#include "hm/analytic/failure_criteria.hpp"
+#include "hm/analytic/steady_borehole.hpp"
+
 namespace hm::fdm1d {
 
 namespace {
@@ -66,6 +69,17 @@ Section32Diagnostics section32_diagnostics(const Fdm1dResult& result,
     d.probes.push_back(pr);
   }
 
+  {
+    const auto wall = hm::analytic::SteadyBorehole(params.Q, params.material.b, params.material.nu, params.R_i)
+                          .state(params.R_i);
+    BoreholeSample w;
+    w.sigma_r = wall.sigma_r;
+    w.sigma_theta = wall.sigma_theta;
+    w.sigma_z = wall.sigma_z;
+    const auto mm = hm::analytic::major_minor({wall.sigma_r, wall.sigma_theta, wall.sigma_z});
+    w.coulomb = hm::analytic::coulomb_stress(mm.sigma_1, mm.sigma_3, params.friction);
+    d.wall_ratio_steady = wall_coulomb_ratio(w);
+  }
   d.wall_ratio_final = b.empty() ? nan : wall_coulomb_ratio(b.back());
   d.wall_ratio_min = d.wall_ratio_max = nan;
   for (const auto& w : b) {

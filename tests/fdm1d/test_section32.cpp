@@ -83,6 +83,7 @@ TEST_CASE("The wall ratio sigma_CC/sigma_1 at steady state matches Appendix B", 
     // Discretisation error of the wall stresses at n_r = 400 (<= 1.8e-3 of the stress scale, steady
     // state test); the ratio ~5-6 inherits it: 2e-3 relative.
     CHECK(d.wall_ratio_final == Approx(exact).epsilon(2e-3));
+    CHECK(d.wall_ratio_steady == hm::test::roundoff(exact));
     CHECK(d.t_99 > 0.0);
     if (b == 1.0) {
       // b = 1: the effective radial stress vanishes at the wall (-(1 - b) p_h) and sigma_z > 0, so
