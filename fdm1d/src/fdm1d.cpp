@@ -116,6 +116,11 @@ Fdm1dResult run_fdm1d(const an::DimensionlessParameters& params, const Fdm1dNume
   };
   record(0.0);
 
+  auto stop = [&]() -> Fdm1dResult {
+    res.summary.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return std::move(res);
+  };
+
   FactorCache nominal, landing;
   auto solver_for = [&](FactorCache& slot, double dt) -> Solver* {
     if (slot.dt == dt) return slot.solver.get();
@@ -155,7 +160,7 @@ Fdm1dResult run_fdm1d(const an::DimensionlessParameters& params, const Fdm1dNume
         slot = &landing;
       }
       Solver* solver = solver_for(*slot, dt);
-      if (!solver) return res;
+      if (!solver) return stop();
 
       // Mechanics rows: 0. Fluid rows: old storage + old strain + injected volume. Dirichlet row: 0.
       const VectorXd old_strain = blk.strain * u;
@@ -167,7 +172,7 @@ Fdm1dResult run_fdm1d(const an::DimensionlessParameters& params, const Fdm1dNume
       if (solver->info() != Eigen::Success) {
         res.summary.status = Fdm1dSummary::Status::singular_matrix;
         res.summary.message = "sparse LU solve failed at t = " + an::format_value(t);
-        return res;
+        return stop();
       }
       VectorXd u_new(n + 1), p_new(n + 1);
       for (int i = 0; i <= n; ++i) {
@@ -199,8 +204,7 @@ Fdm1dResult run_fdm1d(const an::DimensionlessParameters& params, const Fdm1dNume
     res.snapshots.push_back(detail::make_snapshot(u, p, grid, params, t));
   }
 
-  res.summary.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return res;
+  return stop();
 }
 
 }  // namespace hm::fdm1d
