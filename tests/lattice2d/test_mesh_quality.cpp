@@ -44,8 +44,9 @@ TEST_CASE("The mesh-quality report is consistent with the lattice", "[lattice2d]
 
 TEST_CASE("Triangles are well shaped: minimum angle above 20 degrees", "[lattice2d]") {
   // A maximal Poisson-disk sampling has all angles in [30, 120] deg (edges >= r, circumradius <= r);
-  // Bridson's is nearly maximal: measured minimum 24.7-28.7 deg at n = 700 to 1e5. 20 deg is the bound
-  // we promise (the beam and flow conditioning scale with 1/sin of the smallest angle).
+  // Bridson's is nearly maximal: measured minimum 25.0 deg over 120 specs (n = 500..1e4, 5 seeds),
+  // 25.5 deg at n = 2.5e5. 20 deg is the bound we promise (beam and flow conditioning scale with
+  // 1/sin of the smallest angle).
   for (auto shape : {DomainShape::disk, DomainShape::annulus, DomainShape::rectangle})
     for (std::uint64_t seed : {1u, 2u, 3u, 4u}) {
       const Lattice lattice = generate_lattice(spec_of(shape, 3000, seed));
