@@ -1,6 +1,7 @@
 // hmlattice — command-line front end of the toolkit (Ulven & Sun 2017).
 //
 //   hmlattice verify [--tier quick|paper] [--out DIR]     run the verification suite, write a report
+//   hmlattice fdm1d cases/fig10_fdm1d_b0.5.toml [--out DIR]   the radial 1D model (Appendix A)
 //   hmlattice analytic rudnicki --Q 0.1 --b 0.5 --t 3e-4 --r 0.01,0.02   closed forms as CSV
 //
 // Exit codes: 0 success; 1 a verification check failed; 2 bad input (one line on stderr naming the
@@ -28,6 +29,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", HM_VERSION);
   int exit_code = 0;
   hm::app::add_verify_command(app, exit_code, joined(argc, argv));
+  hm::app::add_fdm1d_command(app, exit_code, joined(argc, argv));
   hm::app::add_analytic_command(app, exit_code);
 
   try {

@@ -33,7 +33,7 @@ std::string draw_figure(const Figure& figure, const fs::path& data_dir, const fs
   const fs::path script = fs::path(HM_SOURCE_DIR) / "figures" / figure.script;
   const fs::path log = figure_dir / (figure.file + ".log");
   const std::string cmd = shell_quote(python) + " " + shell_quote(script.string()) + " --data " +
-                          shell_quote(data_dir.string()) + " --out " + shell_quote(figure_dir.string()) +
+                          shell_quote((data_dir / figure.data_subdir).string()) + " --out " + shell_quote(figure_dir.string()) +
                           " > " + shell_quote(log.string()) + " 2>&1";
   const int rc = std::system(cmd.c_str());
   if (rc != 0 || !fs::exists(figure_dir / figure.file)) {

@@ -43,12 +43,13 @@ struct Table {
 };
 
 /// A figure drawn by figures/<script> from CSV files the benchmark wrote into the data folder.
-/// The script is called as: python3 figures/<script> --data <data_dir> --out <figure_dir>, and
-/// must write <figure_dir>/<file> (PNG; PDF beside it).
+/// The script is called as: python3 figures/<script> --data <data_dir>/<data_subdir> --out <figure_dir>,
+/// and must write <figure_dir>/<file> (PNG; PDF beside it).
 struct Figure {
   std::string script;   ///< e.g. "verify_borehole_steady.py"
   std::string file;     ///< e.g. "verify_borehole_steady.png"
   std::string caption;
+  std::string data_subdir = "";  ///< e.g. a run folder written like `hmlattice fdm1d` writes it
 };
 
 struct BenchmarkResult {

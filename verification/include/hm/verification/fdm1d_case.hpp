@@ -1,0 +1,23 @@
+#pragma once
+/// \file
+/// A 1D case file (model = "fdm1d"): [physics] or [physics_si], [numerics], [output].
+#include <filesystem>
+#include <string>
+
+#include "hm/fdm1d/fdm1d.hpp"
+#include "hm/verification/case_file.hpp"
+
+namespace hm::verification {
+
+struct Fdm1dCase {
+  CasePhysics physics;
+  hm::fdm1d::Fdm1dNumerics numerics;
+};
+
+/// Reads and validates the whole case; throws hm::InputError "<file>: [table] key = value, allowed: ...".
+Fdm1dCase read_fdm1d_case(const std::filesystem::path& file);
+
+/// The resolved case as TOML (itself a valid case file), with a [provenance] table.
+std::string fdm1d_case_to_toml(const Fdm1dCase& c, const std::string& provenance_toml);
+
+}  // namespace hm::verification
