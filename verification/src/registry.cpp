@@ -6,6 +6,7 @@ const std::vector<Benchmark>& all_benchmarks() {
   static const std::vector<Benchmark> registry = [] {
     std::vector<Benchmark> all;
     add_analytic_benchmarks(all);
+    add_fdm1d_benchmarks(all);
     return all;
   }();
   return registry;

@@ -79,5 +79,6 @@ struct Benchmark {
 const std::vector<Benchmark>& all_benchmarks();
 
 void add_analytic_benchmarks(std::vector<Benchmark>& into);
+void add_fdm1d_benchmarks(std::vector<Benchmark>& into);
 
 }  // namespace hm::verification
