@@ -23,7 +23,8 @@ void require_clean_rejection(const hm::test::CommandResult& r, const std::string
 TEST_CASE("An unknown subcommand is rejected with the list of allowed ones", "[verification][cli]") {
   TempDir dir("cli-unknown");
   const auto r = run_hmlattice("frobnicate", dir.path);
-  require_clean_rejection(r, "unknown subcommand 'frobnicate', allowed: verify, analytic");
+  require_clean_rejection(r, "unknown subcommand 'frobnicate', allowed: ");
+  for (const char* command : {"verify", "fdm1d", "analytic"}) CHECK_THAT(r.err, Catch::Contains(command));
   CHECK(dir.is_empty());
 }
 
@@ -75,4 +76,39 @@ TEST_CASE("hmlattice analytic prints a CSV header and one row per radius", "[ver
   CHECK(r.out == "r,u_r,sigma_r,sigma_theta,sigma_z\n"
                  "0.5,0.0009375,-0.001,0.001666666667,0.0001666666667\n"
                  "1,0.000625,0,0.0006666666667,0.0001666666667\n");
+}
+
+TEST_CASE("Bad 1D cases are rejected before anything is written", "[verification][cli]") {
+  TempDir dir("cli-fdm1d");
+  auto rejected = [&](const std::string& toml, const std::string& must_mention) {
+    dir.write("case.toml", toml);
+    const auto r = run_hmlattice("fdm1d case.toml --out run", dir.path);
+    require_clean_rejection(r, must_mention);
+    CHECK_FALSE(std::filesystem::exists(dir.path / "run"));
+  };
+  rejected("model = \"fdm1d\"\n[physics]\nb = 1.2\n", "case.toml: [physics] b = 1.2, allowed: 0 <= b <= 1");
+  rejected("[physics]\nnu = 0.6\n", "case.toml: [physics] nu = 0.6, allowed: 0 < nu < 0.5");
+  rejected("[physics]\nR_i = 1.0\n", "case.toml: [physics] R_i = 1, allowed: 0 <= R_i < 1");
+  rejected("[physics]\nR_i = 0\n", "R_i = 0, allowed: 0 < R_i < 1 (the 1D model needs a borehole)");
+  rejected("[physics_si]\nk = -1e-14\n", "case.toml: [physics_si] k = -1e-14, allowed: k > 0");
+  rejected("[numerics]\nn_r = 4\n", "case.toml: [numerics] n_r = 4, allowed: n_r >= 8");
+  rejected("[numerics]\nn_r = 40\nsolver = \"cg\"\n", "case.toml: [numerics] unknown key 'solver', allowed: ");
+  rejected("[output]\ntimes = [2.0]\n", "case.toml: [output] times[0] = 2, allowed: 0 < times[0] <= t_end (1)");
+  rejected("[output]\nprobes = [0.1]\n", "case.toml: [output] probes[0] = 0.1, allowed: 0.138 <= probes[0] <= 1");
+  rejected("model = \"lattice2d\"\n", "model = \"lattice2d\", allowed: \"fdm1d\"");
+  rejected("[physics\nb = 0.5\n", "case.toml:1: malformed TOML: ");
+  require_clean_rejection(run_hmlattice("fdm1d missing.toml", dir.path), "missing.toml: no such case file");
+}
+
+TEST_CASE("hmlattice fdm1d writes its CSV files and a resolved config that reruns identically", "[verification][cli]") {
+  TempDir dir("cli-fdm1d-run");
+  dir.write("case.toml", "[physics]\nQ = 0.01\nb = 0.5\n[numerics]\nn_r = 40\nt_end = 0.05\n[output]\ntimes = [0.01, 0.05]\n");
+  const auto first = run_hmlattice("fdm1d case.toml --out run1", dir.path);
+  REQUIRE(first.exit_code == 0);
+  for (const char* f : {"borehole.csv", "profiles.csv", "probes.csv", "steady_state.csv", "config.toml"})
+    CHECK(std::filesystem::exists(dir.path / "run1" / f));
+  const auto second = run_hmlattice("fdm1d run1/config.toml --out run2", dir.path);
+  REQUIRE(second.exit_code == 0);
+  CHECK(hm::test::slurp(dir.path / "run1" / "profiles.csv") == hm::test::slurp(dir.path / "run2" / "profiles.csv"));
+  CHECK_THAT(hm::test::slurp(dir.path / "run1" / "config.toml"), Catch::Contains("E_over_M = 0.75229695454"));
 }

@@ -1,5 +1,6 @@
 #include "hm/verification/fdm1d_case.hpp"
 
+#include <cstring>
 #include <sstream>
 
 #include "hm/analytic/input_error.hpp"
@@ -47,9 +48,11 @@ Fdm1dCase read_fdm1d_case(const std::filesystem::path& file) {
   try {
     n.validate(c.physics.parameters.R_i);
   } catch (const InputError& e) {
-    // Fdm1dNumerics names its fields; map them to where they live in the case file.
-    const std::string what = e.what();
+    // Fdm1dNumerics names its fields; say it with the case file's table and key names.
+    std::string what = e.what();
     const bool is_output = what.rfind("output_times", 0) == 0 || what.rfind("probe_radii", 0) == 0;
+    for (auto [field, key] : {std::pair{"output_times", "times"}, std::pair{"probe_radii", "probes"}})
+      for (std::size_t at; (at = what.find(field)) != std::string::npos;) what.replace(at, std::strlen(field), key);
     (is_output ? out : num).fail(what);
   }
   return c;
