@@ -222,7 +222,7 @@ BenchmarkResult section32(const BenchmarkContext&) {
       "below it. The paper quotes one value, ≈ 5.5, for all b; we find it depends on b (6.00 at b = 0 falling to "
       "5.04 at b = 1 at steady state; K = [(1+mu_i^2)^(1/2)+mu_i]^2 = 5.04 is the b = 1 limit). The transient "
       "minimum is taken over all steps with sigma_1 > 0; the earliest steps resolve the wall field poorly, so treat "
-      "it as indicative. See docs/errata.md for the t99 and threshold discussion.");
+      "it as indicative. docs/errata.md E8 explains why the paper's t99 for b = 0 and 1 cannot be matched with Eq. 22's E/M.");
   return res;
 }
 
