@@ -8,7 +8,7 @@ packages=(
   g++ cmake make pkg-config
   libeigen3-dev libgsl-dev libboost-dev libcgal-dev libsuitesparse-dev
   libtoml11-dev libcli11-dev nlohmann-json3-dev catch2 libbenchmark-dev
-  python3-matplotlib python3-numpy
+  python3-matplotlib python3-numpy python3-meshio
 )
 
 missing=()
