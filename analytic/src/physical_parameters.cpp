@@ -53,6 +53,15 @@ DimensionlessParameters to_dimensionless(const PhysicalParameters& phys, VolStra
   return d;
 }
 
+DimensionlessParameters table1_borehole(double b, double Q, VolStrain vol_strain) {
+  DimensionlessParameters d;  // the struct's defaults are Table 1's nu, R_i, strengths, friction
+  d.Q = Q;
+  d.material.b = b;
+  d.material.E_over_M = E_over_M_table1(b, d.material.nu);
+  d.material.vol_strain = vol_strain;
+  return d;
+}
+
 Scales scales_of(const PhysicalParameters& phys) {
   return {phys.R_si, phys.E_si, phys.mu_si * phys.R_si * phys.R_si / (phys.k_si * phys.E_si)};
 }

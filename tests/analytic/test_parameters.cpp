@@ -218,3 +218,15 @@ TEST_CASE("Eq. 22 and the textbook Biot modulus give the Table 1 numbers of docs
   CHECK(E_over_M_standard(1.0, nu, 1e-3, 4.5) == roundoff(1e-3 * 4.5));
   CHECK(E_over_M_eq22(1.0, nu, 1e-3, 4.5) > 1.0);
 }
+
+TEST_CASE("The Table 1 borehole case takes E/M from Eq. 22 at its own b", "[analytic]") {
+  const auto d = hm::analytic::table1_borehole(0.2, 0.05, hm::analytic::VolStrain::appendix_a);
+  CHECK(d.Q == 0.05);
+  CHECK(d.material.b == 0.2);
+  CHECK(d.material.nu == 0.25);
+  CHECK(d.R_i == 0.138);
+  CHECK(d.material.vol_strain == hm::analytic::VolStrain::appendix_a);
+  // Eq. 22 by hand: 1e-3 * 1e10/2.2e9 + 3 (0.2 - 1e-3)(1 - 1e-3)(1 - 0.5) = 4.5454545e-3 + 0.2982015.
+  CHECK(d.material.E_over_M == Approx(0.302747045454545).epsilon(1e-12));  // round-off
+  CHECK_NOTHROW(d.validate());
+}

@@ -26,17 +26,6 @@ using analytic::VolStrain;
 using fdm1d::Fdm1dNumerics;
 using fdm1d::Fdm1dResult;
 
-DimensionlessParameters borehole_case(double b, double Q = 0.01, VolStrain vs = VolStrain::plane_strain) {
-  DimensionlessParameters d;
-  d.Q = Q;
-  d.material.b = b;
-  d.material.nu = 0.25;
-  d.material.E_over_M = analytic::E_over_M_table1(b, 0.25);
-  d.material.vol_strain = vs;
-  d.R_i = 0.138;
-  return d;
-}
-
 /// log2 of successive error ratios on grids refined by 2.
 double observed_order(double coarse_error, double fine_error) { return std::log2(coarse_error / fine_error); }
 
@@ -52,7 +41,7 @@ Metric balance_metric(const std::string& label, double worst) {
 
 BenchmarkResult steady_state(const BenchmarkContext& ctx) {
   BenchmarkResult res;
-  const auto params = borehole_case(0.5);
+  const auto params = analytic::table1_borehole(0.5);
   const analytic::SteadyBorehole exact(params.Q, params.material.b, params.material.nu, params.R_i);
   const double p_h = exact.borehole_pressure();
   const std::vector<int> grids = ctx.tier == Tier::paper ? std::vector<int>{50, 100, 200, 400, 800}
@@ -113,7 +102,7 @@ BenchmarkResult steady_state(const BenchmarkContext& ctx) {
 
 BenchmarkResult time_convergence(const BenchmarkContext& ctx) {
   BenchmarkResult res;
-  const auto params = borehole_case(0.5);
+  const auto params = analytic::table1_borehole(0.5);
   Fdm1dNumerics n;
   n.n_r = ctx.tier == Tier::paper ? 200 : 60;
   n.t_end = 0.1;
@@ -160,8 +149,8 @@ BenchmarkResult q_scaling(const BenchmarkContext&) {
   n.n_r = 100;
   n.t_end = 0.5;
   n.output_times = {0.01, 0.1, 0.5};
-  const auto low = fdm1d::run_fdm1d(borehole_case(0.5, 0.01), n);
-  const auto high = fdm1d::run_fdm1d(borehole_case(0.5, 1.0), n);
+  const auto low = fdm1d::run_fdm1d(analytic::table1_borehole(0.5, 0.01), n);
+  const auto high = fdm1d::run_fdm1d(analytic::table1_borehole(0.5, 1.0), n);
   double dp = 0, du = 0, p_scale = 0, u_scale = 0;
   for (std::size_t k = 0; k < low.snapshots.size(); ++k)
     for (std::size_t i = 0; i < low.r.size(); ++i) {
@@ -191,7 +180,7 @@ BenchmarkResult section32(const BenchmarkContext&) {
   double worst_balance = 0;
   for (VolStrain vs : {VolStrain::plane_strain, VolStrain::appendix_a}) {
     for (auto [b, paper] : paper_t99) {
-      const auto params = borehole_case(b, 0.01, vs);
+      const auto params = analytic::table1_borehole(b, 0.01, vs);
       Fdm1dNumerics n;
       n.t_end = 3.0;
       n.dt_max = 2e-3;

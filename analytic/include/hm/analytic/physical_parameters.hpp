@@ -45,6 +45,11 @@ struct DimensionlessParameters {
   void validate() const;
 };
 
+/// The paper's borehole case (Table 1, Section 3.2): nu = 0.25, R_i = 0.138, E/M by Eq. 22 with
+/// Table 1's porosity, K_w and E at this b, strengths and friction of Table 1.
+DimensionlessParameters table1_borehole(double b, double Q = 0.01,
+                                        VolStrain vol_strain = VolStrain::plane_strain);
+
 /// The scales that undo the dimensionless form: x = x* R, sigma = sigma* E, t = t* t_s.
 struct Scales {
   double length_m;   ///< R [m]
