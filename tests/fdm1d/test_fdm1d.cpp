@@ -13,6 +13,7 @@
 #include "hm/analytic/input_error.hpp"
 #include "hm/analytic/lame.hpp"
 #include "hm/analytic/steady_borehole.hpp"
+#include "hm/analytic/physical_parameters.hpp"
 #include "hm/fdm1d/fdm1d.hpp"
 
 namespace {
@@ -22,18 +23,6 @@ using hm::analytic::VolStrain;
 using hm::fdm1d::Fdm1dNumerics;
 using hm::fdm1d::Fdm1dResult;
 using hm::fdm1d::run_fdm1d;
-
-/// The paper's Section 3.2 case: Q = 0.01, nu = 0.25, R_i = 0.138, E/M by Eq. 22 with Table 1.
-DimensionlessParameters section32_case(double b, VolStrain vol_strain = VolStrain::plane_strain) {
-  DimensionlessParameters p;
-  p.Q = 0.01;
-  p.material.b = b;
-  p.material.nu = 0.25;
-  p.material.E_over_M = hm::analytic::E_over_M_table1(b, 0.25);
-  p.material.vol_strain = vol_strain;
-  p.R_i = 0.138;
-  return p;
-}
 
 /// Time steps that reach steady state: implicit Euler is L-stable, so steps growing to dt = 10 damp
 /// every transient mode (slowest decay rate ~1, 1/(1 + 10) per step) far below round-off by t = 300.
@@ -131,7 +120,7 @@ TEST_CASE("Output times are hit exactly and t_end is always stored", "[fdm1d]") 
   n.n_r = 20;
   n.t_end = 0.07;
   n.output_times = {0.01, 0.05};
-  const Fdm1dResult res = run_fdm1d(section32_case(0.5), n);
+  const Fdm1dResult res = run_fdm1d(hm::analytic::table1_borehole(0.5), n);
   REQUIRE(res.snapshots.size() == 3);
   CHECK(res.snapshots[0].t == 0.01);
   CHECK(res.snapshots[1].t == 0.05);
@@ -150,7 +139,7 @@ TEST_CASE("The progress callback sees every step and ends at t_end", "[fdm1d]") 
   n.output_times = {0.01};
   long calls = 0;
   double last = 0.0;
-  const Fdm1dResult res = run_fdm1d(section32_case(0.5), n, [&](double t, double t_end) {
+  const Fdm1dResult res = run_fdm1d(hm::analytic::table1_borehole(0.5), n, [&](double t, double t_end) {
     ++calls;
     CHECK(t > last);
     CHECK(t_end == 0.05);
@@ -167,7 +156,7 @@ TEST_CASE("The steady state matches Appendix B at second order in dr", "[fdm1d]"
   // n_r = 100..400 is where the observed order is within the band (1.82..1.95 for sigma_r).
   for (const double b : {0.0, 0.5, 1.0}) {
     CAPTURE(b);
-    const auto prm = section32_case(b);
+    const auto prm = hm::analytic::table1_borehole(b);
     const auto e1 = steady_errors(prm, 100), e2 = steady_errors(prm, 200), e4 = steady_errors(prm, 400);
     require_second_order(e1.p, e2.p, e4.p);
     require_second_order(e1.u, e2.u, e4.u);
@@ -184,7 +173,7 @@ TEST_CASE("The steady state matches Appendix B at second order in dr", "[fdm1d]"
 }
 
 TEST_CASE("The steady-state order in dr tends to 2 on fine grids", "[fdm1d][slow]") {
-  const auto prm = section32_case(0.5);
+  const auto prm = hm::analytic::table1_borehole(0.5);
   const auto e4 = steady_errors(prm, 400), e8 = steady_errors(prm, 800), e16 = steady_errors(prm, 1600);
   for (const auto& [coarse, mid, fine] : {std::array{e4.u, e8.u, e16.u}, std::array{e4.sigma_r, e8.sigma_r, e16.sigma_r},
                                           std::array{e4.sigma_theta, e8.sigma_theta, e16.sigma_theta}}) {
@@ -202,7 +191,7 @@ TEST_CASE("Pressure and displacement divided by Q do not depend on Q", "[fdm1d]"
   n.n_r = 100;
   n.t_end = 0.3;
   n.output_times = {0.01, 0.1, 0.3};
-  auto prm = section32_case(0.5);
+  auto prm = hm::analytic::table1_borehole(0.5);
   const Fdm1dResult ref = run_fdm1d(prm, n);
   for (const double Q : {1e-5, 3.0}) {
     prm.Q = Q;
@@ -232,7 +221,7 @@ TEST_CASE("The fluid volume balances at every step to round-off", "[fdm1d]") {
       CAPTURE(b, hm::analytic::to_string(vs));
       Fdm1dNumerics n;  // defaults: geometric steps 1e-5 .. 1e-3, landing on the output times
       n.n_r = 100;
-      const Fdm1dResult res = run_fdm1d(section32_case(b, vs), n);
+      const Fdm1dResult res = run_fdm1d(hm::analytic::table1_borehole(b, 0.01, vs), n);
       REQUIRE(res.summary.is_success());
       CHECK(res.summary.max_balance_error <= 1e-10);
       const auto& last = res.borehole.back();
@@ -248,8 +237,8 @@ TEST_CASE("Both volumetric-strain variants run and differ only through the coupl
   n.t_end = 0.1;
   n.output_times = {0.1};
   SECTION("b > 0: the factor 1/3 of Eq. A5 changes the transient") {
-    const Fdm1dResult ps = run_fdm1d(section32_case(0.5, VolStrain::plane_strain), n);
-    const Fdm1dResult aa = run_fdm1d(section32_case(0.5, VolStrain::appendix_a), n);
+    const Fdm1dResult ps = run_fdm1d(hm::analytic::table1_borehole(0.5, 0.01, VolStrain::plane_strain), n);
+    const Fdm1dResult aa = run_fdm1d(hm::analytic::table1_borehole(0.5, 0.01, VolStrain::appendix_a), n);
     REQUIRE(ps.summary.is_success());
     REQUIRE(aa.summary.is_success());
     // A smaller coupled storage (E/M + f b^2 ...) lets pressure diffuse faster: appendix-a (f = 1/3)
@@ -257,8 +246,8 @@ TEST_CASE("Both volumetric-strain variants run and differ only through the coupl
     CHECK(aa.borehole.back().p_h > 1.02 * ps.borehole.back().p_h);
   }
   SECTION("b = 0: the variants coincide") {
-    const Fdm1dResult ps = run_fdm1d(section32_case(0.0, VolStrain::plane_strain), n);
-    const Fdm1dResult aa = run_fdm1d(section32_case(0.0, VolStrain::appendix_a), n);
+    const Fdm1dResult ps = run_fdm1d(hm::analytic::table1_borehole(0.0, 0.01, VolStrain::plane_strain), n);
+    const Fdm1dResult aa = run_fdm1d(hm::analytic::table1_borehole(0.0, 0.01, VolStrain::appendix_a), n);
     for (std::size_t i = 0; i < ps.r.size(); ++i) {
       CHECK(aa.snapshots.back().p[i] == hm::test::roundoff(ps.snapshots.back().p[i]));
       CHECK(aa.snapshots.back().u_r[i] == hm::test::roundoff(ps.snapshots.back().u_r[i]));
@@ -271,7 +260,7 @@ TEST_CASE("With b = 0 the pressure ignores the solid and the solid is Lame's cyl
   n.n_r = 200;
   n.t_end = 2e-3;  // still transient for b = 0 (E/M = 3e-3: p_h reaches 99% at t ~ 2.2e-3)
   n.output_times = {5e-4, 2e-3};
-  auto prm = section32_case(0.0);
+  auto prm = hm::analytic::table1_borehole(0.0);
   const Fdm1dResult a = run_fdm1d(prm, n);
   prm.material.nu = 0.1;  // another solid, same fluid
   const Fdm1dResult c = run_fdm1d(prm, n);
@@ -306,7 +295,7 @@ TEST_CASE("A transient negative pressure appears for b > 0 and not for b = 0", "
     CAPTURE(hm::analytic::to_string(vs));
     for (const double b : {0.5, 1.0}) {
       CAPTURE(b);
-      const Fdm1dResult res = run_fdm1d(section32_case(b, vs), n);
+      const Fdm1dResult res = run_fdm1d(hm::analytic::table1_borehole(b, 0.01, vs), n);
       // Observed about -0.6% of the steady p_h (plane strain, b = 0.5); a tenth of that is a clear
       // signal far above round-off.
       CHECK(res.min_pressure.p < -5e-4 * p_h_steady);
@@ -314,7 +303,7 @@ TEST_CASE("A transient negative pressure appears for b > 0 and not for b = 0", "
       CHECK(res.min_pressure.t > 0.0);
     }
     // b = 0 is plain diffusion from a positive source: the M-matrix scheme keeps p >= 0 up to round-off.
-    const Fdm1dResult res0 = run_fdm1d(section32_case(0.0, vs), n);
+    const Fdm1dResult res0 = run_fdm1d(hm::analytic::table1_borehole(0.0, 0.01, vs), n);
     CHECK(res0.min_pressure.p >= -1e-14 * p_h_steady);
   }
 }

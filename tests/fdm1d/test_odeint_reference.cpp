@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "hm/analytic/input_error.hpp"
+#include "hm/analytic/physical_parameters.hpp"
 #include "hm/fdm1d/fdm1d.hpp"
 #include "hm/fdm1d/odeint_reference.hpp"
 
@@ -16,17 +17,6 @@ using hm::analytic::DimensionlessParameters;
 using hm::analytic::VolStrain;
 using hm::fdm1d::Fdm1dNumerics;
 using hm::fdm1d::Fdm1dSnapshot;
-
-DimensionlessParameters section32_case(double b, VolStrain vol_strain = VolStrain::plane_strain) {
-  DimensionlessParameters p;
-  p.Q = 0.01;
-  p.material.b = b;
-  p.material.nu = 0.25;
-  p.material.E_over_M = hm::analytic::E_over_M_table1(b, 0.25);
-  p.material.vol_strain = vol_strain;
-  p.R_i = 0.138;
-  return p;
-}
 
 /// Fixed steps dt up to t_end, output at `times`.
 Fdm1dNumerics fixed_steps(int n_r, double dt, double t_end, std::vector<double> times) {
@@ -83,17 +73,17 @@ void require_first_order_in_time(const DimensionlessParameters& prm, int n_r, do
 TEST_CASE("Implicit Euler converges at first order in dt to the Odeint solution", "[fdm1d]") {
   // b = 0 is left out: with E/M = 3e-3 it is at steady state by t ~ 0.01, where the time error
   // decays exponentially instead of scaling with dt.
-  SECTION("b = 0.5, plane strain") { require_first_order_in_time(section32_case(0.5), 40, 0.005); }
-  SECTION("b = 1, plane strain") { require_first_order_in_time(section32_case(1.0), 40, 0.005); }
-  SECTION("b = 0.5, appendix-a") { require_first_order_in_time(section32_case(0.5, VolStrain::appendix_a), 40, 0.005); }
+  SECTION("b = 0.5, plane strain") { require_first_order_in_time(hm::analytic::table1_borehole(0.5), 40, 0.005); }
+  SECTION("b = 1, plane strain") { require_first_order_in_time(hm::analytic::table1_borehole(1.0), 40, 0.005); }
+  SECTION("b = 0.5, appendix-a") { require_first_order_in_time(hm::analytic::table1_borehole(0.5, 0.01, VolStrain::appendix_a), 40, 0.005); }
 }
 
 TEST_CASE("Implicit Euler's first order in dt holds on a fine grid", "[fdm1d][slow]") {
-  require_first_order_in_time(section32_case(0.5), 200, 0.0025);
+  require_first_order_in_time(hm::analytic::table1_borehole(0.5), 200, 0.0025);
 }
 
 TEST_CASE("The Odeint reference is converged far below implicit Euler's time error", "[fdm1d]") {
-  const auto prm = section32_case(0.5);
+  const auto prm = hm::analytic::table1_borehole(0.5);
   const auto n = fixed_steps(40, 1e-3, 0.1, {0.02, 0.1});
   const auto loose = hm::fdm1d::run_fdm1d_odeint(prm, n);
   const auto tight = hm::fdm1d::run_fdm1d_odeint(prm, n, {1e-14, 1e-12});
@@ -107,7 +97,7 @@ TEST_CASE("The Odeint reference is converged far below implicit Euler's time err
 
 TEST_CASE("Odeint and implicit Euler reach the same discrete steady state", "[fdm1d]") {
   // Both solve A p = s in the limit, so they agree to the Odeint tolerance, whatever dt was.
-  const auto prm = section32_case(0.5);
+  const auto prm = hm::analytic::table1_borehole(0.5);
   Fdm1dNumerics n = fixed_steps(40, 1e-3, 40.0, {40.0});
   n.dt_growth = 1.5;
   n.dt_max = 5.0;
@@ -121,7 +111,7 @@ TEST_CASE("Odeint and implicit Euler reach the same discrete steady state", "[fd
 }
 
 TEST_CASE("The Odeint reference validates its inputs", "[fdm1d]") {
-  const auto prm = section32_case(0.5);
+  const auto prm = hm::analytic::table1_borehole(0.5);
   Fdm1dNumerics n;
   n.n_r = 2001;
   REQUIRE_THROWS_WITH(hm::fdm1d::run_fdm1d_odeint(prm, n), Catch::StartsWith("n_r = 2001"));

@@ -7,6 +7,7 @@
 #include "approx.hpp"
 #include "hm/analytic/failure_criteria.hpp"
 #include "hm/analytic/steady_borehole.hpp"
+#include "hm/analytic/physical_parameters.hpp"
 #include "hm/fdm1d/section32.hpp"
 
 namespace {
@@ -28,16 +29,6 @@ Fdm1dResult series(const std::vector<double>& t, const std::vector<double>& p_h,
   return res;
 }
 
-hm::analytic::DimensionlessParameters section32_case(double b) {
-  hm::analytic::DimensionlessParameters p;
-  p.Q = 0.01;
-  p.material.b = b;
-  p.material.nu = 0.25;
-  p.material.E_over_M = hm::analytic::E_over_M_table1(b, 0.25);
-  p.R_i = 0.138;
-  return p;
-}
-
 }  // namespace
 
 TEST_CASE("The steady borehole pressure is Eq. 23", "[fdm1d]") {
@@ -56,7 +47,7 @@ TEST_CASE("The time to 99% of the steady pressure is interpolated between steps"
 TEST_CASE("Negative probe pressure is measured in depth and time and duration", "[fdm1d]") {
   // p: 0 -> -1 (t = 1) -> -3 (t = 2) -> 1 (t = 3): negative on (0, 2.75).
   const auto res = series({0.0, 1.0, 2.0, 3.0}, {0, 0, 0, 0}, {0.0, -1.0, -3.0, 1.0});
-  const auto d = hm::fdm1d::section32_diagnostics(res, section32_case(0.5));
+  const auto d = hm::fdm1d::section32_diagnostics(res, hm::analytic::table1_borehole(0.5));
   REQUIRE(d.probes.size() == 1);
   CHECK(d.probes[0].r == 0.5);
   CHECK(d.probes[0].p_min == -3.0);
@@ -68,7 +59,7 @@ TEST_CASE("Negative probe pressure is measured in depth and time and duration", 
 TEST_CASE("The wall ratio sigma_CC/sigma_1 at steady state matches Appendix B", "[fdm1d]") {
   for (const double b : {0.0, 0.5, 1.0}) {
     CAPTURE(b);
-    const auto prm = section32_case(b);
+    const auto prm = hm::analytic::table1_borehole(b);
     hm::fdm1d::Fdm1dNumerics n;  // n_r = 400
     n.dt_initial = 1e-3;
     n.dt_growth = 2.0;
