@@ -47,8 +47,8 @@ BenchmarkResult steady_state(const BenchmarkContext& ctx) {
   const std::vector<int> grids = ctx.tier == Tier::paper ? std::vector<int>{50, 100, 200, 400, 800}
                                                          : std::vector<int>{50, 100, 200};
   Table table{"Steady state (t* = 8) against Appendix B, b = 0.5, Q = 0.01: max-norm errors / their scale",
-              {"n_r", "dr", "p error / p_h", "order", "u_r error / max u_r", "order", "sigma_theta(R_i) error / exact",
-               "order"},
+              {"n_r", "dr", "p (B3) / p_h", "order", "u_r (B6) / max u_r", "order", "sigma_theta(R_i) (B8) / exact",
+               "order", "sigma_r (B7), sigma_z (B9) / max sigma_theta"},
               {}};
   std::vector<double> ep, eu, es;
   double worst_balance = 0;
@@ -65,21 +65,23 @@ BenchmarkResult steady_state(const BenchmarkContext& ctx) {
     const Fdm1dResult r = fdm1d::run_fdm1d(params, n);
     worst_balance = std::max(worst_balance, r.summary.max_balance_error);
     const auto& s = r.snapshots.back();
-    double e_p = 0, e_u = 0, u_max = 0;
+    double e_p = 0, e_u = 0, u_max = 0, e_sr = 0, e_sz = 0;
+    const double wall = exact.state(params.R_i).sigma_theta;  // the largest stress anywhere
     for (std::size_t i = 0; i < r.r.size(); ++i) {
       const auto a = exact.state(r.r[i]);
       e_p = std::max(e_p, std::abs(s.p[i] - a.p));
       e_u = std::max(e_u, std::abs(s.u_r[i] - a.u_r));
       u_max = std::max(u_max, std::abs(a.u_r));
+      e_sr = std::max(e_sr, std::abs(s.sigma_r[i] - a.sigma_r) / wall);
+      e_sz = std::max(e_sz, std::abs(s.sigma_z[i] - a.sigma_z) / wall);
     }
-    const double wall = exact.state(params.R_i).sigma_theta;
     ep.push_back(e_p / p_h);
     eu.push_back(e_u / u_max);
     es.push_back(std::abs(s.sigma_theta[0] - wall) / wall);
     const std::size_t k = ep.size() - 1;
     auto order = [&](const std::vector<double>& e) { return k ? fmt(observed_order(e[k - 1], e[k])) : "—"; };
     table.rows.push_back({std::to_string(n_r), fmt((1 - params.R_i) / n_r), fmt(ep[k]), order(ep), fmt(eu[k]),
-                          order(eu), fmt(es[k]), order(es)});
+                          order(eu), fmt(es[k]), order(es), fmt(e_sr) + ", " + fmt(e_sz)});
   }
   res.tables.push_back(table);
   const std::size_t k = ep.size() - 1;
@@ -176,6 +178,9 @@ BenchmarkResult section32(const BenchmarkContext&) {
               {"b", "vol_strain", "t99 (ours)", "t99 (paper)", "min p / p_h", "at r*", "at t*",
                "C_u/T_u threshold, steady", "threshold, transient min", "(paper)"},
               {}};
+  Table probe_table{"Fig. 10D: how deep and how long the pressure stays negative at the probes (plane strain)",
+                    {"b", "probe r*", "min p", "at t*", "time negative", "last negative t*"},
+                    {}};
   const std::vector<std::pair<double, double>> paper_t99 = {{0.0, 0.22}, {0.5, 0.55}, {1.0, 0.5}};
   double worst_balance = 0;
   for (VolStrain vs : {VolStrain::plane_strain, VolStrain::appendix_a}) {
@@ -191,6 +196,10 @@ BenchmarkResult section32(const BenchmarkContext&) {
       table.rows.push_back({fmt(b), to_string(vs), fmt(d.t_99), fmt(paper), fmt(d.min_pressure.p / d.p_h_steady),
                             fmt(d.min_pressure.r), fmt(d.min_pressure.t), fmt(d.wall_ratio_steady),
                             fmt(d.wall_ratio_min), "≈ 5.5"});
+      if (vs == VolStrain::plane_strain && b > 0)
+        for (const auto& pr : d.probes)
+          probe_table.rows.push_back({fmt(b), fmt(pr.r), fmt(pr.p_min), fmt(pr.t_min), fmt(pr.time_negative),
+                                      fmt(pr.last_negative_t)});
       const std::string tag = "b = " + fmt(b) + ", " + to_string(vs);
       // The paper's t99 values are read off its text to about two digits; shown, not gated.
       res.metrics.push_back({.name = "t99, " + tag, .value = d.t_99, .reference = paper, .tolerance = 0.05,
@@ -205,6 +214,7 @@ BenchmarkResult section32(const BenchmarkContext&) {
     }
   }
   res.tables.push_back(table);
+  res.tables.push_back(probe_table);
   res.metrics.push_back(balance_metric("Section 3.2 runs", worst_balance));
   res.notes.push_back(
       "The C_u/T_u threshold is sigma_CC/sigma_1 at the borehole wall: shear failure comes first when C_u/T_u is "
