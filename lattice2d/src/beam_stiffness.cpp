@@ -3,6 +3,8 @@
 #include <cassert>
 #include <cmath>
 
+#include <Eigen/Cholesky>
+
 #include "hm/analytic/validation.hpp"
 
 namespace hm::lattice2d {
@@ -45,6 +47,32 @@ Matrix6d beam_element_stiffness(double length, double angle, const BeamParameter
   T.topLeftCorner<3, 3>() = R;
   T.bottomRightCorner<3, 3>() = R;
   return T.transpose() * local * T;
+}
+
+Matrix63d beam_element_factor(double length, double angle, const BeamParameters& p, BeamState state) {
+  Matrix63d V = Matrix63d::Zero();
+  const double c = std::cos(angle), s = std::sin(angle);
+  if (state != BeamState::open) {
+    const double r = std::sqrt(p.normal_stiffness);
+    V.col(0) << -r * c, -r * s, 0.0, r * c, r * s, 0.0;
+  }
+  if (state == BeamState::intact) {
+    const double k_w = p.rotational_stiffness(), g = p.gamma(), L = length;
+    Eigen::Matrix2d D;
+    D << g + 1.0 / 3.0, 1.0 / 6.0 - g, 1.0 / 6.0 - g, g + 1.0 / 3.0;
+    D *= 2.0 * k_w * L * L;
+    const Eigen::Matrix2d C = D.llt().matrixL();
+    Eigen::Matrix<double, 2, 6> B;  // as in beam_element_stiffness, local (n, s, omega) components
+    B << 0, 1 / L, 1, 0, -1 / L, 0,  //
+        0, 1 / L, 0, 0, -1 / L, 1;
+    Eigen::Matrix3d R;  // global (x, y, omega) -> local (n, s, omega)
+    R << c, s, 0, -s, c, 0, 0, 0, 1;
+    Matrix6d T = Matrix6d::Zero();
+    T.topLeftCorner<3, 3>() = R;
+    T.bottomRightCorner<3, 3>() = R;
+    V.rightCols<2>() = T.transpose() * B.transpose() * C;
+  }
+  return V;
 }
 
 Eigen::SparseMatrix<double> assemble_stiffness(const Lattice& lattice, const BeamParameters& parameters,

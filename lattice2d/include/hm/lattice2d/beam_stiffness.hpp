@@ -56,6 +56,17 @@ using Matrix6d = Eigen::Matrix<double, 6, 6>;
 Matrix6d beam_element_stiffness(double length, double angle, const BeamParameters& parameters,
                                 BeamState state = BeamState::intact);
 
+using Matrix63d = Eigen::Matrix<double, 6, 3>;
+
+/// A factor V of the element stiffness, K_e = V V^T (beam_element_stiffness(length, angle, parameters,
+/// state)), used for rank-<=3 updates/downdates of a factorised global matrix when a beam changes state.
+/// Column 0 is the normal spring, sqrt(k_n) b with b.u_e = (u_j - u_i).n_ij the elongation (zero when
+/// open); columns 1 and 2 are the bending part B^T C with D = C C^T (Cholesky of the 2 x 2 bending
+/// matrix, SPD: eigenvalues k_w L^2 and 2 k_w L^2 (2 gamma + 1/6)), zero unless intact.
+/// So intact -> contact removes columns 1-2 (rank 2), contact -> open column 0 (rank 1).
+Matrix63d beam_element_factor(double length, double angle, const BeamParameters& parameters,
+                              BeamState state = BeamState::intact);
+
 /// Degree of freedom of a particle's component (0 = x, 1 = y, 2 = rotation).
 constexpr int dof_index(int particle, int component) { return 3 * particle + component; }
 

@@ -1,0 +1,183 @@
+#pragma once
+/// \file
+/// One small interface for the sparse symmetric positive definite systems of the lattice model (the
+/// beam mechanics of Section 2.1 and, later, the flow network of Section 2.2): factorise or set up a
+/// matrix A, solve A x = b, and apply a symmetric low-rank modification A <- A + sigma W W^T
+/// (sigma = +1 update, -1 downdate) when a beam breaks or a contact opens or closes.
+///
+/// Two implementations behind it (docs/lattice.md, "Solving"):
+///  - CholmodSolver (default): CHOLMOD's sparse LDL' with a fill-reducing ordering, kept for the
+///    whole run and modified in place by cholmod_updown; refactorised after a set number of
+///    modifications or when a solve's relative residual exceeds a tolerance.
+///  - PcgSolver: Eigen's preconditioned conjugate gradients, warm-started from the previous solution;
+///    a modification only changes the stored matrix (the preconditioner is rebuilt lazily). For
+///    cross-checking.
+/// Numerical trouble (a non-positive pivot, no convergence) is reported by info(), Eigen style, never
+/// thrown. Dimensionless; the interface knows nothing about beams.
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+namespace hm::lattice2d {
+
+/// The solver strategies.
+enum class SpdSolverKind {
+  cholmod,  ///< sparse LDL' factor with rank-k updates/downdates (default)
+  pcg,      ///< preconditioned conjugate gradients (cross-check)
+};
+/// "cholmod" or "pcg".
+std::string to_string(SpdSolverKind kind);
+/// Inverse of to_string; throws hm::InputError "solver = 'x', allowed: cholmod, pcg".
+SpdSolverKind spd_solver_kind_from_string(std::string_view name);
+
+/// Fill-reducing orderings of the CHOLMOD factor.
+enum class CholmodOrdering {
+  nested_dissection,  ///< CHOLMOD's NESDIS (METIS bisection + constrained minimum degree); default
+  metis,              ///< plain METIS nested dissection
+  amd,                ///< approximate minimum degree
+  automatic,          ///< cholmod_analyze's own choice (tries AMD, then METIS/NESDIS if AMD fills badly)
+};
+
+/// Preconditioners of PcgSolver.
+enum class PcgPreconditioner {
+  incomplete_cholesky,  ///< Eigen::IncompleteCholesky (zero-fill-ish, diagonal shift on breakdown); default
+  jacobi,               ///< diagonal
+};
+
+/// Options of both solvers. Every default is set here (Ceres style).
+struct SpdSolverOptions {
+  // --- CholmodSolver -----------------------------------------------------------------------------
+  /// Fill-reducing ordering. Our choice: nested dissection, the best fill for 2D meshes.
+  CholmodOrdering ordering = CholmodOrdering::nested_dissection;
+  /// Factorise supernodally (BLAS-3, fast) and convert to the simplicial LDL' that cholmod_updown
+  /// needs; false factorises simplicial LDL' directly. Our choice by measurement (docs/lattice.md).
+  bool supernodal_factorization = true;
+  /// Refactorise from the stored matrix after this many modify() calls (bounds round-off growth in
+  /// the modified factor). Allowed: >= 1.
+  int max_modifications = 2000;
+  /// After every solve, ||A x - b|| / ||b|| is computed from the stored A; above this the factor is
+  /// rebuilt and the solve repeated once (CholmodSolver), or the solve is reported as failed.
+  /// Allowed: 0 < residual_tolerance < 1.
+  double residual_tolerance = 1e-8;
+  /// A pivot D_kk <= pivot_tolerance * max_k D_kk of the (modified) LDL' factor is reported as
+  /// Eigen::NumericalIssue (a singular or indefinite matrix). Allowed: 0 <= pivot_tolerance < 1.
+  double pivot_tolerance = 1e-13;
+
+  // --- PcgSolver ---------------------------------------------------------------------------------
+  PcgPreconditioner preconditioner = PcgPreconditioner::incomplete_cholesky;
+  /// Relative residual ||A x - b|| / ||b|| at which CG stops (Eigen's tolerance). Allowed: (0, 1).
+  double cg_tolerance = 1e-10;
+  /// CG iteration cap; 0 = the matrix dimension. Allowed: >= 0.
+  int cg_max_iterations = 0;
+  /// Start CG from the previous solution when the size matches (warm start). Our choice: true.
+  bool warm_start = true;
+
+  /// Throws hm::InputError "solver_options.field = value, allowed: rule".
+  void validate() const;
+};
+
+/// What the last operation did (Ceres' Summary in small).
+struct SpdSolveReport {
+  Eigen::ComputationInfo info = Eigen::Success;
+  double relative_residual = 0.0;  ///< ||A x - b|| / ||b|| of the last solve (0 for b = 0)
+  int iterations = 0;              ///< CG iterations of the last solve (0 for CHOLMOD)
+  bool refactorized = false;       ///< the last solve rebuilt the factor (residual too large)
+  int n_factorizations = 0;        ///< numeric factorisations since compute()
+  int n_modifications = 0;         ///< modify() calls since the last factorisation
+  std::string message;             ///< human-readable reason when info != Success
+};
+
+/// Abstract sparse SPD solver. Usage: compute(A); x = solve(b); modify(W, -1); x = solve(b); ...
+/// The solver keeps its own copy of A (both triangles), updated by modify(), for residual checks.
+/// Limits: real double only; A must be SPD for success (a singular A gives info() = NumericalIssue).
+class SpdSolver {
+ public:
+  using Matrix = Eigen::SparseMatrix<double>;  // column-major, both triangles stored
+  virtual ~SpdSolver() = default;
+
+  /// Analyse (ordering, symbolic) and factorise / set up for A. A square, symmetric, both triangles.
+  virtual void compute(const Matrix& A) = 0;
+  /// x with A x = b for the current A. On failure info() != Success and x is unspecified.
+  virtual Eigen::VectorXd solve(const Eigen::VectorXd& b) = 0;
+  /// A <- A + sigma W W^T, sigma = +1 or -1, W n x k (k small, e.g. <= 3; any k works).
+  /// Entries of W W^T outside A's sparsity pattern are inserted (slower; keep them inside).
+  virtual void modify(const Matrix& W, int sigma) = 0;
+  /// Rebuild the numeric factor / preconditioner from the stored A (ordering kept).
+  virtual void refactorize() = 0;
+  /// Status of the last compute/modify/solve (Eigen::Success, NumericalIssue, NoConvergence).
+  Eigen::ComputationInfo info() const { return report_.info; }
+  const SpdSolveReport& report() const { return report_; }
+  /// The current matrix A (after all modifications).
+  const Matrix& matrix() const { return matrix_; }
+  Eigen::Index rows() const { return matrix_.rows(); }
+  virtual std::string name() const = 0;
+
+ protected:
+  /// A += sigma W W^T on the stored copy, in place where the pattern allows.
+  void add_low_rank(const Matrix& W, int sigma);
+  /// ||A x - b|| / ||b|| with the stored A (||b|| = 0: ||A x||).
+  double relative_residual(const Eigen::VectorXd& x, const Eigen::VectorXd& b) const;
+
+  Matrix matrix_;
+  SpdSolveReport report_;
+};
+
+/// CHOLMOD LDL' with cholmod_updown (SuiteSparse 5.12). One cholmod_common per solver; every CHOLMOD
+/// object is owned RAII. W's rows are permuted with the factor's ordering internally.
+/// Limits: the factor's fill is fixed by the first ordering; modifications inside A's pattern keep it.
+class CholmodSolver final : public SpdSolver {
+ public:
+  explicit CholmodSolver(const SpdSolverOptions& options = {});
+  ~CholmodSolver() override;
+  CholmodSolver(const CholmodSolver&) = delete;
+  CholmodSolver& operator=(const CholmodSolver&) = delete;
+
+  void compute(const Matrix& A) override;
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) override;
+  void modify(const Matrix& W, int sigma) override;
+  void refactorize() override;
+  std::string name() const override { return "cholmod"; }
+
+  /// Name of the ordering the analysis used ("nesdis", "metis", "amd", ...).
+  std::string ordering_used() const;
+  /// Nonzeros of the factor L (with its diagonal).
+  double factor_nonzeros() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  SpdSolverOptions options_;
+};
+
+/// Eigen::ConjugateGradient with an incomplete-Cholesky or Jacobi preconditioner, warm start.
+/// Limits: the iteration count grows with the condition number (~sqrt(cond)); no factor reuse.
+class PcgSolver final : public SpdSolver {
+ public:
+  explicit PcgSolver(const SpdSolverOptions& options = {});
+  ~PcgSolver() override;
+  PcgSolver(const PcgSolver&) = delete;
+  PcgSolver& operator=(const PcgSolver&) = delete;
+
+  void compute(const Matrix& A) override;
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) override;
+  void modify(const Matrix& W, int sigma) override;
+  void refactorize() override;
+  std::string name() const override { return "pcg"; }
+  /// Forget the previous solution (the next solve starts from x = 0).
+  void clear_warm_start() { previous_.resize(0); }
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  SpdSolverOptions options_;
+  Eigen::VectorXd previous_;
+  bool stale_ = true;  // preconditioner out of date with matrix_
+};
+
+/// A solver of the given kind (options validated; throws hm::InputError).
+std::unique_ptr<SpdSolver> make_spd_solver(SpdSolverKind kind, const SpdSolverOptions& options = {});
+
+}  // namespace hm::lattice2d

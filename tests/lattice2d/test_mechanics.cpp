@@ -1,0 +1,295 @@
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <iostream>
+#include <vector>
+
+#include "hm/analytic/input_error.hpp"
+#include "hm/lattice2d/mechanics.hpp"
+
+using namespace hm::lattice2d;
+
+namespace {
+
+Lattice annulus(long long n = 2000, std::uint64_t seed = 3) {
+  LatticeSpec spec;
+  spec.domain = DomainShape::annulus;
+  spec.n_particles = n;
+  spec.seed = seed;
+  return generate_lattice(spec);
+}
+
+Lattice rectangle(long long n = 1500) {
+  LatticeSpec spec;
+  spec.domain = DomainShape::rectangle;
+  spec.n_particles = n;
+  spec.seed = 5;
+  return generate_lattice(spec);
+}
+
+double max_abs_force(const std::vector<BeamForce>& forces) {
+  double m = 0.0;
+  for (const auto& f : forces)
+    m = std::max({m, f.force_on_i.cwiseAbs().maxCoeff(), std::abs(f.moment_i), std::abs(f.moment_j)});
+  return m;
+}
+
+// The interior beam closest to the centre whose direction is within 30 degrees of x.
+int central_x_beam(const Lattice& l) {
+  int best = -1;
+  double best_r = 1e9;
+  for (int e = 0; e < l.n_beams(); ++e) {
+    const auto [i, j] = l.beams[static_cast<std::size_t>(e)];
+    if (l.boundary[i] != BoundaryTag::interior || l.boundary[j] != BoundaryTag::interior) continue;
+    if (std::abs(l.direction(0, e)) < std::cos(M_PI / 6)) continue;
+    const double r = (0.5 * (l.points.col(i) + l.points.col(j))).norm();
+    if (r < best_r) {
+      best_r = r;
+      best = e;
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+TEST_CASE("Mechanics inputs: defaults valid, bad boundary conditions rejected naming the field", "[lattice2d]") {
+  const Lattice l = annulus(600);
+  REQUIRE_NOTHROW(BoundaryConditions{}.validate(l));
+  REQUIRE_NOTHROW(MechanicsOptions{}.validate());
+  CHECK(boundary_support_from_string("fixed") == BoundarySupport::fixed);
+  CHECK_THROWS_WITH(boundary_support_from_string("clamped", "boundary_conditions.inner"),
+                    Catch::Contains("boundary_conditions.inner = 'clamped', allowed: free, fixed"));
+  BoundaryConditions bc;
+  bc.prescribed.push_back({l.n_particles(), 0, 0.0});
+  CHECK_THROWS_WITH(bc.validate(l), Catch::Contains("boundary_conditions.prescribed[0].particle = " + std::to_string(l.n_particles())));
+  bc.prescribed = {{0, 3, 0.0}};
+  CHECK_THROWS_WITH(bc.validate(l), Catch::Contains("prescribed[0].component = 3"));
+  bc.prescribed = {{0, 1, NAN}};
+  CHECK_THROWS_AS(bc.validate(l), hm::InputError);
+  bc = BoundaryConditions{};
+  bc.inner_pressure = INFINITY;
+  CHECK_THROWS_WITH(bc.validate(l), Catch::Contains("boundary_conditions.inner_pressure = inf"));
+  bc = BoundaryConditions{};
+  bc.inner_pressure = 0.1;
+  CHECK_THROWS_WITH(bc.validate(rectangle(600)), Catch::Contains("inner_pressure = 0.1, allowed: 0 unless domain = annulus"));
+  bc = BoundaryConditions{};
+  bc.prescribe_boundary_strain = true;
+  bc.outer = BoundarySupport::fixed;
+  CHECK_THROWS_WITH(bc.validate(l), Catch::Contains("prescribe_boundary_strain"));
+  bc = BoundaryConditions{};
+  bc.prescribe_boundary_strain = true;
+  bc.boundary_strain << 0.0, 1e-3, 0.0, 0.0;
+  CHECK_THROWS_WITH(bc.validate(l), Catch::Contains("boundary_strain(0,1) = 0.001"));
+  // Held degrees of freedom that leave a rotation free: only x, y of one particle.
+  bc = BoundaryConditions{};
+  bc.prescribed = {{0, 0, 0.0}, {0, 1, 0.0}};
+  CHECK_THROWS_WITH(BeamMechanics(l, BeamParameters{}, bc), Catch::Contains("rigid-body motion"));
+  MechanicsOptions o;
+  o.max_contact_iterations = 0;
+  CHECK_THROWS_WITH(o.validate(), Catch::Contains("mechanics_options.max_contact_iterations = 0"));
+  BeamMechanics m(l, BeamParameters{}, BoundaryConditions{});
+  CHECK_THROWS_WITH(m.break_beam(l.n_beams()), Catch::Contains("beam = " + std::to_string(l.n_beams())));
+}
+
+TEST_CASE("Rigid-body motions carry no force", "[lattice2d]") {
+  const Lattice l = annulus();
+  const std::vector<BeamState> intact(static_cast<std::size_t>(l.n_beams()), BeamState::intact);
+  SECTION("forces of a rigid displacement field") {
+    Eigen::VectorXd u(3 * l.n_particles());
+    for (int p = 0; p < l.n_particles(); ++p) u.segment<3>(3 * p) << 0.3 - 0.01 * l.points(1, p), -0.2 + 0.01 * l.points(0, p), 0.01;
+    // round-off: u = O(0.3), stiffness O(1); cancellation of O(1) terms
+    CHECK(max_abs_force(compute_beam_forces(l, BeamParameters{}, intact, u)) < 1e-14);
+  }
+  SECTION("a rigid motion prescribed on the boundary moves the whole lattice rigidly") {
+    BoundaryConditions bc;
+    for (int p = 0; p < l.n_particles(); ++p) {
+      if (l.boundary[static_cast<std::size_t>(p)] == BoundaryTag::interior) continue;
+      bc.prescribed.push_back({p, 0, 1e-3 - 2e-3 * l.points(1, p)});
+      bc.prescribed.push_back({p, 1, 2e-3 * l.points(0, p)});
+    }
+    BeamMechanics m(l, BeamParameters{}, bc);
+    const MechanicsSummary s = m.solve();
+    REQUIRE(s.is_converged());
+    CHECK(max_abs_force(m.beam_forces()) < 1e-15);  // round-off of 1e-3 displacements
+    for (int p = 0; p < l.n_particles(); ++p) CHECK(m.displacement()[3 * p + 2] == Approx(2e-3).epsilon(1e-9));  // round-off x cond
+  }
+}
+
+TEST_CASE("A homogeneous boundary strain stretches every beam and leaves the free DOFs in equilibrium", "[lattice2d]") {
+  const Lattice l = rectangle();
+  for (double e : {1e-3, -1e-3}) {
+    BoundaryConditions bc;
+    bc.prescribe_boundary_strain = true;
+    bc.boundary_strain = e * Eigen::Matrix2d::Identity();
+    BeamMechanics m(l, BeamParameters{}, bc);
+    const MechanicsSummary s = m.solve();
+    REQUIRE(s.is_converged());
+    // round-off: reaction sums of O(1e-3) forces; cond ~ 2e4 (test_spd_solver)
+    CHECK(s.equilibrium_residual < 1e-10);
+    int wrong = 0;
+    double n_min = INFINITY, n_max = -INFINITY;
+    for (const BeamForce& f : m.beam_forces()) {
+      if (f.normal * e <= 0.0) ++wrong;
+      n_min = std::min(n_min, f.normal);
+      n_max = std::max(n_max, f.normal);
+    }
+    std::cout << "[mechanics] isotropic strain " << e << ": beam normal forces in [" << n_min << ", " << n_max
+              << "], equilibrium residual " << s.equilibrium_residual << "\n";
+    CHECK(wrong == 0);
+  }
+}
+
+TEST_CASE("Pressure on the borehole wall moves the wall radially outward", "[lattice2d]") {
+  const Lattice l = annulus(3000);
+  for (BoundarySupport outer : {BoundarySupport::free, BoundarySupport::fixed}) {
+    BoundaryConditions bc;
+    bc.outer = outer;
+    bc.inner_pressure = 1e-3;
+    BeamMechanics m(l, BeamParameters{}, bc);
+    CHECK(m.is_pinned() == (outer == BoundarySupport::free));
+    const MechanicsSummary s = m.solve();
+    REQUIRE(s.is_converged());
+    CHECK(s.equilibrium_residual < 1e-10);  // round-off, as above
+    double ur_min = INFINITY, ur_outer = 0.0;
+    for (int p = 0; p < l.n_particles(); ++p) {
+      const Eigen::Vector2d r = l.points.col(p).normalized();
+      const double ur = r.dot(m.displacement().segment<2>(3 * p));
+      if (l.boundary[static_cast<std::size_t>(p)] == BoundaryTag::inner) ur_min = std::min(ur_min, ur);
+      if (l.boundary[static_cast<std::size_t>(p)] == BoundaryTag::outer) ur_outer = std::max(ur_outer, std::abs(ur));
+    }
+    std::cout << "[mechanics] borehole pressure 1e-3, outer " << to_string(outer) << ": min wall u_r " << ur_min
+              << ", max |u_r| outer " << ur_outer << "\n";
+    CHECK(ur_min > 0.0);
+    if (outer == BoundarySupport::fixed) CHECK(ur_outer == 0.0);
+    if (outer == BoundarySupport::free) {
+      CHECK(ur_outer > 0.0);
+      // The pin carries nothing: pressure on a closed polygon has zero resultant and moment.
+      const Eigen::VectorXd r = m.reactions();
+      const double f_max = m.loads().cwiseAbs().maxCoeff();
+      CHECK(r.segment<3>(3 * m.pinned_particle()).cwiseAbs().maxCoeff() < 1e-10 * f_max);  // round-off x cond
+    }
+  }
+}
+
+TEST_CASE("A broken beam pushed together is a compression-only contact; pulled apart it carries nothing", "[lattice2d]") {
+  const Lattice l = rectangle();
+  BoundaryConditions bc;
+  bc.outer_pressure = 1e-3;  // pure traction, compression (pinned automatically)
+  for (SpdSolverKind kind : {SpdSolverKind::cholmod, SpdSolverKind::pcg}) {
+    MechanicsOptions options;
+    options.solver = kind;
+    BeamMechanics m(l, BeamParameters{}, bc, options);
+    REQUIRE(m.solve().is_converged());
+    const int e = central_x_beam(l);
+    CHECK(m.break_beam(e) == BeamState::contact);  // shortened now: becomes a contact at once
+    MechanicsSummary s = m.solve();
+    REQUIRE(s.is_converged());
+    CHECK(m.states()[static_cast<std::size_t>(e)] == BeamState::contact);
+    BeamForce f = m.beam_forces()[static_cast<std::size_t>(e)];
+    CHECK(f.normal < 0.0);
+    CHECK(std::abs(f.shear) < 1e-12 * std::abs(f.normal));  // round-off of n.s = 0 in the rotation
+    CHECK(f.moment_i == 0.0);
+    // Reverse the load: the boundary now pulls, the contact opens and carries nothing.
+    m.set_external_forces(-2.0 * m.loads());
+    s = m.solve();
+    REQUIRE(s.is_converged());
+    CHECK(s.n_contact_changes >= 1);
+    CHECK(m.states()[static_cast<std::size_t>(e)] == BeamState::open);
+    f = m.beam_forces()[static_cast<std::size_t>(e)];
+    CHECK(f.force_on_i.norm() == 0.0);
+    const auto [i, j] = l.beams[static_cast<std::size_t>(e)];
+    CHECK((m.displacement().segment<2>(3 * j) - m.displacement().segment<2>(3 * i)).dot(l.direction.col(e)) > 0.0);
+    // And back: closes again.
+    m.set_external_forces(Eigen::VectorXd::Zero(3 * l.n_particles()));
+    REQUIRE(m.solve().is_converged());
+    CHECK(m.states()[static_cast<std::size_t>(e)] == BeamState::contact);
+    CHECK(m.beam_forces()[static_cast<std::size_t>(e)].normal < 0.0);
+  }
+}
+
+TEST_CASE("Fifty breaks with factor downdates agree with PCG on the same broken lattice", "[lattice2d]") {
+  const Lattice l = annulus(2000);
+  BoundaryConditions bc;
+  bc.outer = BoundarySupport::fixed;
+  bc.inner_pressure = 1e-3;
+  MechanicsOptions chol, pcg;
+  pcg.solver = SpdSolverKind::pcg;
+  pcg.solver_options.cg_tolerance = 1e-12;
+  BeamMechanics a(l, BeamParameters{}, bc, chol), b(l, BeamParameters{}, bc, pcg);
+  REQUIRE(a.solve().is_converged());
+  REQUIRE(b.solve().is_converged());
+  int broken = 0;
+  for (int e = 0; e < l.n_beams() && broken < 50; e += 53, ++broken) {
+    a.break_beam(e);
+    b.break_beam(e);
+    REQUIRE(a.solve().is_converged());
+  }
+  const MechanicsSummary sb = b.solve();
+  REQUIRE(sb.is_converged());
+  CHECK(a.states() == b.states());
+  const double diff = (a.displacement() - b.displacement()).norm() / a.displacement().norm();
+  std::cout << "[mechanics] 50 breaks: |u_cholmod - u_pcg|/|u| = " << diff << ", detached "
+            << a.n_detached_particles() << ", factorisations " << a.solver().report().n_factorizations << "\n";
+  // Error bound cond * PCG residual: cond ~ 2e4 at N = 2000 (measured in test_spd_solver), tolerance 1e-12.
+  CHECK(diff < 1e-7);
+}
+
+TEST_CASE("A particle or cluster that loses its anchoring is frozen rigidly, not left singular", "[lattice2d]") {
+  const Lattice l = annulus(2000);
+  BoundaryConditions bc;
+  bc.outer = BoundarySupport::fixed;
+  bc.inner_pressure = 1e-3;
+  BeamMechanics m(l, BeamParameters{}, bc);
+  REQUIRE(m.solve().is_converged());
+  // An interior particle near r = 0.5: break all its beams.
+  int p = 0;
+  double best = 1e9;
+  for (int q = 0; q < l.n_particles(); ++q)
+    if (std::abs(l.points.col(q).norm() - 0.5) < best) {
+      best = std::abs(l.points.col(q).norm() - 0.5);
+      p = q;
+    }
+  std::vector<int> ring;  // its beams
+  for (int e = 0; e < l.n_beams(); ++e)
+    if (l.beams[static_cast<std::size_t>(e)][0] == p || l.beams[static_cast<std::size_t>(e)][1] == p) ring.push_back(e);
+  for (int e : ring) m.break_beam(e);
+  CHECK(m.detached_particles()[static_cast<std::size_t>(p)]);
+  CHECK(m.n_detached_particles() == 1);
+  MechanicsSummary s = m.solve();
+  REQUIRE(s.is_converged());
+  CHECK(s.equilibrium_residual < 1e-10);  // round-off, as above
+  CHECK(m.displacement().allFinite());
+  for (int e : ring) CHECK(m.beam_forces()[static_cast<std::size_t>(e)].force_on_i.norm() == 0.0);
+
+  SECTION("a cluster: the particle's neighbours with it, cut off by breaking the beams around them") {
+    std::vector<char> in(static_cast<std::size_t>(l.n_particles()), 0);
+    int q = -1;  // a neighbour of p
+    for (int e : ring) q = l.beams[static_cast<std::size_t>(e)][0] == p ? l.beams[static_cast<std::size_t>(e)][1] : l.beams[static_cast<std::size_t>(e)][0];
+    // Cluster {q and its neighbours except p}: break every beam leaving it.
+    in[static_cast<std::size_t>(q)] = 1;
+    for (int e = 0; e < l.n_beams(); ++e) {
+      const auto [i, j] = l.beams[static_cast<std::size_t>(e)];
+      if (i == q && j != p) in[static_cast<std::size_t>(j)] = 1;
+      if (j == q && i != p) in[static_cast<std::size_t>(i)] = 1;
+    }
+    int n_cluster = 0;
+    for (char c : in) n_cluster += c;
+    for (int e = 0; e < l.n_beams(); ++e) {
+      const auto [i, j] = l.beams[static_cast<std::size_t>(e)];
+      if (in[static_cast<std::size_t>(i)] != in[static_cast<std::size_t>(j)]) m.break_beam(e);
+    }
+    CHECK(m.n_detached_particles() == 1 + n_cluster);
+    s = m.solve();
+    REQUIRE(s.is_converged());
+    CHECK(s.equilibrium_residual < 1e-10);  // round-off, as above
+    // The frozen cluster moves rigidly: its intact beams carry no force.
+    const auto forces = m.beam_forces();
+    double f_cluster = 0.0;
+    for (int e = 0; e < l.n_beams(); ++e) {
+      const auto [i, j] = l.beams[static_cast<std::size_t>(e)];
+      if (in[static_cast<std::size_t>(i)] && in[static_cast<std::size_t>(j)]) f_cluster = std::max(f_cluster, forces[static_cast<std::size_t>(e)].force_on_i.norm());
+    }
+    CHECK(f_cluster < 1e-15);  // round-off of 1e-3-scale displacements
+  }
+}

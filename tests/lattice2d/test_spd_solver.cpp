@@ -1,0 +1,266 @@
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <iostream>
+#include <vector>
+
+#include <Eigen/SparseCholesky>
+
+#include "hm/analytic/input_error.hpp"
+#include "hm/lattice2d/beam_stiffness.hpp"
+#include "hm/lattice2d/lattice.hpp"
+#include "hm/lattice2d/spd_solver.hpp"
+
+using namespace hm::lattice2d;
+using Matrix = SpdSolver::Matrix;
+
+namespace {
+
+// The beam-stiffness system of an annulus (N ~ 2000) with x, y of the outer boundary held
+// (eliminated): SPD, the matrix the mechanics factorises.
+struct TestSystem {
+  Lattice lattice;
+  BeamParameters parameters;
+  std::vector<int> free_index;  // per dof, -1 if held
+  Matrix A;
+  Eigen::VectorXd b;
+};
+
+TestSystem make_system(long long n_particles = 2000) {
+  TestSystem s;
+  LatticeSpec spec;
+  spec.domain = DomainShape::annulus;
+  spec.n_particles = n_particles;
+  spec.seed = 7;
+  s.lattice = generate_lattice(spec);
+  const Matrix K = assemble_stiffness(s.lattice, s.parameters);
+  const int n_dof = 3 * s.lattice.n_particles();
+  s.free_index.assign(static_cast<std::size_t>(n_dof), -1);
+  int n_free = 0;
+  for (int dof = 0; dof < n_dof; ++dof)
+    if (!(s.lattice.boundary[static_cast<std::size_t>(dof / 3)] == BoundaryTag::outer && dof % 3 < 2))
+      s.free_index[static_cast<std::size_t>(dof)] = n_free++;
+  std::vector<Eigen::Triplet<double>> t;
+  for (int c = 0; c < K.outerSize(); ++c)
+    for (Matrix::InnerIterator it(K, c); it; ++it) {
+      const int r = s.free_index[static_cast<std::size_t>(it.row())], q = s.free_index[static_cast<std::size_t>(c)];
+      if (r >= 0 && q >= 0) t.emplace_back(r, q, it.value());
+    }
+  s.A.resize(n_free, n_free);
+  s.A.setFromTriplets(t.begin(), t.end());
+  s.b = Eigen::VectorXd::LinSpaced(n_free, -1.0, 1.0).array().sin();
+  return s;
+}
+
+// W (n_free x 3) with K_e = W W^T restricted to the free rows, for beam e intact.
+Matrix beam_columns(const TestSystem& s, int e) {
+  const Matrix63d V = beam_element_factor(s.lattice.length[e], s.lattice.angle[e], s.parameters);
+  const auto [i, j] = s.lattice.beams[static_cast<std::size_t>(e)];
+  const int dofs[6] = {3 * i, 3 * i + 1, 3 * i + 2, 3 * j, 3 * j + 1, 3 * j + 2};
+  std::vector<Eigen::Triplet<double>> t;
+  for (int c = 0; c < 3; ++c)
+    for (int a = 0; a < 6; ++a) {
+      const int r = s.free_index[static_cast<std::size_t>(dofs[a])];
+      if (r >= 0) t.emplace_back(r, c, V(a, c));
+    }
+  Matrix W(s.A.rows(), 3);
+  W.setFromTriplets(t.begin(), t.end());
+  return W;
+}
+
+// Interior beams with pairwise distinct particles (breaking them never isolates a particle).
+std::vector<int> spread_beams(const TestSystem& s, int count) {
+  std::vector<int> beams;
+  std::vector<char> used(static_cast<std::size_t>(s.lattice.n_particles()), 0);
+  for (int e = 0; e < s.lattice.n_beams() && static_cast<int>(beams.size()) < count; e += 37) {
+    const auto [i, j] = s.lattice.beams[static_cast<std::size_t>(e)];
+    if (used[i] || used[j] || s.lattice.boundary[i] != BoundaryTag::interior || s.lattice.boundary[j] != BoundaryTag::interior) continue;
+    used[i] = used[j] = 1;
+    beams.push_back(e);
+  }
+  return beams;
+}
+
+double rel_diff(const Eigen::VectorXd& x, const Eigen::VectorXd& y) { return (x - y).norm() / y.norm(); }
+
+// 2-norm condition number estimate: power iteration on A and on A^-1 (with the given solver).
+double condition_estimate(const Matrix& A, SpdSolver& solver) {
+  Eigen::VectorXd v = Eigen::VectorXd::Ones(A.rows()).normalized(), w = v;
+  double lmax = 0.0, inv_lmin = 0.0;
+  for (int k = 0; k < 200; ++k) {
+    Eigen::VectorXd Av = A * v;
+    lmax = Av.norm();
+    v = Av / lmax;
+    Eigen::VectorXd Aw = solver.solve(w);
+    inv_lmin = Aw.norm();
+    w = Aw / inv_lmin;
+  }
+  return lmax * inv_lmin;
+}
+
+}  // namespace
+
+TEST_CASE("Solver options: defaults valid, bad values rejected naming the field", "[lattice2d]") {
+  REQUIRE_NOTHROW(SpdSolverOptions{}.validate());
+  SpdSolverOptions o;
+  o.max_modifications = 0;
+  CHECK_THROWS_WITH(o.validate(), Catch::Contains("solver_options.max_modifications = 0"));
+  o = SpdSolverOptions{};
+  o.residual_tolerance = 0.0;
+  CHECK_THROWS_AS(o.validate(), hm::InputError);
+  o = SpdSolverOptions{};
+  o.cg_tolerance = 2.0;
+  CHECK_THROWS_WITH(o.validate(), Catch::Contains("solver_options.cg_tolerance = 2"));
+  CHECK(spd_solver_kind_from_string("pcg") == SpdSolverKind::pcg);
+  CHECK(spd_solver_kind_from_string(to_string(SpdSolverKind::cholmod)) == SpdSolverKind::cholmod);
+  CHECK_THROWS_WITH(spd_solver_kind_from_string("lu"), Catch::Contains("solver = 'lu', allowed: cholmod, pcg"));
+}
+
+TEST_CASE("The beam factor reproduces the element stiffness, K_e = V V^T, in every state", "[lattice2d]") {
+  BeamParameters p;
+  p.aspect = 0.6;
+  p.beam_poisson = 0.1;
+  for (BeamState state : {BeamState::intact, BeamState::contact, BeamState::open}) {
+    const Matrix6d K = beam_element_stiffness(0.02, 2.1, p, state);
+    const Matrix63d V = beam_element_factor(0.02, 2.1, p, state);
+    // round-off: products of O(1) entries (k_n = 1)
+    CHECK((V * V.transpose() - K).cwiseAbs().maxCoeff() < 1e-14);
+  }
+}
+
+TEST_CASE("CHOLMOD solves the lattice system as Eigen's SimplicialLDLT does", "[lattice2d]") {
+  const TestSystem s = make_system();
+  CholmodSolver cholmod;
+  cholmod.compute(s.A);
+  REQUIRE(cholmod.info() == Eigen::Success);
+  CHECK(cholmod.ordering_used() == "nesdis");
+  const Eigen::VectorXd x = cholmod.solve(s.b);
+  REQUIRE(cholmod.info() == Eigen::Success);
+  Eigen::SimplicialLDLT<Matrix> ldlt(s.A);
+  const Eigen::VectorXd y = ldlt.solve(s.b);
+  const double kappa = condition_estimate(s.A, cholmod);
+  const double diff = rel_diff(x, y);
+  std::cout << "[spd_solver] N = 2000 annulus: cond ~ " << kappa << ", |x_cholmod - x_ldlt|/|x| = " << diff
+            << ", residual " << cholmod.report().relative_residual << "\n";
+  // Backward-stable solvers: each solution's error is ~ cond * eps; two of them differ by that much.
+  CHECK(diff < 10.0 * kappa * 2.2e-16);
+  CHECK(cholmod.report().relative_residual < 1e-13);  // round-off: ~ n_nonzeros_per_row * eps
+}
+
+TEST_CASE("A rank-3 downdate then solve equals a fresh factorisation of the modified matrix", "[lattice2d]") {
+  const TestSystem s = make_system();
+  const std::vector<int> beams = spread_beams(s, 50);
+  REQUIRE(beams.size() == 50);
+
+  SECTION("one break, fifty breaks, and across periodic refactorisations") {
+    SpdSolverOptions options;
+    options.max_modifications = GENERATE(2000, 20);  // 20: refactorised after breaks 20 and 40
+    CholmodSolver solver(options);
+    solver.compute(s.A);
+    Matrix A = s.A;
+    double worst = 0.0, kappa = 0.0;
+    for (std::size_t k = 0; k < beams.size(); ++k) {
+      const Matrix W = beam_columns(s, beams[k]);
+      solver.modify(W, -1);
+      REQUIRE(solver.info() == Eigen::Success);
+      A = A - Matrix(W * W.transpose());
+      if (k == 0 || k + 1 == beams.size()) {
+        const Eigen::VectorXd x = solver.solve(s.b);
+        REQUIRE(solver.info() == Eigen::Success);
+        CholmodSolver fresh;
+        fresh.compute(A);
+        const Eigen::VectorXd y = fresh.solve(s.b);
+        kappa = condition_estimate(A, fresh);
+        worst = std::max(worst, rel_diff(x, y));
+        // The modified factor solves the modified matrix: residual checked against the stored A.
+        CHECK((A * x - s.b).norm() / s.b.norm() < 1e-12);  // round-off growth over 50 modifications
+        CHECK((solver.matrix() - A).norm() < 1e-12 * A.norm());  // stored copy follows the modifications
+      }
+    }
+    std::cout << "[spd_solver] 50 downdates (max_modifications " << options.max_modifications
+              << "): |x - x_fresh|/|x| = " << worst << ", cond ~ " << kappa << ", factorisations "
+              << solver.report().n_factorizations << "\n";
+    CHECK(worst < 10.0 * kappa * 2.2e-16);  // round-off: both are backward stable, error ~ cond * eps
+    CHECK(solver.report().n_factorizations == (options.max_modifications == 20 ? 3 : 1));
+  }
+}
+
+TEST_CASE("An update followed by the same downdate returns the original solution", "[lattice2d]") {
+  const TestSystem s = make_system();
+  CholmodSolver solver;
+  solver.compute(s.A);
+  const Eigen::VectorXd x0 = solver.solve(s.b);
+  const double kappa = condition_estimate(s.A, solver);
+  for (int e : spread_beams(s, 10)) {
+    const Matrix W = beam_columns(s, e);
+    solver.modify(W, +1);
+    solver.modify(W, -1);
+  }
+  const Eigen::VectorXd x1 = solver.solve(s.b);
+  REQUIRE(solver.info() == Eigen::Success);
+  CHECK(rel_diff(x1, x0) < 10.0 * kappa * 2.2e-16);  // round-off, as above
+  CHECK((solver.matrix() - s.A).norm() < 1e-13 * s.A.norm());
+}
+
+TEST_CASE("PCG agrees with CHOLMOD to its tolerance, and a warm start saves iterations", "[lattice2d]") {
+  const TestSystem s = make_system();
+  CholmodSolver cholmod;
+  cholmod.compute(s.A);
+  const Eigen::VectorXd x = cholmod.solve(s.b);
+  const double kappa = condition_estimate(s.A, cholmod);
+  for (PcgPreconditioner pre : {PcgPreconditioner::incomplete_cholesky, PcgPreconditioner::jacobi}) {
+    SpdSolverOptions options;
+    options.preconditioner = pre;
+    options.cg_tolerance = 1e-10;
+    PcgSolver pcg(options);
+    pcg.compute(s.A);
+    const Eigen::VectorXd y = pcg.solve(s.b);
+    REQUIRE(pcg.info() == Eigen::Success);
+    const int cold = pcg.report().iterations;
+    CHECK(pcg.report().relative_residual < 1e-10 * 1.01);  // CG's own stopping rule (1% for the true vs recursive residual)
+    // Error bound of a residual r: |dx|/|x| <= cond * |r|/|b|.
+    CHECK(rel_diff(y, x) < kappa * 1e-10);
+    // Warm start after one break: starts from the previous solution.
+    const Matrix W = beam_columns(s, spread_beams(s, 1)[0]);
+    pcg.modify(W, -1);
+    cholmod.modify(W, -1);
+    const Eigen::VectorXd y2 = pcg.solve(s.b);
+    const int warm = pcg.report().iterations;
+    CHECK(rel_diff(y2, cholmod.solve(s.b)) < kappa * 1e-10);
+    pcg.clear_warm_start();
+    pcg.solve(s.b);
+    std::cout << "[spd_solver] PCG (" << (pre == PcgPreconditioner::jacobi ? "jacobi" : "ichol") << "): cold "
+              << cold << " iterations, warm after a break " << warm << ", cold after a break "
+              << pcg.report().iterations << "; |x_pcg - x_cholmod|/|x| = " << rel_diff(y, x) << "\n";
+    CHECK(warm < pcg.report().iterations);
+    cholmod.modify(W, +1);
+  }
+}
+
+TEST_CASE("A singular or indefinite matrix is reported by info(), not thrown", "[lattice2d]") {
+  const TestSystem s = make_system();
+  SECTION("downdating every beam of an interior particle") {
+    CholmodSolver solver;
+    solver.compute(s.A);
+    int p = 0;
+    while (s.lattice.boundary[static_cast<std::size_t>(p)] != BoundaryTag::interior) ++p;
+    for (int e = 0; e < s.lattice.n_beams(); ++e) {
+      const auto [i, j] = s.lattice.beams[static_cast<std::size_t>(e)];
+      if (i == p || j == p) solver.modify(beam_columns(s, e), -1);
+    }
+    CHECK(solver.info() == Eigen::NumericalIssue);
+    CHECK_THAT(solver.report().message, Catch::Contains("singular"));
+    solver.solve(s.b);
+    CHECK(solver.info() != Eigen::Success);
+  }
+  SECTION("factorising an indefinite matrix") {
+    Matrix B = s.A;
+    B.coeffRef(5, 5) = -1.0;
+    CholmodSolver solver;
+    solver.compute(B);
+    CHECK(solver.info() == Eigen::NumericalIssue);
+    const Eigen::VectorXd x = solver.solve(s.b);
+    CHECK(solver.info() != Eigen::Success);
+    CHECK_FALSE(x.allFinite());
+  }
+}
