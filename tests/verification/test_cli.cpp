@@ -1,6 +1,10 @@
 // The command line as a user meets it: bad input gives one line naming the parameter, the value
 // and what is allowed, exit code 2, and writes nothing.
 #include <catch2/catch.hpp>
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <vector>
 
 #include "verification/run_command.hpp"
 
@@ -111,4 +115,49 @@ TEST_CASE("hmlattice fdm1d writes its CSV files and a resolved config that rerun
   REQUIRE(second.exit_code == 0);
   CHECK(hm::test::slurp(dir.path / "run1" / "profiles.csv") == hm::test::slurp(dir.path / "run2" / "profiles.csv"));
   CHECK_THAT(hm::test::slurp(dir.path / "run1" / "config.toml"), Catch::Contains("E_over_M = 0.75229695454"));
+}
+
+TEST_CASE("A case given in SI units gives the same dimensionless results as its dimensionless twin",
+          "[verification][cli]") {
+  // PorePy's scaled-vs-unscaled check, end to end through the command a user runs.
+  TempDir dir("cli-si");
+  const std::string cases = std::string(HM_SOURCE_DIR) + "/cases/";
+  REQUIRE(run_hmlattice("fdm1d '" + cases + "fdm1d_sandstone_si.toml' --out si", dir.path).exit_code == 0);
+  REQUIRE(run_hmlattice("fdm1d '" + cases + "fig10_fdm1d_b0.5.toml' --out dimensionless", dir.path).exit_code == 0);
+  // Compare numerically, not as text: mu q/(k E) need not round to exactly the double 0.01.
+  const auto si = hm::test::slurp(dir.path / "si" / "profiles.csv");
+  const auto dl = hm::test::slurp(dir.path / "dimensionless" / "profiles.csv");
+  REQUIRE(si.size() > 1000);
+  // Per column: the largest difference relative to the column's largest magnitude (values near
+  // zero, e.g. p ahead of the plume, differ by round-off that a pointwise ratio would blow up).
+  auto columns = [](const std::string& csv) {
+    std::istringstream in(csv);
+    std::string line, x;
+    std::getline(in, line);
+    std::vector<std::vector<double>> cols;
+    while (std::getline(in, line)) {
+      std::istringstream cells(line);
+      for (std::size_t k = 0; std::getline(cells, x, ','); ++k) {
+        if (cols.size() <= k) cols.emplace_back();
+        cols[k].push_back(std::stod(x));
+      }
+    }
+    return cols;
+  };
+  const auto ca = columns(si), cb = columns(dl);
+  REQUIRE(si.substr(0, si.find('\n')) == dl.substr(0, dl.find('\n')));  // same header
+  REQUIRE(ca.size() == cb.size());
+  double worst = 0.0;
+  for (std::size_t k = 0; k < ca.size(); ++k) {
+    REQUIRE(ca[k].size() == cb[k].size());
+    double scale = 1e-300, diff = 0.0;
+    for (std::size_t i = 0; i < ca[k].size(); ++i) {
+      scale = std::max(scale, std::abs(cb[k][i]));
+      diff = std::max(diff, std::abs(ca[k][i] - cb[k][i]));
+    }
+    worst = std::max(worst, diff / scale);
+  }
+  // Measured 1.7e-10 (u_r): the CSV holds 10 digits, and Q = mu q/(k E) is 0.01 minus one ulp.
+  CHECK(worst < 1e-9);
+  CHECK_THAT(hm::test::slurp(dir.path / "si" / "config.toml"), Catch::Contains("time x 10 s"));
 }
