@@ -1,0 +1,88 @@
+#pragma once
+/// \file
+/// VTK XML output for ParaView (issue 4, item 6): one UnstructuredGrid file (.vtu, ASCII) per snapshot
+/// and a .pvd collection listing the snapshots with their times. Layout (docs/lattice.md, "VTK output"):
+///
+///  - points: the particles at their *reference* positions, z = 0; apply ParaView's "Warp By Vector"
+///    with the "displacement" array to see the deformed lattice;
+///  - point data: displacement (3 components, z = 0), rotation, stress (9-component tensor, in-plane
+///    entries; the zz, xz, yz entries are written 0: sigma_zz is not formed), particle_area (V_i),
+///    boundary (0 interior, 1 outer, 2 inner);
+///  - cells: all triangles (VTK_TRIANGLE = 5) first, then all beams (VTK_LINE = 3), in lattice order:
+///    cell t < n_triangles is triangle t, cell n_triangles + e is beam e;
+///  - cell data, over both kinds: cell_kind (0 triangle, 1 beam), pressure (triangles; 0 on beams),
+///    state (beams: 0 intact, 1 contact, 2 open; -1 on triangles), broken (beams: 0 or 1; -1 on
+///    triangles), plus any extra per-beam or per-triangle scalars (0 on the other kind).
+///    Threshold on cell_kind to show only beams or only triangles.
+///
+/// Every file is written to a temporary name and renamed into place, so an interrupted run leaves
+/// complete files only; the .pvd is rewritten after each snapshot and always lists complete snapshots.
+#include <filesystem>
+#include <functional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "hm/lattice2d/beam_stiffness.hpp"
+#include "hm/lattice2d/dual_graph.hpp"
+#include "hm/lattice2d/lattice.hpp"
+
+namespace hm::lattice2d {
+
+/// A named scalar per beam or per triangle (extra cell data) or per particle (extra point data).
+struct NamedField {
+  std::string name;
+  Eigen::VectorXd values;
+};
+
+/// The fields of one snapshot. Empty members are written as zeros (states: all intact).
+struct LatticeSnapshot {
+  double time = 0.0;                    ///< load factor or t/t_s; goes to the .pvd and the TimeValue field
+  Eigen::VectorXd displacement;         ///< size 3 n (dof = 3 i + component) or empty
+  Eigen::Matrix3Xd particle_stress;     ///< 3 x n, columns (sigma_xx, sigma_yy, sigma_xy), or empty
+  std::vector<BeamState> beam_states;   ///< one per beam, or empty
+  Eigen::VectorXd pressure;             ///< one per triangle (p/E), or empty
+  std::vector<NamedField> particle_fields;  ///< extra point data, n values each
+  std::vector<NamedField> beam_fields;      ///< extra cell data on the beams, n_beams values each
+  std::vector<NamedField> triangle_fields;  ///< extra cell data on the triangles, n_triangles values each
+};
+
+/// Writes one .vtu. `dual` supplies V_i. Throws std::invalid_argument (a programming error) if a
+/// non-empty field has the wrong size or a name is empty or reserved, before writing anything;
+/// std::runtime_error naming the path if the file cannot be written.
+void write_vtu(const std::filesystem::path& path, const Lattice& lattice, const DualGraph& dual,
+               const LatticeSnapshot& snapshot);
+
+/// One entry of a .pvd collection: a file name relative to the .pvd's folder, and its time.
+struct PvdEntry {
+  double time;
+  std::string file;
+};
+
+/// Writes a .pvd collection (atomically). Throws std::runtime_error naming the path on failure.
+void write_pvd(const std::filesystem::path& path, const std::vector<PvdEntry>& entries);
+
+/// A time series of snapshots in one folder: <folder>/<name>_0000.vtu, _0001.vtu, ... and <name>.pvd.
+/// Creates the folder. Not thread-safe.
+class VtkSeries {
+ public:
+  VtkSeries(std::filesystem::path folder, std::string name);
+  /// Writes the next snapshot, then rewrites the .pvd; returns the .vtu's path.
+  std::filesystem::path write(const Lattice& lattice, const DualGraph& dual, const LatticeSnapshot& snapshot);
+  std::filesystem::path pvd_path() const { return folder_ / (name_ + ".pvd"); }
+  const std::vector<PvdEntry>& entries() const { return entries_; }
+
+ private:
+  std::filesystem::path folder_;
+  std::string name_;
+  std::vector<PvdEntry> entries_;
+};
+
+/// Runs `write` on a stream to `<path>.partial` and renames it to `path` only if the stream is still
+/// good after closing; otherwise removes the partial file and throws std::runtime_error naming the
+/// path. Shared by the VTK and break-log writers.
+void write_file_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write);
+
+}  // namespace hm::lattice2d
