@@ -1,0 +1,91 @@
+#pragma once
+/// \file
+/// Brittle failure of beams (Section 2.1, Eq. 11, Fig. 3): the per-beam failure check against the
+/// beam's own strengths, the choice of the one beam to break next, and the break log.
+/// Dimensionless (stresses over E). Tension positive.
+///
+/// The loop "break the selected beam, re-solve, select again until none fails" belongs to the caller
+/// (it needs the mechanical solver); a step of it reads:
+///   forces = compute_beam_forces(...); stress = compute_beam_stress(lattice,
+///       compute_particle_stress(lattice, dual, forces), states, tip);
+///   candidate = select_beam_to_break(stress, strengths, states);
+///   if (!candidate.found()) break;
+///   log.push_back(make_break_event(lattice, stress, candidate, load, log.size()));
+///   states[candidate.beam] = BeamState::open;  // or contact, per the active-set rule; then re-solve
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "hm/analytic/failure_criteria.hpp"
+#include "hm/lattice2d/beam_stiffness.hpp"
+#include "hm/lattice2d/lattice.hpp"
+#include "hm/lattice2d/particle_stress.hpp"
+#include "hm/lattice2d/strength.hpp"
+
+namespace hm::lattice2d {
+
+using hm::analytic::FailureMode;
+
+/// "none", "tensile" or "shear".
+std::string to_string(FailureMode mode);
+
+/// Failure check of every beam: ratio = max(sigma_1 / T_u, sigma_CC / C_u) with sigma_CC of Eq. 11
+/// (hm::analytic::check_failure), mode tensile or shear where ratio >= 1 (the larger of the two
+/// wins; tensile on an exact tie), none elsewhere. Broken beams get mode none and ratio 0.
+struct FailureField {
+  Eigen::VectorXd ratio;
+  std::vector<FailureMode> mode;
+};
+FailureField evaluate_failure(const BeamStress& stress, const BeamStrengths& strengths,
+                              const std::vector<BeamState>& states = {});
+
+/// The beam to break next.
+struct BreakCandidate {
+  int beam = -1;                        ///< -1 if no intact beam has ratio >= 1
+  FailureMode mode = FailureMode::none;
+  double ratio = 0.0;                   ///< its failure ratio (>= 1 when found)
+  double max_ratio = 0.0;               ///< largest ratio over the intact beams (< 1 when none found)
+
+  bool found() const { return beam >= 0; }
+};
+
+/// Among the intact beams, the one most over its threshold: largest ratio >= 1, ties broken by the
+/// lowest beam index (deterministic). `states` empty = all intact.
+BreakCandidate select_beam_to_break(const BeamStress& stress, const BeamStrengths& strengths,
+                                    const std::vector<BeamState>& states = {});
+
+/// One line of the break log.
+struct BreakEvent {
+  int sequence = 0;                    ///< 0, 1, ... in the order of breaking
+  int beam = -1;                       ///< beam index
+  int particle_i = -1;                 ///< its particles (i < j)
+  int particle_j = -1;
+  Eigen::Vector2d position = Eigen::Vector2d::Zero();  ///< beam midpoint, undeformed, over R
+  double load = 0.0;                   ///< load factor or time (t/t_s) at the break; the caller's choice
+  double sigma_1 = 0.0;                ///< beam stress at breaking (crack-tip factor included)
+  double sigma_3 = 0.0;
+  double ratio = 0.0;                  ///< failure ratio, >= 1
+  double crack_tip_factor = 1.0;       ///< 1 unless the beam was at a crack tip
+  FailureMode mode = FailureMode::none;
+};
+
+/// The log record for a found candidate (precondition: candidate.found()).
+BreakEvent make_break_event(const Lattice& lattice, const BeamStress& stress, const BreakCandidate& candidate,
+                            double load, int sequence);
+
+/// Writes the break log as CSV, one header row and one row per event, via a temporary file renamed
+/// into place (a crash leaves the previous file or none, never half of one). Columns:
+///   sequence, beam, particle_i, particle_j  integers;
+///   x, y                                    beam midpoint (over R);
+///   <load_column>                           load or time, named by the caller ("load", "time");
+///   sigma_1, sigma_3                        in-plane principal beam stresses (over E, tension positive);
+///   ratio                                   max(sigma_1/T_u, sigma_CC/C_u) >= 1;
+///   crack_tip_factor                        (L/2L_m)^(1/2) or 1;
+///   mode                                    "tensile" or "shear".
+/// Numbers with 10 significant digits. Throws std::runtime_error naming the path if it cannot write.
+void write_break_log(const std::filesystem::path& path, const std::vector<BreakEvent>& events,
+                     const std::string& load_column = "load");
+
+}  // namespace hm::lattice2d

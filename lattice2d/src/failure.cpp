@@ -1,0 +1,103 @@
+#include "hm/lattice2d/failure.hpp"
+
+#include <cassert>
+#include <cmath>
+#include <cstdio>
+
+#include "hm/lattice2d/vtk_writer.hpp"
+
+namespace hm::lattice2d {
+
+std::string to_string(FailureMode mode) {
+  switch (mode) {
+    case FailureMode::none: return "none";
+    case FailureMode::tensile: return "tensile";
+    case FailureMode::shear: return "shear";
+  }
+  return "?";
+}
+
+namespace {
+
+bool is_intact(const std::vector<BeamState>& states, int beam) {
+  return states.empty() || states[static_cast<std::size_t>(beam)] == BeamState::intact;
+}
+
+}  // namespace
+
+FailureField evaluate_failure(const BeamStress& stress, const BeamStrengths& strengths,
+                              const std::vector<BeamState>& states) {
+  const int n_beams = static_cast<int>(stress.sigma_1.size());
+  assert(strengths.n_beams() == n_beams && "one strength per beam");
+  assert((states.empty() || static_cast<int>(states.size()) == n_beams) && "one state per beam");
+  FailureField out{Eigen::VectorXd::Zero(n_beams), std::vector<FailureMode>(static_cast<std::size_t>(n_beams))};
+  for (int e = 0; e < n_beams; ++e) {
+    if (!is_intact(states, e)) continue;
+    const auto check = hm::analytic::check_failure(stress.sigma_1[e], stress.sigma_3[e], strengths.tensile[e],
+                                                   strengths.compressive[e], strengths.friction);
+    assert(!std::isnan(check.ratio) && "failure ratio is NaN: non-finite stress");
+    out.ratio[e] = check.ratio;
+    out.mode[static_cast<std::size_t>(e)] = check.mode;
+  }
+  return out;
+}
+
+BreakCandidate select_beam_to_break(const BeamStress& stress, const BeamStrengths& strengths,
+                                    const std::vector<BeamState>& states) {
+  const FailureField field = evaluate_failure(stress, strengths, states);
+  BreakCandidate best;
+  bool any_intact = false;
+  for (int e = 0; e < static_cast<int>(field.ratio.size()); ++e) {
+    if (!is_intact(states, e)) continue;
+    const double r = field.ratio[e];
+    if (!any_intact || r > best.max_ratio) best.max_ratio = r;
+    any_intact = true;
+    // Strictly greater: on equal ratios the lowest index, visited first, stays.
+    if (r >= 1.0 && (!best.found() || r > best.ratio)) {
+      best.beam = e;
+      best.ratio = r;
+      best.mode = field.mode[static_cast<std::size_t>(e)];
+    }
+  }
+  return best;
+}
+
+BreakEvent make_break_event(const Lattice& lattice, const BeamStress& stress, const BreakCandidate& candidate,
+                            double load, int sequence) {
+  assert(candidate.found() && "make_break_event: no beam selected");
+  const int e = candidate.beam;
+  const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
+  BreakEvent event;
+  event.sequence = sequence;
+  event.beam = e;
+  event.particle_i = i;
+  event.particle_j = j;
+  event.position = 0.5 * (lattice.points.col(i) + lattice.points.col(j));
+  event.load = load;
+  event.sigma_1 = stress.sigma_1[e];
+  event.sigma_3 = stress.sigma_3[e];
+  event.ratio = candidate.ratio;
+  event.crack_tip_factor = stress.crack_tip_factor[e];
+  event.mode = candidate.mode;
+  return event;
+}
+
+void write_break_log(const std::filesystem::path& path, const std::vector<BreakEvent>& events,
+                     const std::string& load_column) {
+  write_file_atomically(path, [&](std::ostream& out) {
+    out << "sequence,beam,particle_i,particle_j,x,y," << load_column
+        << ",sigma_1,sigma_3,ratio,crack_tip_factor,mode\n";
+    char buf[32];
+    const auto number = [&](double v) {
+      std::snprintf(buf, sizeof buf, "%.10g", v);
+      return std::string(buf);
+    };
+    for (const BreakEvent& ev : events)
+      out << ev.sequence << ',' << ev.beam << ',' << ev.particle_i << ',' << ev.particle_j << ','
+          << number(ev.position.x()) << ',' << number(ev.position.y()) << ',' << number(ev.load) << ','
+          << number(ev.sigma_1) << ',' << number(ev.sigma_3) << ',' << number(ev.ratio) << ','
+          << number(ev.crack_tip_factor) << ',' << to_string(ev.mode) << '\n';
+  });
+}
+
+}  // namespace hm::lattice2d
