@@ -123,8 +123,10 @@ TEST_CASE("A snapshot written as .vtu reads back with meshio; the .pvd lists the
   snap.pressure = Eigen::VectorXd::LinSpaced(lattice.n_triangles(), 0.0, 1e-3);
   snap.beam_fields.push_back({"failure_ratio", Eigen::VectorXd::LinSpaced(lattice.n_beams(), 0.0, 2.0)});
 
+  const VtkFormat format = GENERATE(VtkFormat::binary, VtkFormat::ascii);
+  INFO("format " << (format == VtkFormat::binary ? "binary" : "ascii"));
   const TempFolder folder("vtk");
-  VtkSeries series(folder.path / "out", "run");
+  VtkSeries series(folder.path / "out", "run", format);
   const fs::path first = series.write(lattice, dual, snap);
   snap.time = 0.25;
   const fs::path second = series.write(lattice, dual, snap);
@@ -153,7 +155,7 @@ TEST_CASE("A snapshot written as .vtu reads back with meshio; the .pvd lists the
   for (int k = 0; k < 3; ++k) CHECK(tv[static_cast<std::size_t>(k)] == lattice.triangles[t][static_cast<std::size_t>(k)]);
   CHECK(bv[0] == lattice.beams[b][0]);
   CHECK(bv[1] == lattice.beams[b][1]);
-  // Values: shortest round-trip text, so doubles come back bitwise.
+  // Values: raw bytes (binary) or shortest round-trip text (ascii), so doubles come back bitwise.
   const auto x = numbers(vtu.at("point")), u = numbers(vtu.at("displacement")), s = numbers(vtu.at("stress"));
   CHECK(x[0] == lattice.points(0, p));
   CHECK(x[1] == lattice.points(1, p));

@@ -1,7 +1,9 @@
 #pragma once
 /// \file
-/// VTK XML output for ParaView (issue 4, item 6): one UnstructuredGrid file (.vtu, ASCII) per snapshot
-/// and a .pvd collection listing the snapshots with their times. Layout (docs/lattice.md, "VTK output"):
+/// VTK XML output for ParaView (issue 4, item 6): one UnstructuredGrid file (.vtu) per snapshot and a
+/// .pvd collection listing the snapshots with their times. Data arrays inline, base64 binary (default;
+/// measured at N = 1e5 with every field set: 51 MB in 0.4 s against ASCII's 87 MB in 0.5 s) or ASCII
+/// (readable, for debugging); both keep Float64 values exact. Layout (docs/lattice.md, "VTK output"):
 ///
 ///  - points: the particles at their *reference* positions, z = 0; apply ParaView's "Warp By Vector"
 ///    with the "displacement" array to see the deformed lattice;
@@ -49,11 +51,17 @@ struct LatticeSnapshot {
   std::vector<NamedField> triangle_fields;  ///< extra cell data on the triangles, n_triangles values each
 };
 
+/// Encoding of the data arrays. Both are exact (ASCII uses the shortest round-trip decimal form).
+enum class VtkFormat {
+  binary,  ///< inline base64 of [UInt64 byte count][values], uncompressed, native byte order
+  ascii,   ///< decimal text
+};
+
 /// Writes one .vtu. `dual` supplies V_i. Throws std::invalid_argument (a programming error) if a
 /// non-empty field has the wrong size or a name is empty or reserved, before writing anything;
 /// std::runtime_error naming the path if the file cannot be written.
 void write_vtu(const std::filesystem::path& path, const Lattice& lattice, const DualGraph& dual,
-               const LatticeSnapshot& snapshot);
+               const LatticeSnapshot& snapshot, VtkFormat format = VtkFormat::binary);
 
 /// One entry of a .pvd collection: a file name relative to the .pvd's folder, and its time.
 struct PvdEntry {
@@ -68,7 +76,7 @@ void write_pvd(const std::filesystem::path& path, const std::vector<PvdEntry>& e
 /// Creates the folder. Not thread-safe.
 class VtkSeries {
  public:
-  VtkSeries(std::filesystem::path folder, std::string name);
+  VtkSeries(std::filesystem::path folder, std::string name, VtkFormat format = VtkFormat::binary);
   /// Writes the next snapshot, then rewrites the .pvd; returns the .vtu's path.
   std::filesystem::path write(const Lattice& lattice, const DualGraph& dual, const LatticeSnapshot& snapshot);
   std::filesystem::path pvd_path() const { return folder_ / (name_ + ".pvd"); }
@@ -77,6 +85,7 @@ class VtkSeries {
  private:
   std::filesystem::path folder_;
   std::string name_;
+  VtkFormat format_;
   std::vector<PvdEntry> entries_;
 };
 
