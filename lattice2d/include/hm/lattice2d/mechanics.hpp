@@ -174,7 +174,6 @@ class BeamMechanics {
   void change_state(int beam, BeamState to);
   void check_detachment(int i, int j);
   Eigen::VectorXd full_vector(const Eigen::VectorXd& x_free) const;
-  Eigen::VectorXd element_dofs(const Eigen::VectorXd& u, int beam) const;
 
   Lattice lattice_;
   BeamParameters parameters_;

@@ -1,0 +1,190 @@
+// Speed of the dry lattice's mechanical solve (issue 4, item 5): the annulus R_i = 0.138 with a fixed
+// outer boundary and a borehole pressure, at N particles. For each N it times
+//   1. CHOLMOD analyse + factorise (nested dissection; supernodal, converted to simplicial LDL'),
+//   2. a solve with that factor,
+//   3. the re-solve after one broken beam: rank-3 downdate of the kept factor + solve (mean of 10 breaks),
+//   4. the same through BeamMechanics (break_beam + solve with contact check and equilibrium residual),
+//   5. preconditioned CG (incomplete Cholesky): set-up + cold solve from x = 0, and the re-solve after
+//      one break warm-started from the previous solution,
+// and prints seconds and the ratio to the cold CG solve. Also: the factorisation variants
+// (simplicial vs supernodal, orderings) for the "which is faster overall" choice.
+//   build/bench/bench_lattice_solver                 # N = 1e4 and 1e5
+//   build/bench/bench_lattice_solver 20000 --quick   # one N, no variants
+// Wall times on whatever machine runs it; the issue's target is step 3 <= 0.1 s at N = 1e5.
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "hm/lattice2d/mechanics.hpp"
+
+using namespace hm::lattice2d;
+
+namespace {
+
+double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
+
+// Rank-3 factor columns of beam e restricted to the free degrees of freedom of `m`.
+SpdSolver::Matrix beam_columns(const BeamMechanics& m, const std::vector<int>& free_index, int e) {
+  const Lattice& l = m.lattice();
+  const Matrix63d V = beam_element_factor(l.length[e], l.angle[e], m.parameters());
+  const auto [i, j] = l.beams[static_cast<std::size_t>(e)];
+  const int dofs[6] = {3 * i, 3 * i + 1, 3 * i + 2, 3 * j, 3 * j + 1, 3 * j + 2};
+  std::vector<Eigen::Triplet<double>> t;
+  for (int c = 0; c < 3; ++c)
+    for (int a = 0; a < 6; ++a)
+      if (free_index[static_cast<std::size_t>(dofs[a])] >= 0) t.emplace_back(free_index[static_cast<std::size_t>(dofs[a])], c, V(a, c));
+  SpdSolver::Matrix W(m.n_free_dofs(), 3);
+  W.setFromTriplets(t.begin(), t.end());
+  return W;
+}
+
+void run(long long n, bool variants) {
+  // 1. The lattice and its mechanical system.
+  LatticeSpec spec;
+  spec.domain = DomainShape::annulus;
+  spec.n_particles = n;
+  double t0 = now();
+  const Lattice lattice = generate_lattice(spec);
+  const double t_lattice = now() - t0;
+  BoundaryConditions bc;
+  bc.outer = BoundarySupport::fixed;
+  bc.inner_pressure = 1e-3;
+  t0 = now();
+  BeamMechanics mech(lattice, BeamParameters{}, bc);
+  const double t_setup = now() - t0;
+  const SpdSolver::Matrix A = mech.solver().matrix();
+  std::vector<int> free_index(mech.held_dofs().size(), -1);
+  int k = 0;
+  for (std::size_t d = 0; d < free_index.size(); ++d)
+    if (!mech.held_dofs()[d]) free_index[d] = k++;
+  Eigen::VectorXd b(mech.n_free_dofs());
+  for (std::size_t d = 0; d < free_index.size(); ++d)
+    if (free_index[d] >= 0) b[free_index[d]] = mech.loads()[static_cast<Eigen::Index>(d)];
+  // Ten interior beams near r = 0.3, spread around, to break one at a time.
+  std::vector<int> breaks;
+  for (int e = 0; e < lattice.n_beams() && breaks.size() < 10; e += 1 + lattice.n_beams() / 4000) {
+    const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
+    const double r = lattice.points.col(i).norm();
+    if (lattice.boundary[i] == BoundaryTag::interior && lattice.boundary[j] == BoundaryTag::interior && r > 0.25 && r < 0.35)
+      breaks.push_back(e);
+  }
+  std::printf("\nN = %d particles, %d beams, %d unknowns, nnz(A) = %ld; lattice %.2f s, BeamMechanics set-up %.2f s\n",
+              lattice.n_particles(), lattice.n_beams(), mech.n_free_dofs(), static_cast<long>(A.nonZeros()), t_lattice, t_setup);
+
+  // 2. CHOLMOD.
+  CholmodSolver chol;
+  t0 = now();
+  chol.compute(A);
+  const double t_factor = now() - t0;
+  t0 = now();
+  Eigen::VectorXd x = chol.solve(b);
+  const double t_solve = now() - t0;
+  double t_resolve = 0.0, t_downdate = 0.0;
+  for (int e : breaks) {
+    const SpdSolver::Matrix W = beam_columns(mech, free_index, e);
+    t0 = now();
+    chol.modify(W, -1);
+    const double t1 = now();
+    x = chol.solve(b);
+    t_resolve += now() - t0;
+    t_downdate += t1 - t0;
+  }
+  t_resolve /= static_cast<double>(breaks.size());
+  t_downdate /= static_cast<double>(breaks.size());
+  std::printf("  CHOLMOD ordering %s, nnz(L) = %.3g, residual after 10 downdates %.1e, info %d\n",
+              chol.ordering_used().c_str(), chol.factor_nonzeros(), chol.report().relative_residual, static_cast<int>(chol.info()));
+
+  // 3. Through the mechanics (contact check, equilibrium residual, forces not included).
+  mech.solve();
+  double t_mech = 0.0;
+  for (int e : breaks) {
+    t0 = now();
+    mech.break_beam(e);
+    const MechanicsSummary s = mech.solve();
+    t_mech += now() - t0;
+    if (!s.is_converged()) std::printf("  mechanics solve not converged: %s\n", s.message.c_str());
+  }
+  t_mech /= static_cast<double>(breaks.size());
+
+  // 4. PCG (incomplete Cholesky), cold and warm.
+  SpdSolverOptions po;
+  po.cg_tolerance = 1e-10;
+  PcgSolver pcg(po);
+  t0 = now();
+  pcg.compute(A);
+  const double t_ichol = now() - t0;
+  t0 = now();
+  pcg.solve(b);
+  const double t_cg_cold = now() - t0;
+  const int it_cold = pcg.report().iterations;
+  const SpdSolver::Matrix W = beam_columns(mech, free_index, breaks[0]);
+  t0 = now();
+  pcg.modify(W, -1);
+  pcg.solve(b);  // includes rebuilding the incomplete Cholesky preconditioner
+  const double t_cg_warm = now() - t0;
+  const int it_warm = pcg.report().iterations;
+
+  const double cg = t_ichol + t_cg_cold;
+  std::printf("  %-58s %10s %8s\n", "step", "seconds", "/ CG");
+  auto row = [&](const char* name, double t) { std::printf("  %-58s %10.4f %8.4f\n", name, t, t / cg); };
+  row("CHOLMOD analyse + factorise", t_factor);
+  row("CHOLMOD solve", t_solve);
+  row("CHOLMOD re-solve after one break (rank-3 downdate + solve)", t_resolve);
+  row("  of which the downdate", t_downdate);
+  row("BeamMechanics break_beam + solve", t_mech);
+  row("PCG cold: ichol set-up + solve from 0 (= CG)", cg);
+  std::printf("  %-58s %10.4f %8.4f   (%d iterations)\n", "  of which the CG iterations", t_cg_cold, t_cg_cold / cg, it_cold);
+  std::printf("  %-58s %10.4f %8.4f   (%d iterations)\n", "PCG re-solve after one break, warm start (+ ichol)", t_cg_warm, t_cg_warm / cg, it_warm);
+  std::printf("  speed-up of the CHOLMOD re-solve over warm PCG: %.0fx, over cold PCG: %.0fx\n", t_cg_warm / t_resolve, cg / t_resolve);
+
+  if (!variants) return;
+  // 5. Factorisation variants: factorise + 10 downdate re-solves.
+  struct Variant {
+    const char* name;
+    CholmodOrdering ordering;
+    bool supernodal;
+  };
+  for (const Variant& v : {Variant{"nesdis, supernodal -> LDL'", CholmodOrdering::nested_dissection, true},
+                           Variant{"nesdis, simplicial LDL'", CholmodOrdering::nested_dissection, false},
+                           Variant{"metis, supernodal -> LDL'", CholmodOrdering::metis, true},
+                           Variant{"amd, supernodal -> LDL'", CholmodOrdering::amd, true},
+                           Variant{"automatic, supernodal -> LDL'", CholmodOrdering::automatic, true}}) {
+    SpdSolverOptions o;
+    o.ordering = v.ordering;
+    o.supernodal_factorization = v.supernodal;
+    CholmodSolver s(o);
+    t0 = now();
+    s.compute(A);
+    const double tf = now() - t0;
+    t0 = now();
+    for (int e : breaks) {
+      s.modify(beam_columns(mech, free_index, e), -1);
+      s.solve(b);
+    }
+    const double tr = (now() - t0) / static_cast<double>(breaks.size());
+    std::printf("  variant %-32s (%-6s) factorise %7.3f s, re-solve %7.4f s, nnz(L) %.3g\n", v.name,
+                s.ordering_used().c_str(), tf, tr, s.factor_nonzeros());
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<long long> sizes;
+  bool variants = true;
+  for (int a = 1; a < argc; ++a) {
+    const std::string arg = argv[a];
+    if (arg == "--quick") variants = false;
+    else sizes.push_back(std::atoll(arg.c_str()));
+  }
+  if (sizes.empty()) sizes = {10000, 100000};
+  try {
+    for (long long n : sizes) run(n, variants);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "bench_lattice_solver: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
