@@ -1,0 +1,473 @@
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "approx.hpp"
+#include "hm/analytic/input_error.hpp"
+#include "hm/analytic/rudnicki.hpp"
+#include "hm/analytic/steady_borehole.hpp"
+#include "hm/lattice2d/flow_network.hpp"
+#include "hm/lattice2d/radial_average.hpp"
+
+using namespace hm::lattice2d;
+
+namespace {
+
+constexpr double pi = std::numbers::pi;
+
+Lattice make_lattice(DomainShape shape, long long n, std::uint64_t seed = 1) {
+  LatticeSpec spec;
+  spec.domain = shape;
+  spec.n_particles = n;
+  spec.seed = seed;
+  return generate_lattice(spec);
+}
+
+DualGraph dual_with_floor(const Lattice& lattice, double min_dual_ratio) {
+  DualGraphOptions options;
+  options.min_dual_ratio = min_dual_ratio;
+  return build_dual_graph(lattice, options);
+}
+
+// Shoelace area of the polygon through the boundary particles with `tag` (generated in
+// counter-clockwise order on each curve).
+double ring_area(const Lattice& lattice, BoundaryTag tag) {
+  std::vector<int> ring;
+  for (int i = 0; i < lattice.n_particles(); ++i)
+    if (lattice.boundary[static_cast<std::size_t>(i)] == tag) ring.push_back(i);
+  double twice = 0.0;
+  for (std::size_t k = 0; k < ring.size(); ++k) {
+    const Eigen::Vector2d a = lattice.points.col(ring[k]), b = lattice.points.col(ring[(k + 1) % ring.size()]);
+    twice += a.x() * b.y() - a.y() * b.x();
+  }
+  return 0.5 * twice;
+}
+
+// Beams cut by the segment y = 0, R_i < x < 0.6: a radial "crack" from the borehole wall, whose
+// Voronoi segments form a path from the borehole outwards.
+std::vector<bool> radial_crack(const Lattice& lattice) {
+  std::vector<bool> broken(static_cast<std::size_t>(lattice.n_beams()), false);
+  for (int e = 0; e < lattice.n_beams(); ++e) {
+    const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
+    const Eigen::Vector2d a = lattice.points.col(i), b = lattice.points.col(j);
+    if (a.y() * b.y() >= 0.0) continue;
+    const double x = a.x() + (b.x() - a.x()) * (-a.y()) / (b.y() - a.y());
+    broken[static_cast<std::size_t>(e)] = x > lattice.spec.inner_radius && x < 0.6;
+  }
+  return broken;
+}
+
+// Steady annulus against Eq. B3: relative borehole error (Eq. 23), the largest radially averaged
+// nodal error over 20 shells in [R_i, 1] and the area-weighted L2 nodal error, both over p_h; and
+// the largest difference between the radial average of p and B3 at the shell's mean radius.
+// The nodal error compares p_s with B3 at the node (the circumcentre), so binning adds nothing to it.
+struct SteadyErrors {
+  double borehole = 0.0;
+  double shell = 0.0;
+  double l2 = 0.0;
+  double averaged_p = 0.0;
+  double mean_spacing = 0.0;  // h = (area/n_particles)^1/2
+};
+
+SteadyErrors steady_annulus_errors(long long n, double min_dual_ratio) {
+  const Lattice lattice = make_lattice(DomainShape::annulus, n);
+  const DualGraph dual = dual_with_floor(lattice, min_dual_ratio);
+  FlowParameters parameters;
+  parameters.Q = 0.01;
+  const FlowNetwork network(lattice, dual, parameters);
+  const FlowSteadyState steady = network.solve_steady_state();
+  REQUIRE(steady.solved);
+  const double R_i = lattice.spec.inner_radius;
+  const double p_h = hm::analytic::SteadyBorehole(parameters.Q, 0.0, 0.25, R_i).borehole_pressure();
+  auto b3 = [&](double r) { return -parameters.Q / (2.0 * pi) * std::log(r); };
+
+  SteadyErrors errors;
+  errors.borehole = std::abs(steady.pressure[network.borehole_index()] / p_h - 1.0);
+  Eigen::VectorXd nodal(network.n_triangles());
+  double l2 = 0.0;
+  for (int s = 0; s < network.n_triangles(); ++s) {
+    nodal[s] = steady.pressure[s] - b3(dual.dual_point.col(s).norm());
+    l2 += dual.triangle_area[s] * nodal[s] * nodal[s];
+  }
+  const double area = dual.triangle_area.sum();
+  errors.l2 = std::sqrt(l2 / area) / p_h;
+  const std::vector<double> edges = uniform_shell_edges(R_i, 1.0, 20);
+  for (const RadialShell& shell : radial_average(dual, nodal, edges).shells)
+    errors.shell = std::max(errors.shell, std::abs(shell.mean) / p_h);
+  for (const RadialShell& shell : radial_average(dual, steady.pressure, edges).shells)
+    errors.averaged_p = std::max(errors.averaged_p, std::abs(shell.mean - b3(shell.r_mean)) / p_h);
+  errors.mean_spacing = std::sqrt(area / lattice.n_particles());
+  return errors;
+}
+
+// Disk, point source Q = 0.1 at r = 0, b = 0, constant dt: the largest radially averaged nodal error
+// against Rudnicki's line source (b = 0: p = Q/(4 pi) E1(S r^2/4t), S = E/M) over 8 shells in
+// [0.02, 0.1], relative to p(0.02, t), at t = 3e-4 and 1e-3. E/M is the storage coefficient of the
+// paper's Fig. 7 material (b = 0.5, Table 1), so the pressure diffuses as in Fig. 7.
+std::array<double, 2> rudnicki_errors(long long n, double dt, std::uint64_t seed = 1) {
+  const Lattice lattice = make_lattice(DomainShape::disk, n, seed);
+  const DualGraph dual = build_dual_graph(lattice);
+  hm::analytic::PoroelasticParameters fig7;
+  fig7.b = 0.5;
+  FlowParameters parameters;
+  parameters.Q = 0.1;
+  parameters.b = 0.0;
+  parameters.E_over_M = hm::analytic::storage_coefficient(fig7);
+  parameters.time_step = dt;
+  FlowNetwork network(lattice, dual, parameters);
+  hm::analytic::PoroelasticParameters pure_diffusion;
+  pure_diffusion.b = 0.0;
+  pure_diffusion.E_over_M = parameters.E_over_M;
+  const hm::analytic::RudnickiLineSource reference(parameters.Q, pure_diffusion);
+
+  std::array<double, 2> errors{};
+  const std::array<double, 2> times{3e-4, 1e-3};
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    while (network.time() < times[k] - 0.5 * dt) REQUIRE(network.step().is_ok());
+    const double t = network.time();
+    Eigen::VectorXd nodal(network.n_triangles());
+    for (int s = 0; s < network.n_triangles(); ++s)
+      nodal[s] = network.pressure()[s] - reference.pressure(dual.dual_point.col(s).norm(), t);
+    for (const RadialShell& shell : radial_average(dual, nodal, uniform_shell_edges(0.02, 0.1, 8)).shells)
+      errors[k] = std::max(errors[k], std::abs(shell.mean) / reference.pressure(0.02, t));
+  }
+  return errors;
+}
+
+double observed_order(double coarse_error, double fine_error, double coarse_h, double fine_h) {
+  return std::log(coarse_error / fine_error) / std::log(coarse_h / fine_h);
+}
+
+}  // namespace
+
+// --- parameters ------------------------------------------------------------------------------------
+
+TEST_CASE("Default flow parameters are valid and each bad value is rejected by name", "[lattice2d]") {
+  REQUIRE_NOTHROW(FlowParameters{}.validate());
+  auto rejects = [](auto change, const char* text) {
+    FlowParameters parameters;
+    change(parameters);
+    CHECK_THROWS_AS(parameters.validate(), hm::InputError);
+    CHECK_THROWS_WITH(parameters.validate(), Catch::Contains(text));
+  };
+  rejects([](FlowParameters& p) { p.Q = -1.0; }, "Q = -1");
+  rejects([](FlowParameters& p) { p.E_over_M = 0.0; }, "E_over_M = 0");
+  rejects([](FlowParameters& p) { p.b = 1.5; }, "b = 1.5");
+  rejects([](FlowParameters& p) { p.iota = 0.0; }, "iota = 0");
+  rejects([](FlowParameters& p) { p.time_step = -1e-3; }, "time_step = -0.001");
+  rejects([](FlowParameters& p) { p.source_x = std::nan(""); }, "source_x");
+  CHECK(borehole_storage_from_string(to_string(BoreholeStorage::none)) == BoreholeStorage::none);
+  CHECK(borehole_storage_from_string(to_string(BoreholeStorage::biot_modulus)) == BoreholeStorage::biot_modulus);
+  CHECK_THROWS_WITH(borehole_storage_from_string("fluid"), Catch::Contains("borehole_storage = 'fluid'"));
+}
+
+TEST_CASE("Flow parameters come from the shared dimensionless set", "[lattice2d]") {
+  auto shared = hm::analytic::table1_borehole(0.5, 0.02);
+  shared.iota = 100.0;
+  const FlowParameters flow = flow_parameters_of(shared, 1e-4);
+  CHECK(flow.Q == shared.Q);
+  CHECK(flow.iota == shared.iota);
+  CHECK(flow.E_over_M == shared.material.E_over_M);
+  CHECK(flow.b == shared.material.b);
+  CHECK(flow.time_step == 1e-4);
+  CHECK_NOTHROW(flow.validate());
+}
+
+TEST_CASE("A network rejects an invalid parameter, a source outside the lattice and dt <= 0", "[lattice2d]") {
+  const Lattice lattice = make_lattice(DomainShape::disk, 700);
+  const DualGraph dual = build_dual_graph(lattice);
+  FlowParameters parameters;
+  parameters.iota = -1.0;
+  CHECK_THROWS_WITH(FlowNetwork(lattice, dual, parameters), Catch::Contains("iota = -1"));
+  parameters = FlowParameters{};
+  parameters.source_x = 2.0;
+  CHECK_THROWS_AS(FlowNetwork(lattice, dual, parameters), hm::InputError);
+  CHECK_THROWS_WITH(FlowNetwork(lattice, dual, parameters), Catch::Contains("source_x, source_y = 2, 0"));
+  FlowNetwork network(lattice, dual, FlowParameters{});
+  CHECK_THROWS_WITH(network.solve(0.0), Catch::Contains("dt = 0"));
+}
+
+// --- topology and geometry -------------------------------------------------------------------------
+
+TEST_CASE("The annulus has one unknown per triangle plus the borehole, whose polygon completes the tiling",
+          "[lattice2d]") {
+  const Lattice lattice = make_lattice(DomainShape::annulus, 2500);
+  const DualGraph dual = build_dual_graph(lattice);
+  const FlowNetwork network(lattice, dual, FlowParameters{});
+  REQUIRE(network.has_borehole());
+  CHECK(network.n_unknowns() == lattice.n_triangles() + 1);
+  CHECK(network.borehole_index() == lattice.n_triangles());
+  CHECK(network.source_triangle() == -1);
+  // The wall particles are evenly spaced on r = R_i: the hole polygon is regular with n_wall sides.
+  const auto n_wall = std::count(lattice.boundary.begin(), lattice.boundary.end(), BoundaryTag::inner);
+  const double R_i = lattice.spec.inner_radius;
+  CHECK(network.borehole_volume() ==
+        hm::test::roundoff(0.5 * static_cast<double>(n_wall) * R_i * R_i * std::sin(2.0 * pi / static_cast<double>(n_wall))));
+  // Triangles plus hole = outer polygon (round-off of a sum of ~5e3 terms).
+  CHECK(dual.triangle_area.sum() + network.borehole_volume() == hm::test::roundoff(ring_area(lattice, BoundaryTag::outer)));
+}
+
+TEST_CASE("The point source goes into the triangle that contains the source point", "[lattice2d]") {
+  const Lattice lattice = make_lattice(DomainShape::disk, 2500);
+  const DualGraph dual = build_dual_graph(lattice);
+  for (const Eigen::Vector2d& x0 : {Eigen::Vector2d(0.0, 0.0), Eigen::Vector2d(0.3, -0.2)}) {
+    FlowParameters parameters;
+    parameters.source_x = x0.x();
+    parameters.source_y = x0.y();
+    const FlowNetwork network(lattice, dual, parameters);
+    CHECK_FALSE(network.has_borehole());
+    CHECK(network.n_unknowns() == lattice.n_triangles());
+    const int s = network.source_triangle();
+    REQUIRE(s >= 0);
+    const auto& tri = lattice.triangles[static_cast<std::size_t>(s)];
+    for (int k = 0; k < 3; ++k) {  // x0 on the inner side of every edge
+      const Eigen::Vector2d a = lattice.points.col(tri[static_cast<std::size_t>(k)]);
+      const Eigen::Vector2d b = lattice.points.col(tri[static_cast<std::size_t>((k + 1) % 3)]);
+      CHECK((b - a).x() * (x0 - a).y() - (b - a).y() * (x0 - a).x() >= 0.0);
+    }
+  }
+}
+
+// --- conservation and the flux law -----------------------------------------------------------------
+
+TEST_CASE("A uniform pressure drives no flow between triangles, only out through the surface", "[lattice2d]") {
+  const Lattice lattice = make_lattice(DomainShape::annulus, 2500);
+  const DualGraph dual = build_dual_graph(lattice);
+  const FlowNetwork network(lattice, dual, FlowParameters{});
+  const Eigen::VectorXd p = Eigen::VectorXd::Constant(network.n_unknowns(), 0.7);
+  const Eigen::VectorXd rate = network.beam_flow_rate(p);
+  const Eigen::VectorXd inflow = network.net_inflow_rate(p);
+  std::vector<bool> touches_surface(static_cast<std::size_t>(network.n_unknowns()), false);
+  double surface_conductance = 0.0;
+  for (int e = 0; e < lattice.n_beams(); ++e) {
+    const bool outer = lattice.is_boundary_beam(e) && lattice.beam_boundary[static_cast<std::size_t>(e)] == BoundaryTag::outer;
+    if (outer) {
+      touches_surface[static_cast<std::size_t>(lattice.beam_triangles[static_cast<std::size_t>(e)][0])] = true;
+      surface_conductance += dual.conductance[e];
+    } else {
+      CHECK(rate[e] == 0.0);  // exact: the flux is a conductance times a difference of equal numbers
+    }
+  }
+  for (int k = 0; k < network.n_unknowns(); ++k)
+    if (!touches_surface[static_cast<std::size_t>(k)]) CHECK(inflow[k] == 0.0);
+  CHECK(network.outflow_rate(p) == hm::test::roundoff(0.7 * surface_conductance));
+  CHECK(-inflow.sum() == hm::test::roundoff(network.outflow_rate(p)));
+}
+
+TEST_CASE("Every step conserves fluid volume: injected = stored + deformation + outflow", "[lattice2d]") {
+  const auto shape = GENERATE(DomainShape::annulus, DomainShape::disk);
+  const auto storage = GENERATE(BoreholeStorage::biot_modulus, BoreholeStorage::none);
+  const Lattice lattice = make_lattice(shape, 2500);
+  const DualGraph dual = build_dual_graph(lattice);
+  FlowParameters parameters;
+  parameters.Q = 0.01;
+  parameters.b = 0.5;
+  parameters.borehole_storage = storage;
+  FlowNetwork network(lattice, dual, parameters);
+  // A volume change as the mechanics might supply it: smooth, of both signs, O(Q dt) in total.
+  Eigen::VectorXd dV(network.n_unknowns());
+  for (int s = 0; s < network.n_triangles(); ++s)
+    dV[s] = 1e-4 * dual.triangle_area[s] * std::sin(7.0 * dual.centroid(0, s) + 3.0 * dual.centroid(1, s));
+  if (network.has_borehole()) dV[network.borehole_index()] = 2e-6;
+  double dt = 1e-6;
+  double worst = 0.0;
+  for (int n = 0; n < 30; ++n, dt *= 1.5) {  // dt from 1e-6 to 1e2: a new factorisation every step
+    const FlowStepSummary summary = network.step(dt, n % 2 == 0 ? dV : Eigen::VectorXd());
+    REQUIRE(summary.is_ok());
+    worst = std::max(worst, summary.balance_error);
+  }
+  INFO(to_string(shape) << ", borehole storage " << to_string(storage) << ": worst balance " << worst);
+  // Measured <= 1e-13: the scheme is conservative and the direct solve's residual is round-off.
+  CHECK(worst <= 1e-10);
+  const FlowTotals& totals = network.totals();
+  CHECK(totals.n_steps == 30);
+  CHECK(totals.injected == hm::test::roundoff(parameters.Q * network.time()));
+  CHECK(std::abs(totals.injected - totals.storage - totals.deformation - totals.outflow) <= 1e-10 * totals.injected);
+}
+
+TEST_CASE("solve() is a trial that leaves the state alone until accept()", "[lattice2d]") {
+  const Lattice lattice = make_lattice(DomainShape::annulus, 700);
+  const DualGraph dual = build_dual_graph(lattice);
+  FlowNetwork network(lattice, dual, FlowParameters{});
+  const FlowStepSummary first = network.solve(1e-3);
+  REQUIRE(first.is_ok());
+  const Eigen::VectorXd trial = network.trial_pressure();
+  CHECK(network.pressure().isZero(0.0));
+  CHECK(network.time() == 0.0);
+  // A coupling iteration repeats the solve with new inputs; the same inputs give the same answer.
+  REQUIRE(network.solve(1e-3).is_ok());
+  CHECK(network.trial_pressure() == trial);
+  network.accept();
+  CHECK(network.pressure() == trial);
+  CHECK(network.time() == 1e-3);
+  CHECK(network.borehole_pressure() > 0.0);
+}
+
+// --- fractures: iota ---------------------------------------------------------------------------------
+
+TEST_CASE("With iota = 1 broken beams leave the network unchanged", "[lattice2d]") {
+  const Lattice lattice = make_lattice(DomainShape::annulus, 2500);
+  const DualGraph dual = build_dual_graph(lattice);
+  FlowParameters parameters;
+  parameters.iota = 1.0;
+  FlowNetwork intact(lattice, dual, parameters), cracked(lattice, dual, parameters);
+  const std::vector<bool> crack = radial_crack(lattice);
+  REQUIRE(std::count(crack.begin(), crack.end(), true) > 10);
+  cracked.set_broken(crack);
+  for (int n = 0; n < 5; ++n) {
+    REQUIRE(intact.step().is_ok());
+    REQUIRE(cracked.step().is_ok());
+  }
+  CHECK(cracked.pressure() == intact.pressure());  // bitwise: the conductances are multiplied by 1.0
+  CHECK(cracked.solve_steady_state().pressure == intact.solve_steady_state().pressure);
+}
+
+TEST_CASE("iota > 1 carries more flow along broken beams and lowers the borehole pressure", "[lattice2d]") {
+  const Lattice lattice = make_lattice(DomainShape::annulus, 2500);
+  const DualGraph dual = build_dual_graph(lattice);
+  const std::vector<bool> crack = radial_crack(lattice);
+  double previous_flow = 0.0, previous_p_h = 1e300;
+  for (double iota : {1.0, 10.0, 100.0}) {
+    FlowParameters parameters;
+    parameters.iota = iota;
+    FlowNetwork network(lattice, dual, parameters);
+    network.set_broken(crack);
+    const FlowSteadyState steady = network.solve_steady_state();
+    REQUIRE(steady.solved);
+    const Eigen::VectorXd rate = network.beam_flow_rate(steady.pressure);
+    double crack_flow = 0.0;
+    for (int e = 0; e < lattice.n_beams(); ++e)
+      if (crack[static_cast<std::size_t>(e)]) crack_flow += std::abs(rate[e]);
+    const double p_h = steady.pressure[network.borehole_index()];
+    INFO("iota = " << iota << ": flow along the crack " << crack_flow << ", p_h " << p_h);
+    CHECK(crack_flow > previous_flow);
+    CHECK(p_h < previous_p_h);  // Rayleigh monotonicity: more conductance, lower driving pressure
+    CHECK(steady.balance_error <= 1e-12);  // round-off
+    previous_flow = crack_flow;
+    previous_p_h = p_h;
+  }
+}
+
+// --- the borehole node ---------------------------------------------------------------------------------
+
+TEST_CASE("Borehole storage delays the borehole pressure but not the steady state", "[lattice2d]") {
+  const Lattice lattice = make_lattice(DomainShape::annulus, 2500);
+  const DualGraph dual = build_dual_graph(lattice);
+  FlowParameters parameters;
+  parameters.time_step = 1e-4;
+  parameters.borehole_storage = BoreholeStorage::biot_modulus;
+  FlowNetwork storing(lattice, dual, parameters);
+  parameters.borehole_storage = BoreholeStorage::none;
+  FlowNetwork passing(lattice, dual, parameters);
+  REQUIRE(storing.step().is_ok());
+  REQUIRE(passing.step().is_ok());
+  CHECK(storing.borehole_pressure() < passing.borehole_pressure());
+  // Long steps reach the steady state of each: implicit Euler damps every mode by 1/(1 + dt lambda),
+  // lambda >= ~1 here, so five steps of dt = 1e4 leave < 1e-20 of the transient.
+  for (FlowNetwork* network : {&storing, &passing}) {
+    for (int n = 0; n < 5; ++n) REQUIRE(network->step(1e4).is_ok());
+    const FlowSteadyState steady = network->solve_steady_state();
+    CHECK(network->borehole_pressure() == Approx(steady.pressure[network->borehole_index()]).epsilon(1e-10));
+  }
+  CHECK(storing.borehole_pressure() == Approx(passing.borehole_pressure()).epsilon(1e-10));
+}
+
+// --- verification against the analytic solutions ----------------------------------------------------
+
+TEST_CASE("Steady annulus: radially averaged p matches Eq. B3 and p_h matches Eq. 23 at N = 1e4", "[lattice2d]") {
+  SECTION("flow floor 1e-3 (second order, see the [slow] refinement study)") {
+    const SteadyErrors e = steady_annulus_errors(10000, 1e-3);
+    INFO("p_h " << e.borehole << ", shells " << e.shell << ", L2 " << e.l2 << ", averaged p " << e.averaged_p);
+    // Discretisation error at N = 1e4 (measured 1.44e-3, 8.1e-5, 4.5e-5), second order in h by the
+    // refinement study below; 1.4x margin.
+    CHECK(e.borehole <= 2e-3);
+    CHECK(e.shell <= 1.2e-4);
+    CHECK(e.l2 <= 6.5e-5);
+    // The radial average of p against B3 at the shell's mean radius adds the binning error of the
+    // log profile, (Q/2pi) var(r)/(2 r^2) <= (Q/2pi) dr^2/(24 R_i^2) = 1.5e-3 p_h for 20 shells
+    // (measured 9.4e-4).
+    CHECK(e.averaged_p <= 2e-3);
+  }
+  SECTION("the dual graph's default floor 0.02 (a resolution-independent bias)") {
+    const SteadyErrors e = steady_annulus_errors(10000, DualGraphOptions{}.min_dual_ratio);
+    INFO("p_h " << e.borehole << ", shells " << e.shell << ", L2 " << e.l2);
+    // Measured 1.90e-3, 3.45e-4, 1.37e-4. The floored 1.5% of the segments lower the effective
+    // conductivity by ~4e-4 at every N (shells 1.5e-4, 3.5e-4, 4.1e-4 at N = 2.5e3, 1e4, 4e4):
+    // docs/flow.md. Bound: measured + 40%.
+    CHECK(e.borehole <= 2.7e-3);
+    CHECK(e.shell <= 5e-4);
+    CHECK(e.l2 <= 2e-4);
+  }
+}
+
+TEST_CASE("Steady annulus converges at second order in h = N^-1/2", "[lattice2d][slow]") {
+  // Flow floor 1e-3: with the default 0.02 the error stalls at ~4e-4 (docs/flow.md).
+  const std::array<long long, 3> n{2500, 10000, 40000};
+  std::array<SteadyErrors, 3> e;
+  for (std::size_t k = 0; k < n.size(); ++k) e[k] = steady_annulus_errors(n[k], 1e-3);
+  for (std::size_t k = 0; k + 1 < n.size(); ++k) {
+    const double order_p_h = observed_order(e[k].borehole, e[k + 1].borehole, e[k].mean_spacing, e[k + 1].mean_spacing);
+    const double order_l2 = observed_order(e[k].l2, e[k + 1].l2, e[k].mean_spacing, e[k + 1].mean_spacing);
+    INFO("N = " << n[k] << " -> " << n[k + 1] << ": p_h " << e[k].borehole << " -> " << e[k + 1].borehole << " (order "
+                << order_p_h << "), L2 " << e[k].l2 << " -> " << e[k + 1].l2 << " (order " << order_l2 << ")");
+    // Two-point fluxes on an orthogonal (Delaunay-Voronoi) dual are exact for linear fields, so the
+    // nodal error is second order; measured 2.05, 2.04 (p_h) and 2.08, 2.06 (L2). One random
+    // lattice per N makes single ratios scatter by ~0.2.
+    CHECK(order_p_h >= 1.7);
+    CHECK(order_p_h == Approx(2.0).margin(0.3));
+    CHECK(order_l2 >= 1.7);
+    CHECK(order_l2 == Approx(2.0).margin(0.3));
+    CHECK(e[k + 1].shell < e[k].shell);
+  }
+}
+
+TEST_CASE("Point injection into the disk matches Rudnicki's line source with b = 0 at N = 1e4", "[lattice2d]") {
+  const auto errors = rudnicki_errors(10000, 1e-6);
+  INFO("t = 3e-4: " << errors[0] << ", t = 1e-3: " << errors[1]);
+  // Discretisation error at N = 1e4 (h = 0.016; measured 4.6e-2 and 3.7e-2, in the innermost shell,
+  // 0.02 < r < 0.03, which holds 6 triangles one spacing from the source triangle); it drops to
+  // <~ 4e-3 at N = 4e4 and 1e5 ([slow] test). dt = 1e-6 contributes ~5e-4 (first order: 2e-6 moves
+  // the errors by that much). Bound: measured + 30%.
+  CHECK(errors[0] <= 6e-2);
+  CHECK(errors[1] <= 5e-2);
+}
+
+TEST_CASE("Implicit Euler converges at first order in dt", "[lattice2d]") {
+  // Disk, point source, N = 2500: the pressure at t = 1e-3 for dt, dt/2, dt/4; differences of
+  // successive solutions shrink by 2 for a first-order scheme.
+  const Lattice lattice = make_lattice(DomainShape::disk, 2500);
+  const DualGraph dual = build_dual_graph(lattice);
+  std::vector<Eigen::VectorXd> p;
+  for (double dt : {2e-5, 1e-5, 5e-6}) {
+    FlowParameters parameters;
+    parameters.Q = 0.1;
+    parameters.E_over_M = 1.0;
+    parameters.time_step = dt;
+    FlowNetwork network(lattice, dual, parameters);
+    while (network.time() < 1e-3 - 0.5 * dt) REQUIRE(network.step().is_ok());
+    p.push_back(network.pressure());
+  }
+  const double ratio = (p[0] - p[1]).cwiseAbs().maxCoeff() / (p[1] - p[2]).cwiseAbs().maxCoeff();
+  INFO("ratio " << ratio);
+  // Measured ratio 2.02 (order 1.01); the margin allows the pre-asymptotic start of a point source.
+  CHECK(std::log2(ratio) == Approx(1.0).margin(0.15));
+}
+
+TEST_CASE("Point injection: the error against Rudnicki shrinks from N = 1e4 to 4e4 and 1e5", "[lattice2d][slow]") {
+  const auto coarse = rudnicki_errors(10000, 1e-6);
+  const auto medium = rudnicki_errors(40000, 1e-6);
+  const auto fine = rudnicki_errors(100000, 1e-6);
+  for (std::size_t k = 0; k < 2; ++k) {
+    INFO("t index " << k << ": N = 1e4 " << coarse[k] << ", 4e4 " << medium[k] << ", 1e5 " << fine[k]);
+    CHECK(medium[k] < coarse[k]);
+    CHECK(fine[k] < coarse[k]);
+    // Discretisation at N >= 4e4 (measured <= 4e-3; one random lattice per N, so the N = 4e4 and
+    // 1e5 errors are of the same size rather than ordered) plus the dt = 1e-6 error ~5e-4.
+    CHECK(medium[k] <= 1e-2);
+    CHECK(fine[k] <= 1e-2);
+  }
+}
