@@ -131,10 +131,10 @@ Eigen::Matrix<double, 6, 1> internal_force(const Lattice& l, const BeamParameter
 
 }  // namespace
 
-std::vector<BeamForce> compute_beam_forces(const Lattice& lattice, const BeamParameters& parameters,
+std::vector<BeamForce> connection_forces(const Lattice& lattice, const BeamParameters& parameters,
                                            const std::vector<BeamState>& states, const Eigen::VectorXd& u) {
-  assert(u.size() == 3 * lattice.n_particles() && "compute_beam_forces: u has 3 entries per particle");
-  assert(static_cast<int>(states.size()) == lattice.n_beams() && "compute_beam_forces: one state per beam");
+  assert(u.size() == 3 * lattice.n_particles() && "connection_forces: u has 3 entries per particle");
+  assert(static_cast<int>(states.size()) == lattice.n_beams() && "connection_forces: one state per beam");
   std::vector<BeamForce> forces(static_cast<std::size_t>(lattice.n_beams()));
   for (int e = 0; e < lattice.n_beams(); ++e) {
     const BeamState state = states[static_cast<std::size_t>(e)];
@@ -482,7 +482,7 @@ MechanicsSummary BeamMechanics::solve() {
 }
 
 std::vector<BeamForce> BeamMechanics::beam_forces() const {
-  return compute_beam_forces(lattice_, parameters_, states_, raw_);
+  return connection_forces(lattice_, parameters_, states_, raw_);
 }
 
 Eigen::VectorXd BeamMechanics::reactions() const {

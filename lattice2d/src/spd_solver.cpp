@@ -45,7 +45,9 @@ void SpdSolver::add_low_rank(const Matrix& W, int sigma) {
 }
 
 double SpdSolver::relative_residual(const Eigen::VectorXd& x, const Eigen::VectorXd& b) const {
-  const double r = (matrix_ * x - b).norm(), nb = b.norm();
+  // A is symmetric with both triangles stored, so A x = A^T x: the transposed product runs row-wise
+  // (a gather, one dot product per row), measurably faster than the column-wise scatter of A x.
+  const double r = (matrix_.transpose() * x - b).norm(), nb = b.norm();
   return nb > 0.0 ? r / nb : r;
 }
 

@@ -6,6 +6,7 @@
 
 #include "hm/analytic/input_error.hpp"
 #include "hm/lattice2d/mechanics.hpp"
+#include "hm/lattice2d/particle_stress.hpp"
 
 using namespace hm::lattice2d;
 
@@ -99,7 +100,7 @@ TEST_CASE("Beam forces are minus the element stiffness times the element displac
   std::vector<BeamState> states(static_cast<std::size_t>(l.n_beams()), BeamState::intact);
   for (std::size_t e = 0; e < states.size(); e += 3) states[e] = e % 2 ? BeamState::contact : BeamState::open;
   const Eigen::VectorXd u = Eigen::VectorXd::Random(3 * l.n_particles());
-  const auto forces = compute_beam_forces(l, p, states, u);
+  const auto forces = connection_forces(l, p, states, u);
   double worst = 0.0;
   for (int e = 0; e < l.n_beams(); ++e) {
     const auto [i, j] = l.beams[static_cast<std::size_t>(e)];
@@ -113,6 +114,17 @@ TEST_CASE("Beam forces are minus the element stiffness times the element displac
     if (states[static_cast<std::size_t>(e)] == BeamState::open) CHECK(g.isZero(0.0));
   }
   CHECK(worst < 1e-13);  // round-off: O(1) displacements and stiffnesses, two evaluation orders
+  // The stress code's own force routine (particle_stress.hpp) agrees where the pair is in contact
+  // (it zeroes separated contacts, Eq. 8) and for intact and open beams everywhere.
+  const BeamForces other = compute_beam_forces(l, p, u, states);
+  double diff = 0.0;
+  for (int e = 0; e < l.n_beams(); ++e) {
+    const BeamForce& F = forces[static_cast<std::size_t>(e)];
+    if (states[static_cast<std::size_t>(e)] == BeamState::contact && F.normal > 0.0) continue;
+    diff = std::max({diff, (other.force.col(e) - F.force_on_i).cwiseAbs().maxCoeff(),
+                     std::abs(other.moment(0, e) - F.moment_i), std::abs(other.moment(1, e) - F.moment_j)});
+  }
+  CHECK(diff < 1e-13);  // round-off, as above
 }
 
 TEST_CASE("Rigid-body motions carry no force", "[lattice2d]") {
@@ -122,7 +134,7 @@ TEST_CASE("Rigid-body motions carry no force", "[lattice2d]") {
     Eigen::VectorXd u(3 * l.n_particles());
     for (int p = 0; p < l.n_particles(); ++p) u.segment<3>(3 * p) << 0.3 - 0.01 * l.points(1, p), -0.2 + 0.01 * l.points(0, p), 0.01;
     // round-off: u = O(0.3), stiffness O(1); cancellation of O(1) terms
-    CHECK(max_abs_force(compute_beam_forces(l, BeamParameters{}, intact, u)) < 1e-14);
+    CHECK(max_abs_force(connection_forces(l, BeamParameters{}, intact, u)) < 1e-14);
   }
   SECTION("a rigid motion prescribed on the boundary moves the whole lattice rigidly") {
     BoundaryConditions bc;

@@ -94,8 +94,11 @@ struct BeamForce {
 
 /// Forces of every beam for displacements u (3 n_particles, dof = 3 i + component) and the given beam
 /// states: intact beams by Eqs. 3-4 (linearised), contacts by Eq. 9-10's normal spring, open beams zero.
-/// Uses the element stiffness, so sum over beams of the particle forces is exactly -K u.
-std::vector<BeamForce> compute_beam_forces(const Lattice& lattice, const BeamParameters& parameters,
+/// Evaluated in each beam's local frame; equal to -K_e u_e to round-off (tested), so the particle sums
+/// are exactly -K u. particle_stress.hpp's compute_beam_forces(lattice, parameters, u, states) gives the
+/// same F_ij and moments in its BeamForces layout (tested against this one); this one adds the normal and
+/// shear components. Limits: like the stiffness, geometrically linear.
+std::vector<BeamForce> connection_forces(const Lattice& lattice, const BeamParameters& parameters,
                                            const std::vector<BeamState>& states, const Eigen::VectorXd& u);
 
 /// What one BeamMechanics::solve did (Ceres' Summary in small).
@@ -150,7 +153,8 @@ class BeamMechanics {
 
   /// Displacements (3 n_particles, dof = 3 i + component) of the last solve (0 before).
   const Eigen::VectorXd& displacement() const { return displacement_; }
-  /// Forces of every beam at the current displacement (compute_beam_forces).
+  /// Forces of every beam at the current displacement (connection_forces). For particle stresses use
+  /// compute_beam_forces(lattice(), parameters(), displacement(), states()) of particle_stress.hpp.
   std::vector<BeamForce> beam_forces() const;
   /// Nodal loads: boundary pressures plus set_external_forces (3 n_particles).
   Eigen::VectorXd loads() const { return pressure_loads_ + extra_loads_; }
