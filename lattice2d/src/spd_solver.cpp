@@ -92,6 +92,10 @@ struct CholmodSolver::Impl {
   std::vector<int> inverse_permutation;                    // row r of A is row pinv[r] of L
   double lnz = 0.0;
   bool factor_ok = false;  // the factor is numerically usable (last factorise/modify succeeded)
+  // Forward solution y = L^-1 P b of `forward_b`, kept current through modifications.
+  DensePtr forward{nullptr, DenseDeleter{&common.c}};
+  DensePtr zero_delta{nullptr, DenseDeleter{&common.c}};  // DeltaB = 0 for cholmod_updown_solve
+  Eigen::VectorXd forward_b;
 
   cholmod_common* c() { return &common.c; }
 
@@ -180,6 +184,7 @@ void CholmodSolver::refactorize() {
     return;
   }
   impl_->factor_ok = false;
+  impl_->forward.reset();
   impl_->factor.reset(cholmod_copy_factor(impl_->symbolic.get(), c));
   SparsePtr S = impl_->to_cholmod_lower(matrix_);
   bool ok = impl_->factor && S && cholmod_factorize(S.get(), impl_->factor.get(), c);
@@ -254,7 +259,16 @@ void CholmodSolver::modify(const Matrix& W, int sigma) {
   }
   p[k] = nz;
   impl_->factor_ok = false;
-  if (!cholmod_updown(sigma > 0 ? 1 : 0, C.get(), impl_->factor.get(), c)) {
+  bool ok;
+  if (impl_->forward) {
+    if (!impl_->zero_delta) impl_->zero_delta.reset(cholmod_zeros(static_cast<std::size_t>(n), 1, CHOLMOD_REAL, c));
+    ok = impl_->zero_delta && cholmod_updown_solve(sigma > 0 ? 1 : 0, C.get(), impl_->factor.get(), impl_->forward.get(),
+                                                   impl_->zero_delta.get(), c);
+  } else {
+    ok = cholmod_updown(sigma > 0 ? 1 : 0, C.get(), impl_->factor.get(), c);
+  }
+  if (!ok) {
+    impl_->forward.reset();
     report_.info = Eigen::NumericalIssue;
     report_.message = "cholmod_updown failed (status " + std::to_string(c->status) + ")";
     return;
@@ -297,7 +311,22 @@ Eigen::VectorXd CholmodSolver::solve(const Eigen::VectorXd& b) {
     B.x = const_cast<double*>(b.data());  // CHOLMOD does not write B
     B.xtype = CHOLMOD_REAL;
     B.dtype = CHOLMOD_DOUBLE;
-    DensePtr X(cholmod_solve(CHOLMOD_A, impl_->factor.get(), &B, c), DenseDeleter{c});
+    DensePtr X{nullptr, DenseDeleter{c}};
+    if (!options_.reuse_forward_solve) {
+      X.reset(cholmod_solve(CHOLMOD_A, impl_->factor.get(), &B, c));
+    } else {
+      // x = P^T (D L^T)^-1 y with y = L^-1 P b, y kept for the next re-solve with the same b.
+      if (!impl_->forward || impl_->forward_b.size() != b.size() || impl_->forward_b != b) {
+        impl_->forward.reset();
+        DensePtr PB(cholmod_solve(CHOLMOD_P, impl_->factor.get(), &B, c), DenseDeleter{c});
+        if (PB) impl_->forward.reset(cholmod_solve(CHOLMOD_L, impl_->factor.get(), PB.get(), c));
+        impl_->forward_b = b;
+      }
+      if (impl_->forward) {
+        DensePtr Y(cholmod_solve(CHOLMOD_DLt, impl_->factor.get(), impl_->forward.get(), c), DenseDeleter{c});
+        if (Y) X.reset(cholmod_solve(CHOLMOD_Pt, impl_->factor.get(), Y.get(), c));
+      }
+    }
     Eigen::VectorXd x = Eigen::VectorXd::Constant(b.size(), NAN);
     if (X) x = Eigen::Map<const Eigen::VectorXd>(static_cast<const double*>(X->x), b.size());
     return x;

@@ -155,6 +155,7 @@ TEST_CASE("A rank-3 downdate then solve equals a fresh factorisation of the modi
   SECTION("one break, fifty breaks, and across periodic refactorisations") {
     SpdSolverOptions options;
     options.max_modifications = GENERATE(2000, 20);  // 20: refactorised after breaks 20 and 40
+    options.reuse_forward_solve = GENERATE(true, false);  // forward solution carried by cholmod_updown_solve, or not
     CholmodSolver solver(options);
     solver.compute(s.A);
     Matrix A = s.A;
@@ -167,6 +168,7 @@ TEST_CASE("A rank-3 downdate then solve equals a fresh factorisation of the modi
       if (k == 0 || k + 1 == beams.size()) {
         const Eigen::VectorXd x = solver.solve(s.b);
         REQUIRE(solver.info() == Eigen::Success);
+        CHECK_FALSE(solver.report().refactorized);  // the modified factor itself passed the residual check
         CholmodSolver fresh;
         fresh.compute(A);
         const Eigen::VectorXd y = fresh.solve(s.b);
@@ -178,7 +180,7 @@ TEST_CASE("A rank-3 downdate then solve equals a fresh factorisation of the modi
       }
     }
     std::cout << "[spd_solver] 50 downdates (max_modifications " << options.max_modifications
-              << "): |x - x_fresh|/|x| = " << worst << ", cond ~ " << kappa << ", factorisations "
+              << ", reuse_forward_solve " << options.reuse_forward_solve << "): |x - x_fresh|/|x| = " << worst << ", cond ~ " << kappa << ", factorisations "
               << solver.report().n_factorizations << "\n";
     CHECK(worst < 10.0 * kappa * 2.2e-16);  // round-off: both are backward stable, error ~ cond * eps
     CHECK(solver.report().n_factorizations == (options.max_modifications == 20 ? 3 : 1));

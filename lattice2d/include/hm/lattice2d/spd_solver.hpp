@@ -65,6 +65,10 @@ struct SpdSolverOptions {
   /// A pivot D_kk <= pivot_tolerance * max_k D_kk of the (modified) LDL' factor is reported as
   /// Eigen::NumericalIssue (a singular or indefinite matrix). Allowed: 0 <= pivot_tolerance < 1.
   double pivot_tolerance = 1e-13;
+  /// Keep the forward solution y = L^-1 P b of the last right-hand side and carry it through every
+  /// modification (cholmod_updown_solve); a re-solve with the same b then needs only the backward
+  /// half (D L^T x = y), about half the solve. Our choice by measurement (docs/lattice.md).
+  bool reuse_forward_solve = true;
 
   // --- PcgSolver ---------------------------------------------------------------------------------
   PcgPreconditioner preconditioner = PcgPreconditioner::incomplete_cholesky;
