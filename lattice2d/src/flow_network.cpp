@@ -90,7 +90,6 @@ FlowNetwork::FlowNetwork(const Lattice& lattice, const DualGraph& dual, const Fl
   const int n_beams = lattice.n_beams();
   assert(dual.triangle_area.size() == n_triangles_ && dual.conductance.size() == n_beams &&
          "dual graph of another lattice");
-  beam_boundary_ = lattice.beam_boundary;
   broken_.assign(static_cast<std::size_t>(n_beams), false);
 
   // Wall beams, with their particles in the counter-clockwise order of their triangle (the hole on
@@ -175,6 +174,9 @@ FlowNetwork& FlowNetwork::operator=(FlowNetwork&&) noexcept = default;
 void FlowNetwork::update_geometry(const DualGraph& dual, const Eigen::Matrix2Xd& positions) {
   assert(dual.triangle_area.size() == n_triangles_ && "dual graph of another lattice");
   assert(dual.conductance.size() == static_cast<Eigen::Index>(connections_.size()) && "dual graph of another lattice");
+  assert(std::all_of(wall_beams_.begin(), wall_beams_.end(),
+                     [&](const auto& w) { return std::max(w[0], w[1]) < positions.cols(); }) &&
+         "one position per particle");
   triangle_area_ = dual.triangle_area;
   base_conductance_ = dual.conductance;
   borehole_volume_ = 0.0;

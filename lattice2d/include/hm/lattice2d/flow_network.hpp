@@ -206,7 +206,6 @@ class FlowNetwork {
   bool has_borehole_ = false;
   int source_triangle_ = -1;
   std::vector<Connection> connections_;
-  std::vector<BoundaryTag> beam_boundary_;
   std::vector<std::array<int, 2>> wall_beams_;  // particle pairs of the borehole wall
   Eigen::VectorXd triangle_area_;              // V_s^{n+1}
   Eigen::VectorXd base_conductance_;           // A/d_flow per beam
