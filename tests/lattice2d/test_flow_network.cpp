@@ -307,6 +307,36 @@ TEST_CASE("solve() is a trial that leaves the state alone until accept()", "[lat
   CHECK(network.borehole_pressure() > 0.0);
 }
 
+TEST_CASE("update_geometry follows a deformation: a dilation scales V_s and V_h, not A/d", "[lattice2d]") {
+  const Lattice lattice = make_lattice(DomainShape::annulus, 2500);
+  const DualGraph dual = build_dual_graph(lattice);
+  FlowParameters parameters;
+  parameters.Q = 0.0;
+  parameters.b = 0.5;
+  FlowNetwork network(lattice, dual, parameters);
+  const double V_h = network.borehole_volume();
+  const double stretch = 1.01;
+  const Eigen::Matrix2Xd positions = stretch * lattice.points;
+  const DualGraph deformed = build_dual_graph(lattice, positions);
+  network.update_geometry(deformed, positions);
+  CHECK(network.borehole_volume() == hm::test::roundoff(stretch * stretch * V_h));
+  // The mechanics' volume change, borehole included: the rock dilates, so the pressure drops
+  // (undrained suction), and the volume balance still closes.
+  Eigen::VectorXd dV(network.n_unknowns());
+  dV.head(network.n_triangles()) = deformed.triangle_area - dual.triangle_area;
+  dV[network.borehole_index()] = network.borehole_volume() - V_h;
+  const FlowStepSummary summary = network.step(1e-4, dV);
+  REQUIRE(summary.is_ok());
+  CHECK(network.pressure().maxCoeff() < 0.0);
+  CHECK(summary.deformation == hm::test::roundoff(parameters.b * (stretch * stretch - 1.0) * (dual.triangle_area.sum() + V_h)));
+  CHECK(summary.balance_error <= 1e-10);  // round-off (measured below 1e-16)
+  // A/d is scale-invariant: the same pressure difference drives the same flow rate.
+  FlowNetwork undeformed(lattice, dual, parameters);
+  const Eigen::VectorXd p = network.pressure();
+  CHECK((network.beam_flow_rate(p) - undeformed.beam_flow_rate(p)).cwiseAbs().maxCoeff() <=
+        1e-12 * undeformed.beam_flow_rate(p).cwiseAbs().maxCoeff());
+}
+
 // --- fractures: iota ---------------------------------------------------------------------------------
 
 TEST_CASE("With iota = 1 broken beams leave the network unchanged", "[lattice2d]") {
