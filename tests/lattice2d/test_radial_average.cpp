@@ -84,7 +84,7 @@ TEST_CASE("A field constant on each shell is reproduced exactly", "[lattice2d]")
   for (std::size_t k = 0; k < profile.shells.size(); ++k) CHECK(profile.shells[k].mean == hm::test::roundoff(std::pow(2.0, k)));
 }
 
-TEST_CASE("Shells are half-open, the last one closed; an empty shell reports NaN", "[lattice2d]") {
+TEST_CASE("Shells are half-open with the last one closed, and an empty shell reports NaN", "[lattice2d]") {
   // Four unit-area "triangles" with centroids at chosen radii about the centre (1, 1).
   Eigen::Matrix2Xd centroid(2, 4);
   centroid << 1.5, 2.0, 1.0, 4.0,  //
