@@ -10,6 +10,7 @@
 // (simplicial vs supernodal, orderings) for the "which is faster overall" choice.
 //   build/bench/bench_lattice_solver                 # N = 1e4 and 1e5
 //   build/bench/bench_lattice_solver 20000 --quick   # one N, no variants
+//   build/bench/bench_lattice_solver 100000 --no-pcg  # CHOLMOD only (e.g. to compare BLAS libraries)
 // Wall times on whatever machine runs it; the target is step 3 <= 0.1 s at N = 1e5.
 #include <algorithm>
 #include <chrono>
@@ -47,7 +48,7 @@ SpdSolver::Matrix beam_columns(const BeamMechanics& m, const std::vector<int>& f
   return W;
 }
 
-void run(long long n, bool variants) {
+void run(long long n, bool variants, bool with_pcg) {
   // 1. The lattice and its mechanical system.
   LatticeSpec spec;
   spec.domain = DomainShape::annulus;
@@ -148,6 +149,12 @@ void run(long long n, bool variants) {
   }
   const double t_mech = median(mechs);
 
+  std::printf("  %-58s %10s %8s\n", "step", "seconds", "/ CG");
+  if (!with_pcg) {
+    std::printf("  %-58s %10.4f\n  %-58s %10.4f\n  %-58s %10.4f\n  %-58s %10.4f\n", "CHOLMOD analyse + factorise", t_factor,
+                "CHOLMOD first solve", t_first, "CHOLMOD re-solve after one break", t_resolve, "BeamMechanics break_beam + solve", t_mech);
+  }
+  if (with_pcg) {
   // 4. PCG (incomplete Cholesky), cold and warm.
   SpdSolverOptions po;
   po.cg_tolerance = 1e-10;
@@ -167,7 +174,6 @@ void run(long long n, bool variants) {
   const int it_warm = pcg.report().iterations;
 
   const double cg = t_ichol + t_cg_cold;
-  std::printf("  %-58s %10s %8s\n", "step", "seconds", "/ CG");
   auto row = [&](const char* name, double t) { std::printf("  %-58s %10.4f %8.4f\n", name, t, t / cg); };
   row("CHOLMOD analyse + factorise", t_factor);
   row("CHOLMOD first solve (forward + backward)", t_first);
@@ -181,6 +187,7 @@ void run(long long n, bool variants) {
   std::printf("  %-58s %10.4f %8.4f   (%d iterations)\n", "  of which the CG iterations", t_cg_cold, t_cg_cold / cg, it_cold);
   std::printf("  %-58s %10.4f %8.4f   (%d iterations)\n", "PCG re-solve after one break, warm start (+ ichol)", t_cg_warm, t_cg_warm / cg, it_warm);
   std::printf("  speed-up of the CHOLMOD re-solve over warm PCG: %.0fx, over cold PCG: %.0fx\n", t_cg_warm / t_resolve, cg / t_resolve);
+  }
 
   if (!variants) return;
   // 5. Factorisation variants: factorise + 10 downdate re-solves.
@@ -219,15 +226,16 @@ void run(long long n, bool variants) {
 
 int main(int argc, char** argv) {
   std::vector<long long> sizes;
-  bool variants = true;
+  bool variants = true, with_pcg = true;
   for (int a = 1; a < argc; ++a) {
     const std::string arg = argv[a];
     if (arg == "--quick") variants = false;
+    else if (arg == "--no-pcg") with_pcg = false;
     else sizes.push_back(std::atoll(arg.c_str()));
   }
   if (sizes.empty()) sizes = {10000, 100000};
   try {
-    for (long long n : sizes) run(n, variants);
+    for (long long n : sizes) run(n, variants, with_pcg);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "bench_lattice_solver: %s\n", e.what());
     return 1;
