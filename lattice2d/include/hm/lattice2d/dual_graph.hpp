@@ -22,8 +22,9 @@ namespace hm::lattice2d {
 struct DualGraphOptions {
   /// Floor on the flow distance relative to the beam length, d_flow >= min_dual_ratio * L, so that the
   /// conductance A_st/d_flow (Eq. 15, A_st = L_ij) is at most 1/min_dual_ratio. Our choice; see
-  /// docs/lattice.md. Allowed: 0 < min_dual_ratio < 1.
-  double min_dual_ratio = 0.02;
+  /// docs/lattice.md and docs/flow.md (0.02 biased the conductivity by ~4e-4 and stalled the flow's
+  /// second-order convergence; 1e-3 behaves like no floor). Allowed: 0 < min_dual_ratio < 1.
+  double min_dual_ratio = 1e-3;
 
   void validate() const;
 };
