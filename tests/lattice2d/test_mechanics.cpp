@@ -241,6 +241,20 @@ TEST_CASE("A broken beam pushed together is a compression-only contact; pulled a
     CHECK(m.states()[static_cast<std::size_t>(e)] == BeamState::contact);
     CHECK(m.beam_forces()[static_cast<std::size_t>(e)].normal < 0.0);
   }
+  SECTION("an active set still changing at the iteration cap is reported, not hidden") {
+    MechanicsOptions options;
+    options.max_contact_iterations = 1;
+    BeamMechanics m(l, BeamParameters{}, bc, options);
+    m.solve();
+    const int e = central_x_beam(l);
+    m.break_beam(e);
+    m.set_external_forces(-2.0 * m.loads());  // the contact must open: one switch after the only solve
+    const MechanicsSummary s = m.solve();
+    CHECK(s.info == Eigen::Success);
+    CHECK_FALSE(s.contact_converged);
+    CHECK_FALSE(s.is_converged());
+    CHECK_THAT(s.message, Catch::Contains("max_contact_iterations"));
+  }
 }
 
 TEST_CASE("Fifty breaks with factor downdates agree with PCG on the same broken lattice", "[lattice2d]") {
@@ -297,6 +311,18 @@ TEST_CASE("A particle or cluster that loses its anchoring is frozen rigidly, not
   CHECK(m.displacement().allFinite());
   for (int e : ring) CHECK(m.beam_forces()[static_cast<std::size_t>(e)].force_on_i.norm() == 0.0);
 
+  SECTION("a fixed boundary particle with no intact beam left: its free rotation would be singular") {
+    int b = 0;
+    while (l.boundary[static_cast<std::size_t>(b)] != BoundaryTag::outer) ++b;
+    const int before = m.n_detached_particles();
+    for (int e = 0; e < l.n_beams(); ++e)
+      if (l.beams[static_cast<std::size_t>(e)][0] == b || l.beams[static_cast<std::size_t>(e)][1] == b) m.break_beam(e);
+    CHECK(m.detached_particles()[static_cast<std::size_t>(b)]);
+    CHECK(m.n_detached_particles() == before + 1);
+    CHECK(m.held_dofs()[static_cast<std::size_t>(3 * b + 2)]);
+    REQUIRE(m.solve().is_converged());
+    CHECK(m.displacement().allFinite());
+  }
   SECTION("a cluster: the particle's neighbours with it, cut off by breaking the beams around them") {
     std::vector<char> in(static_cast<std::size_t>(l.n_particles()), 0);
     int q = -1;  // a neighbour of p
