@@ -51,6 +51,7 @@ struct BoundaryConditions {
   /// outward). Over E; a deviation from p0, so any finite value. Annulus only (else must be 0).
   double inner_pressure = 0.0;
   /// Normal pressure on the outer boundary; positive pushes into the solid (inward). Any finite value.
+  /// On a fixed boundary a pressure only adds to the reactions (loads at held DOFs do nothing).
   double outer_pressure = 0.0;
   /// Hold x, y of every boundary particle (inner and outer) at u = boundary_strain * x (homogeneous
   /// strain, for calibration and patch tests); rotations stay free. Needs both supports free.
@@ -68,6 +69,7 @@ struct BoundaryConditions {
 struct MechanicsOptions {
   /// Linear solver (spd_solver.hpp). Default: CHOLMOD with low-rank modifications.
   SpdSolverKind solver = SpdSolverKind::cholmod;
+  /// Options of that solver (ordering, refactorisation triggers, CG tolerance); validated with these.
   SpdSolverOptions solver_options;
   /// Cap on the contact active-set iterations of one solve() (Eqs. 8-10). Allowed: >= 1.
   int max_contact_iterations = 50;

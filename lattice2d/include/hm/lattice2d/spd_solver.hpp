@@ -71,6 +71,8 @@ struct SpdSolverOptions {
   bool reuse_forward_solve = true;
 
   // --- PcgSolver ---------------------------------------------------------------------------------
+  /// Preconditioner of PcgSolver. Our choice: incomplete Cholesky (2.4x fewer iterations than Jacobi
+  /// at N = 2000, see docs/lattice.md).
   PcgPreconditioner preconditioner = PcgPreconditioner::incomplete_cholesky;
   /// Relative residual ||A x - b|| / ||b|| at which CG stops (Eigen's tolerance). Allowed: (0, 1).
   double cg_tolerance = 1e-10;
