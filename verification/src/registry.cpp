@@ -7,6 +7,8 @@ const std::vector<Benchmark>& all_benchmarks() {
     std::vector<Benchmark> all;
     add_analytic_benchmarks(all);
     add_fdm1d_benchmarks(all);
+    add_lattice2d_elastic_benchmarks(all);
+    add_lattice2d_fracture_benchmarks(all);
     return all;
   }();
   return registry;
