@@ -284,6 +284,27 @@ void BeamMechanics::setup_system() {
       }
     }
   }
+  // The coupling's normal springs (Eq. 20): k n n^T on the x, y blocks [[1, -1], [-1, 1]]. They lie
+  // inside the beam's pattern, so the pattern is that of the dry lattice.
+  for (int e = 0; e < springs_.size(); ++e) {
+    if (springs_[e] == 0.0) continue;
+    const auto d = beam_dofs(lattice_, e);
+    const Eigen::Vector2d n = lattice_.direction.col(e);
+    Eigen::Matrix<double, 4, 1> g;  // (x_i, y_i, x_j, y_j) -> elongation
+    g << -n.x(), -n.y(), n.x(), n.y();
+    const std::array<int, 4> t = {d[0], d[1], d[3], d[4]};
+    double elong_h = 0.0;
+    for (int a = 0; a < 4; ++a) elong_h += g[a] * held_value_[t[static_cast<std::size_t>(a)]];
+    for (int a = 0; a < 4; ++a) {
+      held_term_[t[static_cast<std::size_t>(a)]] += springs_[e] * g[a] * elong_h;
+      const int ra = free_index_[static_cast<std::size_t>(t[static_cast<std::size_t>(a)])];
+      if (ra < 0) continue;
+      for (int b = 0; b < 4; ++b) {
+        const int rb = free_index_[static_cast<std::size_t>(t[static_cast<std::size_t>(b)])];
+        if (rb >= 0) triplets.emplace_back(ra, rb, springs_[e] * g[a] * g[b]);
+      }
+    }
+  }
   const int n_free = static_cast<int>(free_dofs_.size());
   SpdSolver::Matrix A(n_free, n_free);
   A.setFromTriplets(triplets.begin(), triplets.end());
@@ -410,6 +431,18 @@ void BeamMechanics::check_detachment(int i, int j) {
   if (changed) setup_system();
 }
 
+void BeamMechanics::set_normal_springs(const Eigen::VectorXd& stiffness) {
+  if (stiffness.size() != 0 && stiffness.size() != lattice_.n_beams())
+    throw hm::InputError("normal_springs: size = " + std::to_string(stiffness.size()) +
+                         ", allowed: 0 or n_beams = " + std::to_string(lattice_.n_beams()));
+  for (Eigen::Index e = 0; e < stiffness.size(); ++e)
+    if (!(std::isfinite(stiffness[e]) && stiffness[e] >= 0.0))
+      throw hm::InputError("normal_springs[" + std::to_string(e) + "] = " + hm::analytic::format_value(stiffness[e]) +
+                           ", allowed: finite, >= 0");
+  springs_ = stiffness;
+  setup_system();
+}
+
 void BeamMechanics::set_external_forces(const Eigen::VectorXd& forces) {
   assert(forces.size() == 3 * lattice_.n_particles() && "set_external_forces: 3 entries per particle");
   extra_loads_ = forces;
@@ -493,6 +526,17 @@ Eigen::VectorXd BeamMechanics::reactions() const {
     const auto d = beam_dofs(lattice_, e);
     const Eigen::Matrix<double, 6, 1> f = internal_force(lattice_, parameters_, s, e, raw_);
     for (int a = 0; a < 6; ++a) r[d[static_cast<std::size_t>(a)]] += f[a];
+  }
+  for (int e = 0; e < springs_.size(); ++e) {
+    if (springs_[e] == 0.0) continue;
+    const auto [i, j] = lattice_.beams[static_cast<std::size_t>(e)];
+    const Eigen::Vector2d n = lattice_.direction.col(e);
+    const Eigen::Vector2d du(raw_[dof_index(j, 0)] - raw_[dof_index(i, 0)], raw_[dof_index(j, 1)] - raw_[dof_index(i, 1)]);
+    const Eigen::Vector2d f = springs_[e] * du.dot(n) * n;  // K u for the spring: -f on i, +f on j
+    r[dof_index(i, 0)] -= f.x();
+    r[dof_index(i, 1)] -= f.y();
+    r[dof_index(j, 0)] += f.x();
+    r[dof_index(j, 1)] += f.y();
   }
   return r;
 }

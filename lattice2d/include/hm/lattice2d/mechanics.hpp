@@ -152,6 +152,14 @@ class BeamMechanics {
   /// Additional nodal forces (3 n_particles; e.g. pore-pressure forces, crack-face pressure), added
   /// to the boundary pressures. Components at held degrees of freedom are ignored.
   void set_external_forces(const Eigen::VectorXd& forces);
+  /// Extra translational normal springs, one stiffness per beam (size n_beams, each >= 0 and finite):
+  /// beam e adds k_e n n^T (u_j - u_i) between its particles' x, y, whatever the beam's state. Used by
+  /// the undrained split of the coupling (Eq. 20, coupling.hpp); empty or all zero: none. Part of the
+  /// matrix (re-assembled and refactorised once here), of reactions() and of the equilibrium residual;
+  /// not part of beam_forces() (the springs are a numerical device, not a bond). Throws hm::InputError.
+  void set_normal_springs(const Eigen::VectorXd& stiffness);
+  /// The springs of set_normal_springs (empty if none).
+  const Eigen::VectorXd& normal_springs() const { return springs_; }
 
   /// Displacements (3 n_particles, dof = 3 i + component) of the last solve (0 before).
   const Eigen::VectorXd& displacement() const { return displacement_; }
@@ -199,6 +207,7 @@ class BeamMechanics {
   Eigen::VectorXd raw_;          // last solution incl. held values, before the gauge shift
   Eigen::VectorXd displacement_;
   std::vector<int> broken_;      // beams not intact
+  Eigen::VectorXd springs_;      // set_normal_springs, per beam (empty: none)
   std::unique_ptr<SpdSolver> solver_;
 };
 
