@@ -1,0 +1,267 @@
+#include "hm/lattice2d/fracture.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "hm/analytic/input_error.hpp"
+
+namespace hm::lattice2d {
+
+namespace {
+
+std::string num(double x) {
+  std::ostringstream s;
+  s.precision(10);
+  s << x;
+  return s.str();
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+BeamStress scaled(BeamStress s, double scale) {
+  s.stress *= scale;
+  s.sigma_1 *= scale;
+  s.sigma_3 *= scale;
+  return s;
+}
+
+void check_beam_index(const Lattice& lattice, int beam, const std::string& field) {
+  if (beam < 0 || beam >= lattice.n_beams())
+    throw hm::InputError(field + " = " + std::to_string(beam) + ", allowed: 0 <= beam < " +
+                         std::to_string(lattice.n_beams()));
+}
+
+// Sign of the cross product (b - a) x (c - a): which side of line a-b the point c lies on.
+double side(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
+  const Eigen::Vector2d u = b - a, v = c - a;
+  return u.x() * v.y() - u.y() * v.x();
+}
+
+}  // namespace
+
+// --- options -----------------------------------------------------------------------------------------
+
+void BreakLoopOptions::validate() const {
+  try {
+    crack_tip.validate();
+  } catch (const hm::InputError& e) {
+    throw hm::InputError(std::string("break_loop.crack_tip.") + e.what());
+  }
+  if (max_breaks < 1) throw hm::InputError("break_loop.max_breaks = " + std::to_string(max_breaks) + ", allowed: >= 1");
+}
+
+void LoadSteppingOptions::validate() const {
+  const std::string p = "load_stepping.";
+  if (!(std::isfinite(initial_load) && initial_load >= 0.0))
+    throw hm::InputError(p + "initial_load = " + num(initial_load) + ", allowed: >= 0, finite");
+  if (!(std::isfinite(load_increment) && load_increment > 0.0))
+    throw hm::InputError(p + "load_increment = " + num(load_increment) + ", allowed: > 0, finite");
+  if (!(std::isfinite(max_load) && max_load >= initial_load))
+    throw hm::InputError(p + "max_load = " + num(max_load) + ", allowed: >= initial_load (" + num(initial_load) +
+                         "), finite");
+  if (max_steps < 1) throw hm::InputError(p + "max_steps = " + std::to_string(max_steps) + ", allowed: >= 1");
+  if (max_breaks < 1) throw hm::InputError(p + "max_breaks = " + std::to_string(max_breaks) + ", allowed: >= 1");
+  try {
+    break_loop.validate();
+  } catch (const hm::InputError& e) {
+    throw hm::InputError(p + e.what());
+  }
+}
+
+std::string to_string(BreakLoopStatus status) {
+  switch (status) {
+    case BreakLoopStatus::stable: return "stable";
+    case BreakLoopStatus::break_cap: return "break_cap";
+    case BreakLoopStatus::solve_failed: return "solve_failed";
+  }
+  return "?";
+}
+
+std::string to_string(LoadingStatus status) {
+  switch (status) {
+    case LoadingStatus::reached_max_load: return "reached_max_load";
+    case LoadingStatus::stopped: return "stopped";
+    case LoadingStatus::step_cap: return "step_cap";
+    case LoadingStatus::break_cap: return "break_cap";
+    case LoadingStatus::solve_failed: return "solve_failed";
+  }
+  return "?";
+}
+
+// --- break loop --------------------------------------------------------------------------------------
+
+BeamStress current_beam_stress(const BeamMechanics& mechanics, const DualGraph& dual, const CrackTipOptions& crack_tip,
+                               double stress_scale) {
+  const Lattice& lattice = mechanics.lattice();
+  assert(dual.particle_area.size() == lattice.n_particles() && "dual graph of another lattice");
+  const BeamForces forces = compute_beam_forces(lattice, mechanics.parameters(), mechanics.displacement(), mechanics.states());
+  BeamStress stress = compute_beam_stress(lattice, compute_particle_stress(lattice, dual, forces), mechanics.states(), crack_tip);
+  return stress_scale == 1.0 ? stress : scaled(std::move(stress), stress_scale);
+}
+
+BreakLoopSummary break_until_stable(BeamMechanics& mechanics, const DualGraph& dual, const BeamStrengths& strengths,
+                                    const BreakLoopOptions& options, double load, std::vector<BreakEvent>& log,
+                                    double stress_scale) {
+  const auto start = std::chrono::steady_clock::now();
+  options.validate();
+  if (!(std::isfinite(stress_scale) && stress_scale >= 0.0))
+    throw hm::InputError("stress_scale = " + num(stress_scale) + ", allowed: >= 0, finite");
+  if (strengths.n_beams() != mechanics.lattice().n_beams() || strengths.compressive.size() != strengths.tensile.size())
+    throw hm::InputError("strengths: " + std::to_string(strengths.n_beams()) + " beams, allowed: one per beam (" +
+                         std::to_string(mechanics.lattice().n_beams()) + ")");
+
+  BreakLoopSummary summary;
+  while (true) {
+    const MechanicsSummary solved = mechanics.solve();
+    ++summary.n_solves;
+    summary.n_contact_iterations += solved.contact_iterations;
+    if (!solved.is_converged()) {
+      summary.status = BreakLoopStatus::solve_failed;
+      summary.message = "mechanical solve " + std::to_string(summary.n_solves) + " after " +
+                        std::to_string(summary.n_breaks) + " breaks: " + solved.message;
+      break;
+    }
+    const BeamStress reference = current_beam_stress(mechanics, dual, options.crack_tip, 1.0);
+    summary.max_reference_ratio = std::max(0.0, select_beam_to_break(reference, strengths, mechanics.states()).max_ratio);
+    const BeamStress judged = stress_scale == 1.0 ? reference : scaled(reference, stress_scale);
+    const BreakCandidate candidate = select_beam_to_break(judged, strengths, mechanics.states());
+    summary.max_ratio = std::max(0.0, candidate.max_ratio);
+    if (!candidate.found()) break;  // stable
+    if (summary.n_breaks >= options.max_breaks) {
+      summary.status = BreakLoopStatus::break_cap;
+      summary.message = "break cap reached (break_loop.max_breaks = " + std::to_string(options.max_breaks) +
+                        "); beams still fail at load " + num(load);
+      break;
+    }
+    log.push_back(make_break_event(mechanics.lattice(), judged, candidate, load, static_cast<int>(log.size())));
+    mechanics.break_beam(candidate.beam);
+    ++summary.n_breaks;
+  }
+  summary.seconds = seconds_since(start);
+  return summary;
+}
+
+// --- load stepping -----------------------------------------------------------------------------------
+
+LoadingResult run_load_stepping(BeamMechanics& mechanics, const DualGraph& dual, const BeamStrengths& strengths,
+                                const LoadSteppingOptions& options, const LoadStepObserver& observer) {
+  const auto start = std::chrono::steady_clock::now();
+  options.validate();
+  LoadingResult result;
+  const double inf = std::numeric_limits<double>::infinity();
+  double load = options.initial_load;
+  double reference_ratio = -1.0;  // unknown until the first solve
+  for (int step = 0;; ++step) {
+    if (step >= options.max_steps) {
+      result.status = LoadingStatus::step_cap;
+      result.message = "step cap reached (load_stepping.max_steps = " + std::to_string(options.max_steps) +
+                       ") at load " + num(load);
+      break;
+    }
+    LoadStep record;
+    record.step = step;
+    record.load = load;
+    // With an unchanged broken set the reference solution is unchanged: a step whose load is below the
+    // next break's needs no solve (homogeneity, file comment of fracture.hpp).
+    const bool due = reference_ratio < 0.0 || load * reference_ratio >= 1.0 || !options.snap_to_breaks;
+    if (due) {
+      BreakLoopOptions loop = options.break_loop;
+      loop.max_breaks = std::min(loop.max_breaks, options.max_breaks - static_cast<int>(result.breaks.size()));
+      const BreakLoopSummary s = break_until_stable(mechanics, dual, strengths, loop, load, result.breaks, load);
+      result.n_solves += s.n_solves;
+      record.n_breaks = s.n_breaks;
+      record.status = s.status;
+      reference_ratio = s.max_reference_ratio;
+      if (!s.is_stable()) result.message = s.message;
+    }
+    record.n_breaks_total = static_cast<int>(result.breaks.size());
+    record.max_ratio = load * reference_ratio;
+    record.next_break_load = reference_ratio > 0.0 ? 1.0 / reference_ratio : inf;
+    result.steps.push_back(record);
+    const bool keep_going = !observer || observer(record, mechanics);
+    if (record.status == BreakLoopStatus::solve_failed) {
+      result.status = LoadingStatus::solve_failed;
+      break;
+    }
+    if (record.status == BreakLoopStatus::break_cap || record.n_breaks_total >= options.max_breaks) {
+      result.status = LoadingStatus::break_cap;
+      if (result.message.empty())
+        result.message = "break cap reached (load_stepping.max_breaks = " + std::to_string(options.max_breaks) + ")";
+      break;
+    }
+    if (!keep_going) {
+      result.status = LoadingStatus::stopped;
+      result.message = "stopped by the observer at load " + num(load);
+      break;
+    }
+    if (load >= options.max_load) {
+      result.status = LoadingStatus::reached_max_load;
+      break;
+    }
+    double next = std::min(load + options.load_increment, options.max_load);
+    if (options.snap_to_breaks && reference_ratio > 0.0) {
+      // 1 + 1e-9: the snapped beam's judged ratio lands at >= 1 although 1/r * r may round below 1.
+      const double at_break = (1.0 / reference_ratio) * (1.0 + 1e-9);
+      if (at_break <= next) next = std::max(at_break, load);
+    }
+    load = next;
+  }
+  result.seconds = seconds_since(start);
+  return result;
+}
+
+// --- crack faces -------------------------------------------------------------------------------------
+
+std::vector<int> beams_crossing_segment(const Lattice& lattice, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  std::vector<int> out;
+  for (int e = 0; e < lattice.n_beams(); ++e) {
+    const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
+    const Eigen::Vector2d p = lattice.points.col(i), q = lattice.points.col(j);
+    const double s1 = side(a, b, p), s2 = side(a, b, q), s3 = side(p, q, a), s4 = side(p, q, b);
+    if (((s1 > 0 && s2 < 0) || (s1 < 0 && s2 > 0)) && ((s3 > 0 && s4 < 0) || (s3 < 0 && s4 > 0))) out.push_back(e);
+  }
+  return out;
+}
+
+Eigen::VectorXd crack_face_forces(const Lattice& lattice, const DualGraph& dual, const std::vector<int>& crack_beams,
+                                  double pressure) {
+  if (!std::isfinite(pressure)) throw hm::InputError("pressure = " + num(pressure) + ", allowed: finite");
+  assert(dual.dual_length.size() == lattice.n_beams() && "dual graph of another lattice");
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(3 * lattice.n_particles());
+  for (std::size_t k = 0; k < crack_beams.size(); ++k) {
+    const int e = crack_beams[k];
+    check_beam_index(lattice, e, "crack_beams[" + std::to_string(k) + "]");
+    const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
+    const Eigen::Vector2d push = pressure * dual.dual_length[e] * lattice.direction.col(e);
+    f.segment<2>(dof_index(i, 0)) -= push;
+    f.segment<2>(dof_index(j, 0)) += push;
+  }
+  return f;
+}
+
+std::vector<CrackOpening> crack_opening(const Lattice& lattice, const Eigen::VectorXd& displacement,
+                                        const std::vector<int>& beams) {
+  assert(displacement.size() == 3 * lattice.n_particles() && "3 entries per particle");
+  std::vector<CrackOpening> out;
+  out.reserve(beams.size());
+  for (std::size_t k = 0; k < beams.size(); ++k) {
+    const int e = beams[k];
+    check_beam_index(lattice, e, "beams[" + std::to_string(k) + "]");
+    const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
+    CrackOpening o;
+    o.beam = e;
+    o.midpoint = 0.5 * (lattice.points.col(i) + lattice.points.col(j));
+    o.jump = displacement.segment<2>(dof_index(j, 0)) - displacement.segment<2>(dof_index(i, 0));
+    o.normal_opening = o.jump.dot(lattice.direction.col(e));
+    out.push_back(o);
+  }
+  return out;
+}
+
+}  // namespace hm::lattice2d
