@@ -1,0 +1,179 @@
+#pragma once
+/// \file
+/// The two-way coupled lattice model of Section 2.3 (Fig. 5): beam mechanics (mechanics.hpp) and the
+/// dual-graph flow network (flow_network.hpp) advanced together in time by the drained or undrained
+/// operator split, iterated inside each time step until the pressure and the displacement both stop
+/// changing. Dimensionless. Choices the paper leaves open: docs/coupling.md.
+#include <functional>
+#include <limits>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "hm/lattice2d/beam_stiffness.hpp"
+#include "hm/lattice2d/coupling.hpp"
+#include "hm/lattice2d/dual_graph.hpp"
+#include "hm/lattice2d/flow_network.hpp"
+#include "hm/lattice2d/lattice.hpp"
+#include "hm/lattice2d/mechanics.hpp"
+
+namespace hm::lattice2d {
+
+/// The two splits of Section 2.3.
+enum class CouplingSplit {
+  undrained,  ///< the mechanical step sees the undrained pressure predictor (Eq. 20, Psi > 0 allowed)
+  drained,    ///< the mechanical step sees the last pressure only (Psi = 0)
+};
+/// "undrained" or "drained".
+std::string to_string(CouplingSplit split);
+/// Inverse of to_string; throws hm::InputError "coupling.split = 'x', allowed: undrained, drained".
+CouplingSplit coupling_split_from_string(std::string_view name);
+
+/// Options of the coupling iteration (Fig. 5). Every default is set here.
+struct CouplingOptions {
+  /// The split. Default undrained (the paper's primary scheme).
+  CouplingSplit split = CouplingSplit::undrained;
+  /// Psi, feedback of the undrained split (Eq. 20). Our choice 1.3, the paper's near-optimum (Fig. 8).
+  /// Allowed: >= 0, finite; must be 0 for the drained split.
+  double psi = 1.3;
+  /// xi, scaling of the pressure force (Eq. 17). Our choice 1 (divergence theorem; docs/coupling.md).
+  /// Allowed: > 0, finite.
+  double xi = 1.0;
+  /// Iterations stop when max|p^k - p^{k-1}| <= pressure_tolerance * max|p^k| ... Our choice 1e-6.
+  /// Allowed: 0 < pressure_tolerance < 1.
+  double pressure_tolerance = 1e-6;
+  /// ... and max|u^k - u^{k-1}| <= displacement_tolerance * max|u^k| (x, y components). Our choice 1e-6.
+  /// Allowed: 0 < displacement_tolerance < 1.
+  double displacement_tolerance = 1e-6;
+  /// Cap on the mechanics -> flow iterations of one step. Allowed: >= 1.
+  int max_iterations = 100;
+  /// Accept a step that hit max_iterations (the paper's "one iteration of both systems" with
+  /// max_iterations = 1). Default false: such a step is a numerical failure (status not_converged).
+  bool accept_unconverged = false;
+  /// Fracture inside the coupling loop (Fig. 5's grey boxes). Allowed: false (the next issue).
+  bool fracture = false;
+  /// The borehole wall carries the full borehole pressure (CouplingParameters::borehole_wall_traction).
+  bool borehole_wall_traction = true;
+
+  /// Throws hm::InputError "coupling.field = value, allowed: rule".
+  void validate() const;
+};
+
+/// Time stepping of CoupledModel::run. Every default is set here.
+struct TimeStepping {
+  /// First time step. Allowed: > 0, finite, <= t_end.
+  double dt_initial = 1e-6;
+  /// Factor between consecutive steps (1 = fixed dt). Allowed: >= 1, finite.
+  double dt_growth = 1.0;
+  /// Largest time step. Allowed: >= dt_initial, finite.
+  double dt_max = std::numeric_limits<double>::max();
+  /// End time t*. Allowed: > 0, finite.
+  double t_end = 1e-4;
+  /// Times at which run() calls its observer besides t = 0 (steps are shortened to land on them).
+  /// Allowed: strictly increasing, in (0, t_end]; t_end is always an output.
+  std::vector<double> output_times;
+
+  /// Throws hm::InputError "numerics.field = value, allowed: rule".
+  void validate() const;
+};
+
+/// How a step or a run ended.
+enum class CoupledStatus {
+  converged,       ///< both residuals below tolerance
+  accepted_unconverged,  ///< max_iterations hit and accept_unconverged set
+  not_converged,   ///< max_iterations hit: the step was not taken
+  solver_failure,  ///< the mechanics or the flow solve failed: the step was not taken
+};
+std::string to_string(CoupledStatus status);
+
+/// What one coupled time step did (Ceres' Summary in small).
+struct CoupledStepSummary {
+  CoupledStatus status = CoupledStatus::converged;
+  double time = 0.0;  ///< t^{n+1}
+  double dt = 0.0;
+  int iterations = 0;                  ///< mechanics -> flow passes
+  double pressure_residual = 0.0;      ///< max|p^k - p^{k-1}| / max|p^k| at the last pass
+  double displacement_residual = 0.0;  ///< max|u^k - u^{k-1}| / max|u^k| at the last pass
+  /// The pressure residual after each pass (for the Psi study, Fig. 8).
+  std::vector<double> pressure_history;
+  FlowStepSummary flow;                ///< the last flow solve (volumes of this step, balance)
+  int n_broken = 0;
+  double seconds = 0.0;
+  std::string message;  ///< empty when converged
+  bool is_ok() const { return status == CoupledStatus::converged || status == CoupledStatus::accepted_unconverged; }
+};
+
+/// What run() did.
+struct CoupledRunSummary {
+  CoupledStatus status = CoupledStatus::converged;  ///< of the last step
+  int n_steps = 0;
+  int total_iterations = 0;
+  double time = 0.0;
+  double seconds = 0.0;
+  double max_balance_error = 0.0;
+  std::string message;
+  bool is_ok() const { return status == CoupledStatus::converged || status == CoupledStatus::accepted_unconverged; }
+};
+
+/// The coupled lattice (Fig. 5): per time step
+///   1. mechanics with the current pressure guess: forces of Eq. 17 plus, for the undrained split,
+///      the springs of Eq. 20 relaxed at the previous iterate;
+///   2. the deformed geometry (triangle areas, conductances) from the new displacement;
+///   3. the flow step of Eqs. 15-16 with b (V^{n+1} - V^n);
+///   4. repeat until both residuals are below tolerance (or max_iterations).
+/// At convergence the spring term vanishes, so every Psi converges to the drained split's fixed point.
+/// Limits: geometrically linear mechanics, fracture off (CouplingOptions::fracture), no re-meshing.
+class CoupledModel {
+ public:
+  /// Validates everything (hm::InputError), builds mechanics and flow. b and E/M are the flow's.
+  CoupledModel(Lattice lattice, const BeamParameters& beams, const BoundaryConditions& conditions,
+               const MechanicsOptions& mechanics_options, const FlowParameters& flow, const CouplingOptions& options);
+  ~CoupledModel();
+
+  /// One coupled step of length dt > 0. On failure (status not_converged or solver_failure) the state
+  /// is left at t^n; the summary says why.
+  CoupledStepSummary step(double dt);
+
+  /// Observer of run(): called after every accepted step, with `is_output` true at t = 0, at each
+  /// output time and at t_end.
+  using Observer = std::function<void(const CoupledModel&, const CoupledStepSummary&, bool is_output)>;
+  /// Initial state (observer at t = 0), then while time remains, a step. Stops at the first failed step.
+  CoupledRunSummary run(const TimeStepping& stepping, const Observer& observer = {});
+
+  double time() const { return flow_->time(); }
+  const Lattice& lattice() const { return mechanics_->lattice(); }
+  /// Displacement u^n (3 n_particles) of the last accepted step.
+  const Eigen::VectorXd& displacement() const { return displacement_; }
+  /// Pressures p^n (triangles, then the borehole node).
+  const Eigen::VectorXd& pressure() const { return flow_->pressure(); }
+  /// Dual graph of the deformed configuration at t^n (triangle areas and centroids for averages).
+  const DualGraph& current_dual() const { return current_dual_; }
+  /// Dual graph of the undeformed lattice (the coupling terms' geometry).
+  const DualGraph& reference_dual() const { return reference_dual_; }
+  const FlowNetwork& flow() const { return *flow_; }
+  const BeamMechanics& mechanics() const { return *mechanics_; }
+  const CouplingParameters& coupling_parameters() const { return coupling_; }
+  const CouplingOptions& options() const { return options_; }
+  /// Per-beam spring stiffness of Eq. 20 (zero for the drained split).
+  const Eigen::VectorXd& spring_stiffness() const { return springs_; }
+  int n_broken() const;
+
+ private:
+  Eigen::Matrix2Xd positions(const Eigen::VectorXd& u) const;
+  Eigen::VectorXd unknown_volumes(const DualGraph& dual) const;  // V_s, then V_h
+
+  CouplingOptions options_;
+  CouplingParameters coupling_;
+  std::unique_ptr<BeamMechanics> mechanics_;
+  std::unique_ptr<FlowNetwork> flow_;
+  DualGraph reference_dual_;
+  DualGraph current_dual_;
+  Eigen::VectorXd springs_;
+  Eigen::VectorXd displacement_;
+  Eigen::VectorXd volume_;  // V^n per unknown
+};
+
+}  // namespace hm::lattice2d

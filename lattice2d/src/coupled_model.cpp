@@ -1,0 +1,244 @@
+#include "hm/lattice2d/coupled_model.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <utility>
+
+#include "hm/analytic/input_error.hpp"
+#include "hm/analytic/validation.hpp"
+
+namespace hm::lattice2d {
+
+std::string to_string(CouplingSplit split) { return split == CouplingSplit::undrained ? "undrained" : "drained"; }
+
+CouplingSplit coupling_split_from_string(std::string_view name) {
+  if (name == "undrained") return CouplingSplit::undrained;
+  if (name == "drained") return CouplingSplit::drained;
+  throw hm::InputError("coupling.split = '" + std::string(name) + "', allowed: undrained, drained");
+}
+
+std::string to_string(CoupledStatus status) {
+  switch (status) {
+    case CoupledStatus::converged: return "converged";
+    case CoupledStatus::accepted_unconverged: return "accepted unconverged";
+    case CoupledStatus::not_converged: return "not converged";
+    case CoupledStatus::solver_failure: return "solver failure";
+  }
+  return "?";
+}
+
+void CouplingOptions::validate() const {
+  using namespace hm::analytic;
+  require_finite(psi, "coupling.psi");
+  require_non_negative(psi, "coupling.psi");
+  if (split == CouplingSplit::drained && psi != 0.0)
+    throw hm::InputError("coupling.psi = " + format_value(psi) + ", allowed: 0 for split = drained");
+  require_finite(xi, "coupling.xi");
+  require_positive(xi, "coupling.xi");
+  require_open(pressure_tolerance, "coupling.pressure_tolerance", 0.0, 1.0);
+  require_open(displacement_tolerance, "coupling.displacement_tolerance", 0.0, 1.0);
+  require_at_least(max_iterations, "coupling.max_iterations", 1);
+  if (fracture) throw hm::InputError("fracture.enabled = true, allowed: false (fracture in the coupled model comes later)");
+}
+
+void TimeStepping::validate() const {
+  using namespace hm::analytic;
+  require_finite(t_end, "numerics.t_end");
+  require_positive(t_end, "numerics.t_end");
+  require_finite(dt_initial, "numerics.dt_initial");
+  require_positive(dt_initial, "numerics.dt_initial");
+  if (dt_initial > t_end)
+    throw hm::InputError("numerics.dt_initial = " + format_value(dt_initial) + ", allowed: <= t_end = " + format_value(t_end));
+  require_finite(dt_growth, "numerics.dt_growth");
+  if (!(dt_growth >= 1.0))
+    throw hm::InputError("numerics.dt_growth = " + format_value(dt_growth) + ", allowed: >= 1");
+  if (!(dt_max >= dt_initial))
+    throw hm::InputError("numerics.dt_max = " + format_value(dt_max) + ", allowed: >= dt_initial = " + format_value(dt_initial));
+  for (std::size_t k = 0; k < output_times.size(); ++k) {
+    const double t = output_times[k];
+    if (!(t > 0.0 && t <= t_end))
+      throw hm::InputError("output.times[" + std::to_string(k) + "] = " + format_value(t) + ", allowed: 0 < t <= t_end = " +
+                           format_value(t_end));
+    if (k > 0 && !(t > output_times[k - 1]))
+      throw hm::InputError("output.times[" + std::to_string(k) + "] = " + format_value(t) + ", allowed: strictly increasing");
+  }
+}
+
+namespace {
+
+// max|a - b| / max|a| (0 when both vanish), over entries selected by `stride` pattern (all for 0).
+double relative_change(const Eigen::VectorXd& a, const Eigen::VectorXd& b, bool translations_only) {
+  double num = 0.0, den = 0.0;
+  for (Eigen::Index k = 0; k < a.size(); ++k) {
+    if (translations_only && k % 3 == 2) continue;
+    num = std::max(num, std::abs(a[k] - b[k]));
+    den = std::max(den, std::abs(a[k]));
+  }
+  return den > 0.0 ? num / den : (num > 0.0 ? 1.0 : 0.0);
+}
+
+}  // namespace
+
+CoupledModel::CoupledModel(Lattice lattice, const BeamParameters& beams, const BoundaryConditions& conditions,
+                           const MechanicsOptions& mechanics_options, const FlowParameters& flow,
+                           const CouplingOptions& options)
+    : options_(options) {
+  options_.validate();
+  flow.validate();
+  coupling_.b = flow.b;
+  coupling_.xi = options_.xi;
+  coupling_.psi = options_.split == CouplingSplit::drained ? 0.0 : options_.psi;
+  coupling_.E_over_M = flow.E_over_M;
+  coupling_.borehole_wall_traction = options_.borehole_wall_traction;
+  coupling_.validate();
+  reference_dual_ = build_dual_graph(lattice);
+  current_dual_ = reference_dual_;
+  flow_ = std::make_unique<FlowNetwork>(lattice, reference_dual_, flow);
+  mechanics_ = std::make_unique<BeamMechanics>(std::move(lattice), beams, conditions, mechanics_options);
+  springs_ = undrained_spring_stiffness(mechanics_->lattice(), reference_dual_, coupling_);
+  // The springs go into the matrix once (one refactorisation); Psi = 0 leaves the dry matrix as it is.
+  if (coupling_.psi > 0.0) mechanics_->set_normal_springs(springs_);
+  displacement_ = Eigen::VectorXd::Zero(3 * mechanics_->lattice().n_particles());
+  volume_ = unknown_volumes(reference_dual_);
+}
+
+CoupledModel::~CoupledModel() = default;
+
+int CoupledModel::n_broken() const {
+  return static_cast<int>(std::count_if(mechanics_->states().begin(), mechanics_->states().end(),
+                                        [](BeamState s) { return s != BeamState::intact; }));
+}
+
+Eigen::Matrix2Xd CoupledModel::positions(const Eigen::VectorXd& u) const {
+  Eigen::Matrix2Xd x = lattice().points;
+  for (Eigen::Index i = 0; i < x.cols(); ++i) {
+    x(0, i) += u[3 * i];
+    x(1, i) += u[3 * i + 1];
+  }
+  return x;
+}
+
+Eigen::VectorXd CoupledModel::unknown_volumes(const DualGraph& dual) const {
+  Eigen::VectorXd v(flow_->n_unknowns());
+  v.head(dual.triangle_area.size()) = dual.triangle_area;
+  if (flow_->has_borehole()) v[flow_->borehole_index()] = flow_->borehole_volume();
+  return v;
+}
+
+CoupledStepSummary CoupledModel::step(double dt) {
+  const auto start = std::chrono::steady_clock::now();
+  if (!(dt > 0.0 && std::isfinite(dt)))
+    throw hm::InputError("dt = " + hm::analytic::format_value(dt) + ", allowed: > 0, finite");
+  CoupledStepSummary summary;
+  summary.dt = dt;
+  summary.time = time() + dt;
+  const Lattice& l = lattice();
+  Eigen::VectorXd p_guess = flow_->pressure();  // p^n: the drained split's frozen pressure
+  Eigen::VectorXd u_prev = displacement_;       // u^n: where the springs are relaxed at the first pass
+  DualGraph dual;
+  bool converged = false;
+  for (int k = 1; k <= options_.max_iterations; ++k) {
+    summary.iterations = k;
+    // 1. Mechanics with the current pressure guess (Eq. 17) and the undrained predictor (Eq. 20).
+    Eigen::VectorXd f = pressure_forces(l, reference_dual_, p_guess, coupling_);
+    if (coupling_.psi > 0.0) f += spring_preload(l, springs_, u_prev);
+    mechanics_->set_external_forces(f);
+    const MechanicsSummary ms = mechanics_->solve();
+    if (!ms.is_converged()) {
+      summary.status = CoupledStatus::solver_failure;
+      summary.message = "mechanics at t = " + hm::analytic::format_value(summary.time) + ", pass " +
+                        std::to_string(k) + ": " + ms.message;
+      break;
+    }
+    const Eigen::VectorXd& u = mechanics_->displacement();
+    // 2. The deformed flow geometry.
+    const Eigen::Matrix2Xd x = positions(u);
+    dual = build_dual_graph(l, x, reference_dual_.options);
+    flow_->update_geometry(dual, x);
+    // 3. The flow step with b (V^{n+1} - V^n).
+    summary.flow = flow_->solve(dt, unknown_volumes(dual) - volume_);
+    if (!summary.flow.is_ok()) {
+      summary.status = CoupledStatus::solver_failure;
+      summary.message = "flow at t = " + hm::analytic::format_value(summary.time) + ", pass " + std::to_string(k) +
+                        ": " + summary.flow.message;
+      break;
+    }
+    // 4. Residuals between passes.
+    const Eigen::VectorXd& p = flow_->trial_pressure();
+    summary.pressure_residual = relative_change(p, p_guess, false);
+    summary.displacement_residual = relative_change(u, u_prev, true);
+    summary.pressure_history.push_back(summary.pressure_residual);
+    p_guess = p;
+    u_prev = u;
+    if (summary.pressure_residual <= options_.pressure_tolerance &&
+        summary.displacement_residual <= options_.displacement_tolerance) {
+      converged = true;
+      break;
+    }
+  }
+  if (summary.status != CoupledStatus::solver_failure) {
+    if (converged) {
+      summary.status = CoupledStatus::converged;
+    } else if (options_.accept_unconverged) {
+      summary.status = CoupledStatus::accepted_unconverged;
+    } else {
+      summary.status = CoupledStatus::not_converged;
+      summary.message = "coupling at t = " + hm::analytic::format_value(summary.time) + ": not converged after " +
+                        std::to_string(options_.max_iterations) + " passes (max_iterations); pressure residual " +
+                        hm::analytic::format_value(summary.pressure_residual) + ", displacement residual " +
+                        hm::analytic::format_value(summary.displacement_residual);
+    }
+  }
+  if (summary.is_ok()) {
+    flow_->accept();
+    displacement_ = u_prev;
+    current_dual_ = std::move(dual);
+    volume_ = unknown_volumes(current_dual_);
+  } else {
+    // Back to the geometry of t^n so that a retry (e.g. with a smaller dt) starts from a clean state.
+    flow_->update_geometry(current_dual_, positions(displacement_));
+  }
+  summary.n_broken = n_broken();
+  summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return summary;
+}
+
+CoupledRunSummary CoupledModel::run(const TimeStepping& stepping, const Observer& observer) {
+  stepping.validate();
+  const auto start = std::chrono::steady_clock::now();
+  CoupledRunSummary run;
+  std::vector<double> outputs = stepping.output_times;
+  if (outputs.empty() || outputs.back() < stepping.t_end) outputs.push_back(stepping.t_end);
+  // Times closer than this to an output are snapped onto it (no sliver steps).
+  const double snap = 1e-9 * stepping.t_end;
+
+  // Initial step: the unloaded lattice at t = 0.
+  if (observer) observer(*this, CoupledStepSummary{}, true);
+  std::size_t next_output = 0;
+  double dt_nominal = stepping.dt_initial;
+  while (time() < stepping.t_end - snap) {
+    const double t_out = outputs[next_output];
+    double dt = std::min(dt_nominal, t_out - time());
+    if (t_out - (time() + dt) < snap) dt = t_out - time();
+    const CoupledStepSummary s = step(dt);
+    run.status = s.status;
+    run.total_iterations += s.iterations;
+    if (!s.is_ok()) {
+      run.message = s.message;
+      break;
+    }
+    ++run.n_steps;
+    run.max_balance_error = std::max(run.max_balance_error, s.flow.balance_error);
+    const bool is_output = std::abs(time() - t_out) <= snap;
+    if (is_output) ++next_output;
+    if (observer) observer(*this, s, is_output);
+    // Geometric growth of the nominal step; a step shortened to hit an output does not reset it.
+    if (dt >= dt_nominal * (1.0 - 1e-12)) dt_nominal = std::min(dt_nominal * stepping.dt_growth, stepping.dt_max);
+  }
+  run.time = time();
+  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return run;
+}
+
+}  // namespace hm::lattice2d

@@ -1,0 +1,182 @@
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "hm/analytic/input_error.hpp"
+#include "hm/lattice2d/coupled_model.hpp"
+
+using namespace hm::lattice2d;
+
+namespace {
+
+Lattice make_lattice(DomainShape shape, long long n, std::uint64_t seed = 1) {
+  LatticeSpec spec;
+  spec.domain = shape;
+  spec.n_particles = n;
+  spec.seed = seed;
+  return generate_lattice(spec);
+}
+
+// Section 3.1's point injection: Q = 0.1, b = 0.5, E/M of Table 1 at b = 0.5, free outer boundary.
+FlowParameters rudnicki_flow() {
+  FlowParameters flow;
+  flow.Q = 0.1;
+  flow.b = 0.5;
+  return flow;
+}
+
+CoupledModel make_model(const Lattice& lattice, CouplingOptions options, BoundarySupport outer = BoundarySupport::free) {
+  BoundaryConditions bc;
+  bc.outer = outer;
+  return CoupledModel(lattice, BeamParameters{}, bc, MechanicsOptions{}, rudnicki_flow(), options);
+}
+
+double max_abs(const Eigen::VectorXd& v) { return v.cwiseAbs().maxCoeff(); }
+
+}  // namespace
+
+TEST_CASE("Coupling options and time stepping: defaults are valid, bad values are rejected", "[lattice2d]") {
+  CouplingOptions o;
+  REQUIRE_NOTHROW(o.validate());
+  TimeStepping t;
+  REQUIRE_NOTHROW(t.validate());
+  SECTION("drained with Psi != 0") { o.split = CouplingSplit::drained; REQUIRE_THROWS_AS(o.validate(), hm::InputError); }
+  SECTION("tolerance") { o.pressure_tolerance = 0.0; REQUIRE_THROWS_AS(o.validate(), hm::InputError); }
+  SECTION("max_iterations") { o.max_iterations = 0; REQUIRE_THROWS_AS(o.validate(), hm::InputError); }
+  SECTION("fracture") { o.fracture = true; REQUIRE_THROWS_AS(o.validate(), hm::InputError); }
+  SECTION("dt_growth") { t.dt_growth = 0.5; REQUIRE_THROWS_AS(t.validate(), hm::InputError); }
+  SECTION("dt_initial > t_end") { t.dt_initial = 1.0; REQUIRE_THROWS_AS(t.validate(), hm::InputError); }
+  SECTION("output times") {
+    t.output_times = {2e-5, 1e-5};
+    REQUIRE_THROWS_AS(t.validate(), hm::InputError);
+  }
+  SECTION("split names") {
+    CHECK(coupling_split_from_string("drained") == CouplingSplit::drained);
+    REQUIRE_THROWS_AS(coupling_split_from_string("monolithic"), hm::InputError);
+  }
+}
+
+TEST_CASE("The undrained split with Psi = 0 is the drained split exactly", "[lattice2d]") {
+  const Lattice lattice = make_lattice(DomainShape::disk, 2000);
+  CouplingOptions undrained;
+  undrained.psi = 0.0;
+  CouplingOptions drained;
+  drained.split = CouplingSplit::drained;
+  drained.psi = 0.0;
+  CoupledModel a = make_model(lattice, undrained), b = make_model(lattice, drained);
+  for (int n = 0; n < 3; ++n) {
+    const CoupledStepSummary sa = a.step(1e-5), sb = b.step(1e-5);
+    REQUIRE(sa.is_ok());
+    CHECK(sa.iterations == sb.iterations);
+  }
+  CHECK(a.spring_stiffness().cwiseAbs().maxCoeff() == 0.0);
+  CHECK((a.displacement() - b.displacement()).cwiseAbs().maxCoeff() == 0.0);  // bitwise: the same arithmetic
+  CHECK((a.pressure() - b.pressure()).cwiseAbs().maxCoeff() == 0.0);
+}
+
+TEST_CASE("The iterated undrained and drained splits converge to the same solution of a time step", "[lattice2d]") {
+  const Lattice lattice = make_lattice(DomainShape::disk, 2000);
+  CouplingOptions undrained;
+  undrained.pressure_tolerance = undrained.displacement_tolerance = 1e-10;
+  CouplingOptions drained = undrained;
+  drained.split = CouplingSplit::drained;
+  drained.psi = 0.0;
+  drained.max_iterations = 400;
+  for (BoundarySupport outer : {BoundarySupport::free, BoundarySupport::fixed}) {
+    CoupledModel a = make_model(lattice, undrained, outer), b = make_model(lattice, drained, outer);
+    for (int n = 0; n < 2; ++n) {
+      const CoupledStepSummary sa = a.step(2e-5), sb = b.step(2e-5);
+      REQUIRE(sa.status == CoupledStatus::converged);
+      REQUIRE(sb.status == CoupledStatus::converged);
+      std::printf("%s boundary, step %d: iterations undrained (Psi = 1.3) %d, drained %d\n", to_string(outer).c_str(), n + 1,
+                  sa.iterations, sb.iterations);
+    }
+    // Both stop at a relative change of 1e-10 per pass; the fixed points agree to a few times that
+    // (the contraction factor of the slower, drained iteration amplifies the last change).
+    CHECK(max_abs(a.pressure() - b.pressure()) < 1e-8 * max_abs(a.pressure()));
+    CHECK(max_abs(a.displacement() - b.displacement()) < 1e-8 * max_abs(a.displacement()));
+  }
+}
+
+TEST_CASE("The fluid volume balance of every coupled step closes to 1e-8", "[lattice2d]") {
+  // injected = storage + deformation + outflow per step (FlowStepSummary); the scheme is conservative,
+  // so this is round-off of the flow solve, whatever the coupling iterate.
+  for (DomainShape shape : {DomainShape::disk, DomainShape::annulus}) {
+    const Lattice lattice = make_lattice(shape, 2000);
+    CoupledModel model = make_model(lattice, CouplingOptions{});
+    TimeStepping stepping;
+    stepping.dt_initial = 2e-6;
+    stepping.dt_growth = 1.5;
+    stepping.t_end = 1e-4;
+    double worst = 0.0;
+    const CoupledRunSummary run = model.run(stepping, [&](const CoupledModel&, const CoupledStepSummary& s, bool) {
+      worst = std::max(worst, s.flow.balance_error);
+    });
+    REQUIRE(run.is_ok());
+    CHECK(worst <= 1e-8);
+    CHECK(run.max_balance_error == worst);
+    // The totals add up as well.
+    const FlowTotals& t = model.flow().totals();
+    CHECK(std::abs(t.injected - t.storage - t.deformation - t.outflow) <= 1e-8 * t.injected);
+    CHECK(t.injected == Approx(0.1 * 1e-4).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("A coupling loop that hits its iteration cap is reported, not thrown, and leaves the state at t^n",
+          "[lattice2d]") {
+  const Lattice lattice = make_lattice(DomainShape::disk, 1000);
+  CouplingOptions options;
+  options.max_iterations = 1;
+  SECTION("a failed step") {
+    CoupledModel model = make_model(lattice, options);
+    const CoupledStepSummary s = model.step(1e-5);
+    CHECK(s.status == CoupledStatus::not_converged);
+    CHECK_FALSE(s.is_ok());
+    CHECK(s.message.find("max_iterations") != std::string::npos);
+    CHECK(model.time() == 0.0);
+    CHECK(max_abs(model.displacement()) == 0.0);
+    const CoupledRunSummary run = model.run(TimeStepping{});
+    CHECK_FALSE(run.is_ok());
+    CHECK(run.n_steps == 0);
+  }
+  SECTION("one pass accepted on request (the paper's 'one iteration of both systems')") {
+    options.accept_unconverged = true;
+    CoupledModel model = make_model(lattice, options);
+    const CoupledStepSummary s = model.step(1e-5);
+    CHECK(s.status == CoupledStatus::accepted_unconverged);
+    CHECK(model.time() == 1e-5);
+    // One pass: the mechanics saw p^n = 0, so the first step only moves the fluid; the second deforms.
+    CHECK(max_abs(model.displacement()) == 0.0);
+    CHECK(max_abs(model.pressure()) > 0.0);
+    REQUIRE(model.step(1e-5).is_ok());
+    CHECK(max_abs(model.displacement()) > 0.0);
+  }
+}
+
+TEST_CASE("run() lands on the output times, grows dt geometrically and caps it", "[lattice2d]") {
+  const Lattice lattice = make_lattice(DomainShape::disk, 1000);
+  CoupledModel model = make_model(lattice, CouplingOptions{});
+  TimeStepping stepping;
+  stepping.dt_initial = 1e-6;
+  stepping.dt_growth = 2.0;
+  stepping.dt_max = 8e-6;
+  stepping.t_end = 4e-5;
+  stepping.output_times = {5e-6, 2e-5};
+  std::vector<double> outputs, dts;
+  const CoupledRunSummary run = model.run(stepping, [&](const CoupledModel& m, const CoupledStepSummary& s, bool out) {
+    if (out) outputs.push_back(m.time());
+    if (s.dt > 0.0) dts.push_back(s.dt);
+  });
+  REQUIRE(run.is_ok());
+  REQUIRE(outputs.size() == 4);
+  CHECK(outputs[0] == 0.0);
+  CHECK(outputs[1] == Approx(5e-6).epsilon(1e-12));
+  CHECK(outputs[2] == Approx(2e-5).epsilon(1e-12));
+  CHECK(outputs[3] == Approx(4e-5).epsilon(1e-12));
+  // 1, 2, then 2 (shortened to hit 5e-6), 4, 8, 3 (to 2e-5), 8, 8, 4 (to 4e-5) in units of 1e-6.
+  CHECK(dts.front() == Approx(1e-6));
+  CHECK(*std::max_element(dts.begin(), dts.end()) <= 8e-6 * (1 + 1e-12));
+  CHECK(run.n_steps == static_cast<int>(dts.size()));
+}
