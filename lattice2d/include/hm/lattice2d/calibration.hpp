@@ -138,4 +138,16 @@ Calibration calibrate_beams(const CalibrationSpec& spec);
 /// calibrated density; E does not depend on the density, nu only weakly (docs/lattice.md).
 BeamParameters calibrated_beam_parameters();
 
+/// Plane-strain isotropic constants of a continuum.
+struct ElasticConstants {
+  double youngs_modulus = 1.0;  ///< E (over the toolkit's E scale)
+  double poisson_ratio = 0.25;  ///< nu, plane strain
+};
+
+/// The continuum the lattice with calibrated_beam_parameters() represents, as measured by the
+/// calibration (mean over seeds 1-3 at N = 1e4): E = 1.0000, nu = 0.2236 (not the target 0.25, which
+/// is not reachable; docs/lattice.md, "Calibration"). Use these, not (1, 0.25), when comparing the
+/// lattice with a continuum solution (Lame, Sneddon, first-break predictions).
+ElasticConstants calibrated_continuum();
+
 }  // namespace hm::lattice2d
