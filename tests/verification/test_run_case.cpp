@@ -1,0 +1,98 @@
+// `hmlattice run` and its case format (hm/verification/run_case.hpp), through the executable as a user
+// meets it: a bad case gives one line naming [table] key, value and rule, exit code 2, nothing written.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <string>
+
+#include "verification/run_command.hpp"
+
+using hm::test::count_lines;
+using hm::test::run_hmlattice;
+using hm::test::TempDir;
+
+namespace {
+
+// A valid small case: N = 600 disk, two steps. Tests prepend or append one bad table.
+const std::string small_case =
+    "model = \"lattice2d\"\n[physics]\nQ = 0.1\nR_i = 0\n[lattice]\nn_particles = 600\n"
+    "[numerics]\ndt_initial = 5e-6\nt_end = 1e-5\n";
+
+}  // namespace
+
+TEST_CASE("Bad 2D cases are rejected with one line naming table, key, value and rule, and nothing is written",
+          "[verification][cli]") {
+  TempDir dir("cli-run-bad");
+  auto rejected = [&](const std::string& toml, const std::string& must_mention) {
+    dir.write("case.toml", toml);
+    const auto r = run_hmlattice("run case.toml --out run", dir.path);
+    INFO("case:\n" << toml << "stderr: " << r.err);
+    CHECK(r.exit_code == 2);
+    CHECK(count_lines(r.err) == 1);
+    CHECK_THAT(r.err, Catch::Contains(must_mention));
+    CHECK(r.out.empty());
+    CHECK_FALSE(std::filesystem::exists(dir.path / "run"));
+  };
+  const std::string physics = "[physics]\nQ = 0.1\nR_i = 0\n";
+  rejected("model = \"fdm1d\"\n" + physics, "model = \"fdm1d\", allowed: \"lattice2d\"");
+  rejected("[physics]\nb = 1.2\nR_i = 0\n", "case.toml: [physics] b = 1.2, allowed: 0 <= b <= 1");
+  rejected("[physics]\nQ = 0.1\n", "case.toml: [physics] R_i = 0.138, allowed: 0 for [lattice] domain = \"disk\"");
+  rejected("[physics]\nR_i = 0\n[lattice]\ndomain = \"annulus\"\n",
+           "case.toml: [physics] R_i = 0, allowed: 0 < R_i < 1 for [lattice] domain = \"annulus\"");
+  rejected(physics + "[lattice]\ndomain = \"square\"\n", "case.toml: [lattice] domain = 'square', allowed: disk, annulus");
+  rejected(physics + "[lattice]\ndomain = \"rectangle\"\n", "case.toml: [lattice] domain = \"rectangle\", allowed: \"disk\" or \"annulus\"");
+  rejected(physics + "[lattice]\nn_particles = 10\n", "case.toml: [lattice] n_particles = 10, allowed: ");
+  rejected(physics + "[lattice]\nseed = -3\n", "case.toml: [lattice] seed = -3, allowed: >= 0");
+  rejected(physics + "[lattice]\nN = 1000\n", "case.toml: [lattice] unknown key 'N', allowed: ");
+  rejected(physics + "[mechanics]\nouter = \"clamped\"\n", "case.toml: [mechanics] outer = 'clamped', allowed: free, fixed");
+  rejected(physics + "[mechanics]\nsolver = \"lu\"\n", "case.toml: [mechanics] solver = 'lu', allowed: cholmod, pcg");
+  rejected(physics + "[flow]\nborehole_storage = \"tank\"\n", "case.toml: [flow] borehole_storage = 'tank', allowed: ");
+  rejected(physics + "[coupling]\nsplit = \"monolithic\"\n",
+           "case.toml: [coupling] split = 'monolithic', allowed: undrained, drained");
+  rejected(physics + "[coupling]\npsi = -1\n", "case.toml: [coupling] psi = -1, allowed: ");
+  rejected(physics + "[coupling]\nsplit = \"drained\"\npsi = 1.3\n",
+           "case.toml: [coupling] psi = 1.3, allowed: 0 for split = drained");
+  rejected(physics + "[coupling]\nxi = 0\n", "case.toml: [coupling] xi = 0, allowed: ");
+  rejected(physics + "[coupling]\npressure_tolerance = 2\n", "case.toml: [coupling] pressure_tolerance = 2, allowed: ");
+  rejected(physics + "[coupling]\nmax_iterations = 0\n", "case.toml: [coupling] max_iterations = 0, allowed: ");
+  rejected(physics + "[fracture]\nenabled = true\n", "case.toml: [fracture] enabled = true, allowed: false");
+  rejected(physics + "[numerics]\ndt_initial = -1\n", "case.toml: [numerics] dt_initial = -1, allowed: ");
+  rejected(physics + "[numerics]\ndt_growth = 0.9\n", "case.toml: [numerics] dt_growth = 0.9, allowed: >= 1");
+  rejected(physics + "[numerics]\nt_end = 1e-4\ndt_initial = 1e-3\n",
+           "case.toml: [numerics] dt_initial = 0.001, allowed: <= t_end = 1e-04");
+  rejected(physics + "[output]\ntimes = [1.0]\n", "case.toml: [output] times[0] = 1, allowed: 0 < t <= t_end = 1e-04");
+  rejected(physics + "[output]\nradial_bins = 0\n", "case.toml: [output] radial_bins = 0, allowed: 1 <= radial_bins");
+  rejected(physics + "[output]\nradial_max = 2\n", "case.toml: [output] radial_max = 2, allowed: R_i = 0 < radial_max <= 1");
+  rejected(physics + "[output]\nvtk = \"yes\"\n", "case.toml: [output] vtk = ");
+  rejected(physics + "[numerics\n", "case.toml:4: malformed TOML: ");
+}
+
+TEST_CASE("hmlattice run writes series, radial profiles, VTK and a resolved config that reruns identically",
+          "[verification][cli]") {
+  TempDir dir("cli-run");
+  dir.write("case.toml", small_case + "[output]\ntimes = [5e-6]\nradial_bins = 5\n");
+  const auto first = run_hmlattice("run case.toml --out run1", dir.path);
+  INFO("stderr: " << first.err);
+  REQUIRE(first.exit_code == 0);
+  for (const char* f : {"series.csv", "radial.csv", "config.toml", "vtk/lattice.pvd", "vtk/lattice_0000.vtu",
+                        "vtk/lattice_0002.vtu"})
+    CHECK(std::filesystem::exists(dir.path / "run1" / f));
+  // Header plus t = 0 plus two steps; three outputs (0, 5e-6, 1e-5) of five shells plus a header.
+  CHECK(count_lines(hm::test::slurp(dir.path / "run1" / "series.csv")) == 4);
+  CHECK(count_lines(hm::test::slurp(dir.path / "run1" / "radial.csv")) == 16);
+  const auto second = run_hmlattice("run run1/config.toml --out run2", dir.path);
+  REQUIRE(second.exit_code == 0);
+  CHECK(hm::test::slurp(dir.path / "run1" / "radial.csv") == hm::test::slurp(dir.path / "run2" / "radial.csv"));
+  const std::string config = hm::test::slurp(dir.path / "run1" / "config.toml");
+  CHECK_THAT(config, Catch::Contains("split = \"undrained\""));
+  CHECK_THAT(config, Catch::Contains("[provenance]"));
+}
+
+TEST_CASE("A coupled run that does not converge exits 1 with the reason and writes nothing", "[verification][cli]") {
+  TempDir dir("cli-run-fail");
+  dir.write("case.toml", small_case + "[coupling]\nmax_iterations = 1\n");
+  const auto r = run_hmlattice("run case.toml --out run", dir.path);
+  CHECK(r.exit_code == 1);
+  CHECK_THAT(r.err, Catch::Contains("numerical failure: coupling at t = 5e-06: not converged after 1 passes"));
+  CHECK_FALSE(std::filesystem::exists(dir.path / "run"));
+}

@@ -1,0 +1,60 @@
+#pragma once
+/// \file
+/// A 2D lattice case file (model = "lattice2d"), the one format of every `hmlattice run`:
+///   [physics] or [physics_si]  material, Q, b, iota, R_i (read_physics; R_i = 0 for domain = "disk")
+///   [lattice]    domain ("disk" | "annulus"), n_particles, seed
+///   [mechanics]  outer ("free" | "fixed"), solver ("cholmod" | "pcg")
+///   [flow]       borehole_storage ("biot-modulus" | "none")
+///   [coupling]   split ("undrained" | "drained"), psi, xi, pressure_tolerance, displacement_tolerance,
+///                max_iterations, accept_unconverged
+///   [numerics]   dt_initial, dt_growth, dt_max, t_end
+///   [fracture]   enabled (must be false for now: reserved for the fracture issue)
+///   [output]     times, vtk, radial_bins, radial_max
+/// Every key is optional except where said; every default is the library struct's. Unknown keys are errors.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "hm/lattice2d/coupled_model.hpp"
+#include "hm/lattice2d/flow_network.hpp"
+#include "hm/lattice2d/lattice.hpp"
+#include "hm/lattice2d/mechanics.hpp"
+#include "hm/verification/case_file.hpp"
+
+namespace hm::verification {
+
+/// What [output] asks for.
+struct RunOutput {
+  /// Times (t*) of the radial profiles and VTK snapshots besides t = 0; t_end is always added.
+  std::vector<double> times;
+  /// Write VTK snapshots (.vtu + .pvd) at the output times. Default true.
+  bool vtk = true;
+  /// Number of equal radial shells of radial.csv on [R_i, radial_max]. Allowed: 1 <= radial_bins <= 10000.
+  int radial_bins = 50;
+  /// Outer edge of the radial shells. Allowed: R_i < radial_max <= 1.
+  double radial_max = 1.0;
+};
+
+/// A fully read and validated 2D case.
+struct RunCase {
+  CasePhysics physics;
+  hm::lattice2d::LatticeSpec lattice;
+  hm::lattice2d::BoundaryConditions boundary;   ///< only `outer` is read from the case
+  hm::lattice2d::MechanicsOptions mechanics;    ///< only `solver` is read from the case
+  hm::lattice2d::BoreholeStorage borehole_storage = hm::lattice2d::BoreholeStorage::biot_modulus;
+  hm::lattice2d::CouplingOptions coupling;
+  hm::lattice2d::TimeStepping stepping;         ///< output times from [output] times
+  bool fracture_enabled = false;
+  RunOutput output;
+
+  /// The flow parameters of the physics (Q, b, iota, E/M) with this case's borehole storage.
+  hm::lattice2d::FlowParameters flow_parameters() const;
+};
+
+/// Reads and validates the whole case; throws hm::InputError "<file>: [table] key = value, allowed: ...".
+RunCase read_run_case(const std::filesystem::path& file);
+
+/// The resolved case as TOML (itself a valid case file), with a [provenance] table.
+std::string run_case_to_toml(const RunCase& c, const std::string& provenance_toml);
+
+}  // namespace hm::verification

@@ -1,0 +1,54 @@
+#pragma once
+/// \file
+/// Output of a 2D coupled run (`hmlattice run`), read by figures/ and by users:
+///   series.csv  one row per accepted step (and t = 0): t, dt, p_h, injected, stored, coupling, outflow,
+///               balance_error, n_broken, iterations, pressure_residual, displacement_residual.
+///               Volumes are totals since t = 0 (dimensionless areas); injected = stored + coupling +
+///               outflow, with coupling = b sum (V - V^0) the fluid taken up by the deformation;
+///               balance_error is that step's relative error (FlowStepSummary). p_h is the borehole
+///               pressure (annulus) or the pressure of the source triangle (disk).
+///   radial.csv  t, r, r_mean, n_triangles, u_r, p at each output time: shell averages over triangles
+///               binned by their undeformed centroid radius (radial_average.hpp); u_r of a triangle is
+///               the mean radial displacement of its three particles.
+///   vtk/lattice_NNNN.vtu + vtk/lattice.pvd  snapshots at the output times (pressure per triangle).
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <vector>
+
+#include "hm/lattice2d/coupled_model.hpp"
+#include "hm/lattice2d/vtk_writer.hpp"
+#include "hm/verification/csv_writer.hpp"
+#include "hm/verification/run_case.hpp"
+
+namespace hm::verification {
+
+/// Writes the files above into `dir` (created by the caller) while a CoupledModel runs; pass
+/// record() as the model's observer. Nothing here decides anything about the run.
+class RunRecorder {
+ public:
+  RunRecorder(const std::filesystem::path& dir, const RunCase& c);
+  void record(const hm::lattice2d::CoupledModel& model, const hm::lattice2d::CoupledStepSummary& step, bool is_output);
+  /// Closes the CSV files; throws std::runtime_error if a write failed.
+  void finish();
+
+ private:
+  RunOutput output_;
+  double r_min_ = 0.0;
+  std::ofstream series_file_, radial_file_;
+  std::unique_ptr<CsvWriter> series_, radial_;
+  std::unique_ptr<hm::lattice2d::VtkSeries> vtk_;
+};
+
+/// The radially averaged u_r and p of the model's current state on `edges` (helper of RunRecorder,
+/// also used by the benchmarks): one entry per shell.
+struct RadialFields {
+  std::vector<double> r_mid, r_mean, u_r, p;
+  std::vector<int> n_triangles;
+};
+RadialFields radial_fields(const hm::lattice2d::CoupledModel& model, const std::vector<double>& edges);
+
+/// The borehole pressure (annulus) or the source triangle's pressure (disk).
+double injection_pressure(const hm::lattice2d::CoupledModel& model);
+
+}  // namespace hm::verification

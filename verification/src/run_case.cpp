@@ -1,0 +1,180 @@
+#include "hm/verification/run_case.hpp"
+
+#include <sstream>
+
+#include "hm/analytic/input_error.hpp"
+#include "hm/analytic/validation.hpp"
+
+namespace hm::verification {
+
+namespace lt = hm::lattice2d;
+
+namespace {
+
+std::string list(const std::vector<double>& v) {
+  std::string s = "[";
+  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + analytic::format_value(v[i]);
+  return s + "]";
+}
+
+// Runs `read` and reports an InputError from a library parser or validate() as
+// "<file>: [table] key = value, allowed: rule" (the library's "table." or "struct." prefix dropped).
+template <class F>
+void located(CaseTable& table, const std::string& prefix, F&& read) {
+  try {
+    read();
+  } catch (const InputError& e) {
+    std::string what = e.what();
+    if (what.rfind(table.file(), 0) == 0) throw;  // already located
+    if (!prefix.empty() && what.rfind(prefix, 0) == 0) what = what.substr(prefix.size());
+    table.fail(what);
+  }
+}
+
+}  // namespace
+
+lt::FlowParameters RunCase::flow_parameters() const {
+  lt::FlowParameters flow = lt::flow_parameters_of(physics.parameters, stepping.dt_initial);
+  flow.borehole_storage = borehole_storage;
+  return flow;
+}
+
+RunCase read_run_case(const std::filesystem::path& file) {
+  CaseFile cf(file);
+  CaseTable root = cf.root();
+  const std::string model = root.get_string("model", "lattice2d");
+  if (model != "lattice2d")
+    root.fail("model = \"" + model + "\", allowed: \"lattice2d\" (this command runs the 2D lattice model)");
+  root.ignore("provenance");
+
+  RunCase c;
+  c.physics = read_physics(root);
+  const double R_i = c.physics.parameters.R_i;
+
+  // [lattice]
+  CaseTable lat = root.table("lattice");
+  located(lat, "", [&] {
+    c.lattice.domain = lt::domain_shape_from_string(lat.get_string("domain", "disk"));
+    c.lattice.n_particles = lat.get_int("n_particles", c.lattice.n_particles);
+    const long long seed = lat.get_int("seed", static_cast<long long>(c.lattice.seed));
+    if (seed < 0) throw InputError("seed = " + std::to_string(seed) + ", allowed: >= 0");
+    c.lattice.seed = static_cast<std::uint64_t>(seed);
+    lat.reject_unknown();
+    if (c.lattice.domain == lt::DomainShape::rectangle)
+      throw InputError("domain = \"rectangle\", allowed: \"disk\" or \"annulus\" (the flow needs a circular outer boundary)");
+  });
+  const std::string physics_table = c.physics.physical ? "physics_si" : "physics";
+  if (c.lattice.domain == lt::DomainShape::disk && R_i != 0.0)
+    root.table(physics_table).fail("R_i = " + analytic::format_value(R_i) +
+                                   ", allowed: 0 for [lattice] domain = \"disk\" (point injection at r = 0)");
+  if (c.lattice.domain == lt::DomainShape::annulus && !(R_i > 0.0))
+    root.table(physics_table).fail("R_i = 0, allowed: 0 < R_i < 1 for [lattice] domain = \"annulus\"");
+  if (c.lattice.domain == lt::DomainShape::annulus) c.lattice.inner_radius = R_i;
+  located(lat, "", [&] { c.lattice.validate(); });
+
+  // [mechanics]
+  CaseTable mech = root.table("mechanics");
+  located(mech, "", [&] {
+    c.boundary.outer = lt::boundary_support_from_string(mech.get_string("outer", "free"), "outer");
+    c.mechanics.solver = lt::spd_solver_kind_from_string(mech.get_string("solver", "cholmod"));
+    mech.reject_unknown();
+  });
+
+  // [flow]
+  CaseTable flow = root.table("flow");
+  located(flow, "", [&] {
+    c.borehole_storage = lt::borehole_storage_from_string(flow.get_string("borehole_storage", "biot-modulus"));
+    flow.reject_unknown();
+  });
+
+  // [coupling]
+  CaseTable cpl = root.table("coupling");
+  located(cpl, "coupling.", [&] {
+    auto& o = c.coupling;
+    o.split = lt::coupling_split_from_string(cpl.get_string("split", lt::to_string(o.split)));
+    // The drained split has Psi = 0 by definition: its default follows the split.
+    o.psi = cpl.get_double("psi", o.split == lt::CouplingSplit::drained ? 0.0 : o.psi);
+    o.xi = cpl.get_double("xi", o.xi);
+    o.pressure_tolerance = cpl.get_double("pressure_tolerance", o.pressure_tolerance);
+    o.displacement_tolerance = cpl.get_double("displacement_tolerance", o.displacement_tolerance);
+    const long long max_it = cpl.get_int("max_iterations", o.max_iterations);
+    if (max_it < 1 || max_it > 1000000)
+      throw InputError("max_iterations = " + std::to_string(max_it) + ", allowed: 1 <= max_iterations <= 1e6");
+    o.max_iterations = static_cast<int>(max_it);
+    o.accept_unconverged = cpl.get_bool("accept_unconverged", o.accept_unconverged);
+    cpl.reject_unknown();
+    o.validate();
+  });
+
+  // [fracture]: reserved; the switch exists so that cases written now keep working.
+  CaseTable frac = root.table("fracture");
+  c.fracture_enabled = frac.get_bool("enabled", false);
+  frac.reject_unknown();
+  if (c.fracture_enabled) frac.fail("enabled = true, allowed: false (fracture in `hmlattice run` comes with the next issue)");
+
+  // [numerics]
+  CaseTable num = root.table("numerics");
+  auto& s = c.stepping;
+  s.dt_initial = num.get_double("dt_initial", s.dt_initial);
+  s.dt_growth = num.get_double("dt_growth", s.dt_growth);
+  s.t_end = num.get_double("t_end", s.t_end);
+  s.dt_max = num.get_double("dt_max", s.t_end);  // default: no cap below t_end
+  num.reject_unknown();
+
+  // [output]
+  CaseTable out = root.table("output");
+  auto& o = c.output;
+  s.output_times = out.get_doubles("times", {});
+  o.times = s.output_times;
+  o.vtk = out.get_bool("vtk", o.vtk);
+  const long long bins = out.get_int("radial_bins", o.radial_bins);
+  o.radial_max = out.get_double("radial_max", o.radial_max);
+  out.reject_unknown();
+  root.reject_unknown();
+  if (bins < 1 || bins > 10000)
+    out.fail("radial_bins = " + std::to_string(bins) + ", allowed: 1 <= radial_bins <= 10000");
+  o.radial_bins = static_cast<int>(bins);
+  if (!(o.radial_max > R_i && o.radial_max <= 1.0))
+    out.fail("radial_max = " + analytic::format_value(o.radial_max) + ", allowed: R_i = " + analytic::format_value(R_i) +
+             " < radial_max <= 1");
+
+  try {
+    s.validate();
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    if (what.rfind("output.", 0) == 0) out.fail(what.substr(7));
+    num.fail(what.rfind("numerics.", 0) == 0 ? what.substr(9) : what);
+  }
+  located(num, "", [&] { c.flow_parameters().validate(); });
+  return c;
+}
+
+std::string run_case_to_toml(const RunCase& c, const std::string& provenance_toml) {
+  auto v = [](double x) { return analytic::format_value(x); };
+  auto b = [](bool x) { return x ? "true" : "false"; };
+  const auto& o = c.coupling;
+  const auto& s = c.stepping;
+  std::ostringstream os;
+  os << "# Resolved configuration of this run: every default filled in. Rerun with\n"
+     << "#   hmlattice run config.toml --out <dir>\n"
+     << "model = \"lattice2d\"\n\n"
+     << physics_to_toml(c.physics) << "\n"
+     << "[lattice]\ndomain = \"" << lt::to_string(c.lattice.domain) << "\"\nn_particles = " << c.lattice.n_particles
+     << "\nseed = " << c.lattice.seed << "\n\n"
+     << "[mechanics]\nouter = \"" << lt::to_string(c.boundary.outer) << "\"\nsolver = \""
+     << lt::to_string(c.mechanics.solver) << "\"\n\n"
+     << "[flow]\nborehole_storage = \"" << lt::to_string(c.borehole_storage) << "\"\n\n"
+     << "[coupling]\nsplit = \"" << lt::to_string(o.split) << "\"\npsi = " << v(o.psi) << "\nxi = " << v(o.xi)
+     << "\npressure_tolerance = " << v(o.pressure_tolerance) << "\ndisplacement_tolerance = "
+     << v(o.displacement_tolerance) << "\nmax_iterations = " << o.max_iterations
+     << "\naccept_unconverged = " << b(o.accept_unconverged) << "\n\n"
+     << "[numerics]\ndt_initial = " << v(s.dt_initial) << "\ndt_growth = " << v(s.dt_growth) << "\ndt_max = "
+     << v(s.dt_max) << "\nt_end = " << v(s.t_end) << "\n\n"
+     << "[fracture]\nenabled = " << b(c.fracture_enabled) << "\n\n"
+     << "[output]\ntimes = " << list(c.output.times) << "\nvtk = " << b(c.output.vtk)
+     << "\nradial_bins = " << c.output.radial_bins << "\nradial_max = " << v(c.output.radial_max) << "\n\n"
+     << provenance_toml;
+  return os.str();
+}
+
+}  // namespace hm::verification

@@ -1,0 +1,86 @@
+#include "hm/verification/run_output.hpp"
+
+#include <stdexcept>
+
+#include "hm/lattice2d/radial_average.hpp"
+
+namespace hm::verification {
+
+namespace lt = hm::lattice2d;
+
+double injection_pressure(const lt::CoupledModel& model) {
+  const auto& flow = model.flow();
+  return flow.has_borehole() ? flow.borehole_pressure() : flow.pressure()[flow.source_triangle()];
+}
+
+RadialFields radial_fields(const lt::CoupledModel& model, const std::vector<double>& edges) {
+  const lt::Lattice& l = model.lattice();
+  const lt::DualGraph& dual = model.reference_dual();
+  const Eigen::VectorXd& u = model.displacement();
+  Eigen::VectorXd u_r(l.n_triangles());
+  for (int s = 0; s < l.n_triangles(); ++s) {
+    double sum = 0.0;
+    for (int i : l.triangles[static_cast<std::size_t>(s)]) {
+      const Eigen::Vector2d x = l.points.col(i);
+      const double r = x.norm();
+      if (r > 0.0) sum += (u[3 * i] * x.x() + u[3 * i + 1] * x.y()) / r;  // u_r of the particle at r = 0 is 0
+    }
+    u_r[s] = sum / 3.0;
+  }
+  const lt::RadialProfile pu = lt::radial_average(dual, u_r, edges);
+  const lt::RadialProfile pp = lt::radial_average(dual, model.pressure(), edges);
+  RadialFields out;
+  for (std::size_t k = 0; k < pu.shells.size(); ++k) {
+    out.r_mid.push_back(0.5 * (pu.shells[k].r_inner + pu.shells[k].r_outer));
+    out.r_mean.push_back(pu.shells[k].r_mean);
+    out.u_r.push_back(pu.shells[k].mean);
+    out.p.push_back(pp.shells[k].mean);
+    out.n_triangles.push_back(pu.shells[k].n_triangles);
+  }
+  return out;
+}
+
+RunRecorder::RunRecorder(const std::filesystem::path& dir, const RunCase& c)
+    : output_(c.output),
+      r_min_(c.lattice.domain == lt::DomainShape::annulus ? c.lattice.inner_radius : 0.0),
+      series_file_(dir / "series.csv"),
+      radial_file_(dir / "radial.csv") {
+  if (!series_file_ || !radial_file_) throw std::runtime_error("cannot write into " + dir.string());
+  series_ = std::make_unique<CsvWriter>(
+      series_file_, std::vector<std::string>{"t", "dt", "p_h", "injected", "stored", "coupling", "outflow",
+                                             "balance_error", "n_broken", "iterations", "pressure_residual",
+                                             "displacement_residual"});
+  radial_ = std::make_unique<CsvWriter>(radial_file_,
+                                        std::vector<std::string>{"t", "r", "r_mean", "n_triangles", "u_r", "p"});
+  if (output_.vtk) vtk_ = std::make_unique<lt::VtkSeries>(dir / "vtk", "lattice");
+}
+
+void RunRecorder::record(const lt::CoupledModel& model, const lt::CoupledStepSummary& step, bool is_output) {
+  const lt::FlowTotals& t = model.flow().totals();
+  series_->row({model.time(), step.dt, injection_pressure(model), t.injected, t.storage, t.deformation, t.outflow,
+                step.flow.balance_error, static_cast<double>(model.n_broken()), static_cast<double>(step.iterations),
+                step.pressure_residual, step.displacement_residual});
+  if (!is_output) return;
+  const RadialFields f = radial_fields(model, lt::uniform_shell_edges(r_min_, output_.radial_max, output_.radial_bins));
+  for (std::size_t k = 0; k < f.r_mid.size(); ++k)
+    radial_->row({model.time(), f.r_mid[k], f.r_mean[k], static_cast<double>(f.n_triangles[k]), f.u_r[k], f.p[k]});
+  if (vtk_) {
+    lt::LatticeSnapshot snapshot;
+    snapshot.time = model.time();
+    snapshot.displacement = model.displacement();
+    snapshot.pressure = model.pressure().head(model.lattice().n_triangles());
+    vtk_->write(model.lattice(), model.current_dual(), snapshot);
+  }
+}
+
+}  // namespace hm::verification
+
+namespace hm::verification {
+
+void RunRecorder::finish() {
+  series_file_.close();
+  radial_file_.close();
+  if (!series_file_ || !radial_file_) throw std::runtime_error("writing series.csv or radial.csv failed");
+}
+
+}  // namespace hm::verification
