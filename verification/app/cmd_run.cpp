@@ -16,6 +16,7 @@
 #include <iostream>
 
 #include "commands.hpp"
+#include "hm/lattice2d/calibration.hpp"
 #include "hm/lattice2d/coupled_model.hpp"
 #include "hm/verification/output_dir.hpp"
 #include "hm/verification/progress.hpp"
@@ -47,7 +48,10 @@ void add_run_command(CLI::App& app, int& exit_code, const std::string& command_l
               << "; t_end = " << c.stepping.t_end << "\n";
 
     // 2. Build the lattice and the coupled model (mechanics factorised once, with the Eq. 20 springs).
-    lattice2d::CoupledModel model(lattice2d::generate_lattice(c.lattice), lattice2d::BeamParameters{},
+    //    The beams are the toolkit's calibrated constants (E = 1; the lattice's nu is
+    //    calibrated_continuum().poisson_ratio, docs/lattice.md), whatever [physics] nu says: nu there
+    //    enters E/M (Eq. 22) only.
+    lattice2d::CoupledModel model(lattice2d::generate_lattice(c.lattice), lattice2d::calibrated_beam_parameters(),
                                   c.boundary, c.mechanics, c.flow_parameters(), c.coupling);
     std::cout << "lattice: " << model.lattice().n_particles() << " particles, " << model.lattice().n_beams()
               << " beams, " << model.lattice().n_triangles() << " triangles\n";
