@@ -85,6 +85,12 @@ TEST_CASE("Load stepping breaks beams in load order and never heals one", "[latt
   for (std::size_t s = 1; s < run.states_per_step.size(); ++s)
     for (std::size_t e = 0; e < run.states_per_step[s].size(); ++e)
       if (run.states_per_step[s - 1][e] != BeamState::intact) CHECK(run.states_per_step[s][e] != BeamState::intact);
+  // The crack-tip factor enters the loop: the first break has none (no crack yet), later tip beams have
+  // (L/2L_m)^(1/2) > 1 (L ~ 0.04 at N = 800 against 2 L_m = 6.3e-3).
+  CHECK(r.breaks.front().crack_tip_factor == 1.0);
+  bool tip_seen = false;
+  for (const auto& ev : r.breaks) tip_seen = tip_seen || ev.crack_tip_factor > 1.0;
+  CHECK(tip_seen);
   // Every logged beam is broken at the end.
   for (const auto& ev : r.breaks) CHECK(run.states_per_step.back()[static_cast<std::size_t>(ev.beam)] != BeamState::intact);
 }
