@@ -9,6 +9,7 @@ const std::vector<Benchmark>& all_benchmarks() {
     add_fdm1d_benchmarks(all);
     add_lattice2d_elastic_benchmarks(all);
     add_lattice2d_fracture_benchmarks(all);
+    add_lattice2d_coupled_benchmarks(all);
     return all;
   }();
   return registry;

@@ -1,0 +1,250 @@
+// Benchmarks of the coupled 2D lattice (Sections 2.1-2.3): Rudnicki's fluid line source (Section 3.1,
+// Fig. 7) — point injection at the centre of a disk, Q = 0.1, b = 0.5, t* = 3e-4 — with the undrained
+// split iterated to convergence, with one pass per step, and with the drained split; free and fixed
+// outer boundary. Radially averaged p and u_r against analytic/rudnicki.hpp, plus the volume balance.
+//
+// Which continuum: the lattice's triangle areas are plane-strain volumetric strains (eps_xx + eps_yy),
+// so the analytic solution is taken with vol_strain = plane-strain; its nu is the calibrated lattice's
+// (calibrated_continuum(), 0.2236, not Table 1's 0.25), its E/M the model's own (Eq. 22 at nu = 0.25, as
+// in the case file). Rudnicki is for an unbounded plane: the disk's outer boundary (free or fixed)
+// shifts u_r by an amount that grows with r (the paper's Fig. 7 shows it), so the comparison is
+// restricted to r* in [0.01, 0.05], where the pressure plume has not reached r = 1.
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "hm/analytic/rudnicki.hpp"
+#include "hm/lattice2d/calibration.hpp"
+#include "hm/lattice2d/coupled_model.hpp"
+#include "hm/lattice2d/radial_average.hpp"
+#include "hm/verification/benchmark.hpp"
+#include "hm/verification/run_case.hpp"
+#include "hm/verification/run_output.hpp"
+#include "report_writer.hpp"
+
+namespace hm::verification {
+
+namespace {
+
+namespace lt = hm::lattice2d;
+
+std::string fmt(double x) { return format_number(x); }
+
+/// One lattice run of the Fig. 7 setting.
+struct RudnickiVariant {
+  std::string label;  // also the data sub-folder
+  long long n_particles = 10000;
+  lt::BoundarySupport outer = lt::BoundarySupport::free;
+  lt::CouplingSplit split = lt::CouplingSplit::undrained;
+  double psi = 1.3;
+  bool one_pass = false;
+};
+
+RunCase rudnicki_case(const RudnickiVariant& v) {
+  RunCase c;
+  c.physics.parameters.Q = 0.1;
+  c.physics.parameters.R_i = 0.0;
+  c.physics.parameters.material.b = 0.5;
+  c.physics.parameters.material.nu = 0.25;
+  c.physics.parameters.material.E_over_M = analytic::E_over_M_table1(0.5, 0.25);
+  c.lattice.domain = lt::DomainShape::disk;
+  c.lattice.n_particles = v.n_particles;
+  c.lattice.seed = 1;
+  c.boundary.outer = v.outer;
+  c.coupling.split = v.split;
+  c.coupling.psi = v.split == lt::CouplingSplit::drained ? 0.0 : v.psi;
+  if (v.one_pass) {
+    c.coupling.max_iterations = 1;
+    c.coupling.accept_unconverged = true;
+  }
+  // The paper does not give dt: our choice, as in cases/fig07_rudnicki_free.toml (halving dt_max
+  // moves the profiles by < 1%, measured at N = 1e4).
+  c.stepping.dt_initial = 1e-6;
+  c.stepping.dt_growth = 1.2;
+  c.stepping.dt_max = 2e-5;
+  c.stepping.t_end = 3e-4;
+  c.stepping.output_times = {3e-4};
+  c.output.times = c.stepping.output_times;
+  c.output.vtk = false;
+  c.output.radial_bins = 20;  // shells 0.01 wide: centres 0.015 ... 0.045 in [0.01, 0.05]
+  c.output.radial_max = 0.2;
+  return c;
+}
+
+struct RudnickiOutcome {
+  RadialFields fields;          // at t_end
+  double max_error_p = 0.0;     // max over shells with r_mean in [0.01, 0.05] of |p - p_a| / p_a
+  double max_error_u = 0.0;     // same for u_r
+  double max_balance = 0.0;
+  int n_steps = 0, total_iterations = 0;
+  double seconds = 0.0;
+  bool ok = false;
+  std::string message;
+};
+
+RudnickiOutcome run_variant(const RudnickiVariant& v, const BenchmarkContext& ctx, Table& table) {
+  const RunCase c = rudnicki_case(v);
+  lt::CoupledModel model(lt::generate_lattice(c.lattice), lt::calibrated_beam_parameters(), c.boundary, c.mechanics,
+                         c.flow_parameters(), c.coupling);
+  const std::filesystem::path dir = ctx.data_dir / ("rudnicki_" + v.label);
+  std::filesystem::create_directories(dir);
+  RunRecorder recorder(dir, c);
+  const auto run = model.run(c.stepping, [&](const lt::CoupledModel& m, const lt::CoupledStepSummary& s, bool out) {
+    recorder.record(m, s, out);
+  });
+  recorder.finish();
+  RudnickiOutcome o;
+  o.ok = run.is_ok();
+  o.message = run.message;
+  o.max_balance = run.max_balance_error;
+  o.n_steps = run.n_steps;
+  o.total_iterations = run.total_iterations;
+  o.seconds = run.seconds;
+  o.fields = radial_fields(model, lt::uniform_shell_edges(0.0, c.output.radial_max, c.output.radial_bins));
+  analytic::PoroelasticParameters continuum = c.physics.parameters.material;
+  continuum.nu = lt::calibrated_continuum().poisson_ratio;
+  continuum.vol_strain = analytic::VolStrain::plane_strain;
+  const analytic::RudnickiLineSource exact(c.physics.parameters.Q, continuum);
+  for (std::size_t k = 0; k < o.fields.r_mean.size(); ++k) {
+    const double r = o.fields.r_mean[k];
+    if (!(r >= 0.01 && r <= 0.05)) continue;
+    const double p_a = exact.pressure(r, c.stepping.t_end), u_a = exact.radial_displacement(r, c.stepping.t_end);
+    o.max_error_p = std::max(o.max_error_p, std::abs(o.fields.p[k] - p_a) / p_a);
+    o.max_error_u = std::max(o.max_error_u, std::abs(o.fields.u_r[k] - u_a) / u_a);
+    table.rows.push_back({v.label, std::to_string(model.lattice().n_particles()), fmt(r), fmt(o.fields.p[k]), fmt(p_a),
+                          fmt(o.fields.u_r[k]), fmt(u_a)});
+  }
+  return o;
+}
+
+Metric error_metric(const std::string& what, double value, bool gating, const std::string& why, double tolerance = 0.10) {
+  return {.name = what, .value = value, .reference = 0.0, .tolerance = tolerance, .comparison = Comparison::at_most,
+          .justification = why, .gating = gating};
+}
+
+Metric balance_metric(const std::string& label, double worst) {
+  return {.name = "volume balance, max relative error per step (" + label + ")", .value = worst, .tolerance = 1e-8,
+          .comparison = Comparison::at_most,
+          .justification = "the flow scheme is conservative by construction: round-off of the sparse solve "
+                           "(issue 5: <= 1e-8)"};
+}
+
+Table profile_table() {
+  return {"Radially averaged p and u_r at t* = 3e-4 against Rudnicki (shells 0.01 wide, r = area-weighted mean "
+          "centroid radius of the shell)",
+          {"run", "N", "r*", "p (lattice)", "p (Rudnicki)", "u_r (lattice)", "u_r (Rudnicki)"},
+          {}};
+}
+
+Table run_table() {
+  return {"Runs: steps, coupling passes, wall time, max errors on r* in [0.01, 0.05]",
+          {"run", "steps", "passes", "seconds", "max |p - p_a|/p_a", "max |u_r - u_a|/u_a", "balance"},
+          {}};
+}
+
+void add_run_row(Table& t, const std::string& label, const RudnickiOutcome& o) {
+  t.rows.push_back({label, std::to_string(o.n_steps), std::to_string(o.total_iterations), fmt(o.seconds),
+                    fmt(o.max_error_p), fmt(o.max_error_u), fmt(o.max_balance)});
+}
+
+// --- quick tier: N = 1e4, free, iterated undrained ---------------------------------------------
+
+BenchmarkResult rudnicki_quick(const BenchmarkContext& ctx) {
+  BenchmarkResult res;
+  Table profiles = profile_table(), runs = run_table();
+  const RudnickiVariant v{.label = "free_N1e4"};
+  const RudnickiOutcome o = run_variant(v, ctx, profiles);
+  add_run_row(runs, v.label, o);
+  res.metrics.push_back({.name = "run completed (every step converged)", .value = o.ok ? 1.0 : 0.0, .reference = 1.0,
+                         .tolerance = 0.0, .comparison = Comparison::abs_error,
+                         .justification = "a numerical failure is a failure: " + o.message});
+  res.metrics.push_back(error_metric("max relative error of radially averaged u_r, r* in [0.01, 0.05], N = 1e4",
+                                     o.max_error_u, true,
+                                     "a coarse-resolution sanity bound (measured 8.6%, the lattice 6-9% low); issue "
+                                     "5's 10% is checked at N = 3e4 in the paper tier",
+                                     0.15));
+  res.metrics.push_back(error_metric("max relative error of radially averaged p, r* in [0.01, 0.05], N = 1e4",
+                                     o.max_error_p, false,
+                                     "not gating at N = 1e4: the plume at t* = 3e-4 spans ~2 particle spacings "
+                                     "(h ~ 0.019), the tail is over-predicted (measured 27% at r* = 0.044); the "
+                                     "paper tier checks it at N = 3e4"));
+  res.metrics.push_back(balance_metric("N = 1e4", o.max_balance));
+  res.tables = {runs, profiles};
+  return res;
+}
+
+// --- paper tier: two resolutions, both boundaries, three split variants -----------------------
+
+BenchmarkResult rudnicki_paper(const BenchmarkContext& ctx) {
+  BenchmarkResult res;
+  Table profiles = profile_table(), runs = run_table();
+  auto run = [&](const RudnickiVariant& v) {
+    const RudnickiOutcome o = run_variant(v, ctx, profiles);
+    add_run_row(runs, v.label, o);
+    res.metrics.push_back(balance_metric(v.label, o.max_balance));
+    if (!o.ok)
+      res.metrics.push_back({.name = v.label + ": run completed", .value = 0.0, .reference = 1.0, .tolerance = 0.0,
+                             .comparison = Comparison::abs_error, .justification = o.message});
+    return o;
+  };
+  for (lt::BoundarySupport outer : {lt::BoundarySupport::free, lt::BoundarySupport::fixed}) {
+    const std::string b = lt::to_string(outer);
+    const RudnickiOutcome coarse = run({.label = b + "_N1e4", .n_particles = 10000, .outer = outer});
+    const RudnickiOutcome fine = run({.label = b + "_N3e4", .n_particles = 30000, .outer = outer});
+    const std::string why = "issue 5: within 10% for r* in [0.01, 0.05] at a stated resolution (N = 3e4)";
+    res.metrics.push_back(error_metric(b + ": max relative error of p, N = 3e4", fine.max_error_p, true, why));
+    res.metrics.push_back(error_metric(b + ": max relative error of u_r, N = 3e4", fine.max_error_u, true, why));
+    res.metrics.push_back({.name = b + ": error of p, N = 1e4 over N = 3e4", .value = coarse.max_error_p / fine.max_error_p,
+                           .reference = 1.0, .tolerance = 1.0, .comparison = Comparison::at_least,
+                           .justification = "issue 5: the error shrinks under refinement", .gating = true});
+    if (outer == lt::BoundarySupport::free) {
+      // The paper's other two variants at the fine resolution: same profiles within a few percent.
+      const RudnickiOutcome one = run({.label = "free_N3e4_one_pass", .n_particles = 30000, .one_pass = true});
+      const RudnickiOutcome drained =
+          run({.label = "free_N3e4_drained", .n_particles = 30000, .split = lt::CouplingSplit::drained, .psi = 0.0});
+      for (const auto& [label, o] : {std::pair{"one pass", &one}, std::pair{"drained", &drained}}) {
+        double dp = 0.0, du = 0.0;
+        for (std::size_t k = 0; k < fine.fields.r_mean.size(); ++k) {
+          const double r = fine.fields.r_mean[k];
+          if (!(r >= 0.01 && r <= 0.05)) continue;
+          dp = std::max(dp, std::abs(o->fields.p[k] - fine.fields.p[k]) / std::abs(fine.fields.p[k]));
+          du = std::max(du, std::abs(o->fields.u_r[k] - fine.fields.u_r[k]) / std::abs(fine.fields.u_r[k]));
+        }
+        res.metrics.push_back({.name = std::string("free, N = 3e4: max relative difference of p and u_r, ") + label +
+                                           " vs iterated undrained",
+                               .value = std::max(dp, du), .reference = 0.0, .tolerance = 0.05,
+                               .comparison = Comparison::at_most,
+                               .justification = "the paper's Fig. 7: 'no significant differences'; not gating "
+                                                "(our reading of a figure)",
+                               .gating = false});
+      }
+    }
+  }
+  res.tables = {runs, profiles};
+  res.notes.push_back(
+      "The analytic solution uses the calibrated lattice's nu = " + fmt(lt::calibrated_continuum().poisson_ratio) +
+      ", the model's E/M and vol_strain = plane-strain (the lattice's volumetric strain is the triangle-area change, "
+      "eps_xx + eps_yy). Rudnicki's plane is unbounded; the disk's free boundary raises u_r and the fixed one lowers "
+      "it by an amount growing with r. The CSV of every run is in rudnicki_<run>/ (series.csv, radial.csv).");
+  return res;
+}
+
+}  // namespace
+
+void add_lattice2d_coupled_benchmarks(std::vector<Benchmark>& into) {
+  into.push_back({.id = "lattice2d.rudnicki_quick",
+                  .title = "Coupled lattice: Rudnicki's line source at N = 1e4 (Fig. 7, free boundary)",
+                  .description = "Point injection into a free disk, Q = 0.1, b = 0.5, undrained split (Psi = 1.3) "
+                                 "iterated to 1e-6; radially averaged u_r and p at t* = 3e-4 against "
+                                 "analytic/rudnicki.hpp on r* in [0.01, 0.05]; fluid-volume balance per step.",
+                  .tier = Tier::quick,
+                  .run = rudnicki_quick});
+  into.push_back({.id = "lattice2d.rudnicki",
+                  .title = "Coupled lattice: Rudnicki's line source, two resolutions, free and fixed (Fig. 7)",
+                  .description = "As the quick benchmark at N = 1e4 and 3e4, free and fixed outer boundary; at N = 3e4 "
+                                 "also the undrained split with one pass per step and the drained split.",
+                  .tier = Tier::paper,
+                  .run = rudnicki_paper});
+}
+
+}  // namespace hm::verification
