@@ -379,8 +379,8 @@ BenchmarkResult lame(const BenchmarkContext& ctx) {
       "The lattice is stiffer than the continuum next to the borehole (u_r low by 3.6% in the innermost shell at "
       "N = 1e4) and slightly softer towards a free outer boundary (+1%). The wall is one row of evenly spaced "
       "boundary particles, a ring of beams of the minimum spacing that carries the largest hoop stress: a boundary "
-      "layer of O(spacing), so the error falls like the spacing (table). At N = 1e5 the remaining ~1% at the free "
-      "outer boundary matches the slow density drift of E (about -0.5% per factor 4 in N; lattice2d.calibration).");
+      "layer of O(spacing), so the error falls like the spacing (table). At N = 1e5 the remaining ~1% sits at the free "
+      "outer boundary; about half of it is the density drift of E (0.994 at N = 1e5; lattice2d.calibration).");
   res.figures.push_back({"verify_lattice_lame.py", "verify_lattice_lame.png",
                          "Lame cylinder: radially averaged u_r and sigma_theta of the lattice (markers, two "
                          "resolutions) against the plane-strain solution with the calibrated E, nu (lines), free and "
