@@ -145,6 +145,7 @@ CoupledStepSummary CoupledModel::step(double dt) {
     if (coupling_.psi > 0.0) f += spring_preload(l, springs_, u_prev);
     mechanics_->set_external_forces(f);
     const MechanicsSummary ms = mechanics_->solve();
+    summary.mechanics_seconds += ms.solve_seconds;
     if (!ms.is_converged()) {
       summary.status = CoupledStatus::solver_failure;
       summary.message = "mechanics at t = " + hm::analytic::format_value(summary.time) + ", pass " +
@@ -153,11 +154,15 @@ CoupledStepSummary CoupledModel::step(double dt) {
     }
     const Eigen::VectorXd& u = mechanics_->displacement();
     // 2. The deformed flow geometry.
+    auto tick = std::chrono::steady_clock::now();
     const Eigen::Matrix2Xd x = positions(u);
     dual = build_dual_graph(l, x, reference_dual_.options);
     flow_->update_geometry(dual, x);
+    auto tock = std::chrono::steady_clock::now();
+    summary.geometry_seconds += std::chrono::duration<double>(tock - tick).count();
     // 3. The flow step with b (V^{n+1} - V^n).
     summary.flow = flow_->solve(dt, unknown_volumes(dual) - volume_);
+    summary.flow_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - tock).count();
     if (!summary.flow.is_ok()) {
       summary.status = CoupledStatus::solver_failure;
       summary.message = "flow at t = " + hm::analytic::format_value(summary.time) + ", pass " + std::to_string(k) +

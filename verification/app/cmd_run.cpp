@@ -11,6 +11,7 @@
 // Examples:
 //   hmlattice run cases/fig07_rudnicki_free_quick.toml --out out/fig07_quick
 //   hmlattice run cases/fig07_rudnicki_free.toml
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -25,6 +26,21 @@
 #include "hm/verification/run_output.hpp"
 
 namespace hm::app {
+
+namespace {
+
+// Steps left after time t with the last step dt, if dt keeps growing geometrically up to dt_max
+// (output times ignored): for the ETA of the progress line only.
+int remaining_steps(double t, double dt, const lattice2d::TimeStepping& s) {
+  int n = 0;
+  for (dt = std::max(dt, s.dt_initial); t < s.t_end * (1.0 - 1e-12) && n < 10000000; ++n) {
+    dt = std::min(dt * s.dt_growth, s.dt_max);
+    t += dt;
+  }
+  return n;
+}
+
+}  // namespace
 
 void add_run_command(CLI::App& app, int& exit_code, const std::string& command_line) {
   struct Args {
@@ -61,16 +77,27 @@ void add_run_command(CLI::App& app, int& exit_code, const std::string& command_l
     verification::RunRecorder recorder(staged.path(), c);
     verification::ProgressReporter progress(std::cout, "run");
     int step = 0;
+    double step_seconds = 0.0, mechanics_seconds = 0.0, geometry_seconds = 0.0, flow_seconds = 0.0;
     const auto run = model.run(c.stepping, [&](const lattice2d::CoupledModel& m, const lattice2d::CoupledStepSummary& s,
                                                bool is_output) {
       recorder.record(m, s, is_output);
+      step_seconds += s.seconds;
+      mechanics_seconds += s.mechanics_seconds;
+      geometry_seconds += s.geometry_seconds;
+      flow_seconds += s.flow_seconds;
+      const int remaining = remaining_steps(m.time(), s.dt, c.stepping);
       progress.update(m.time(), c.stepping.t_end,
-                      "step " + std::to_string(step++) + ", iterations " + std::to_string(s.iterations));
+                      "step " + std::to_string(step) + ", iterations " + std::to_string(s.iterations) + ", ETA " +
+                          std::to_string(static_cast<int>(step > 0 ? step_seconds / step * remaining : 0.0)) + " s");
+      ++step;
     });
-    char balance[32];
-    std::snprintf(balance, sizeof balance, "%.2e", run.max_balance_error);
-    progress.finish(std::to_string(run.n_steps) + " steps, " + std::to_string(run.total_iterations) +
-                    " coupling iterations, max volume-balance error " + balance);
+    char summary[200];
+    std::snprintf(summary, sizeof summary,
+                  "%d steps, %d coupling iterations, max volume-balance error %.2e; mechanics %.1f s, geometry %.1f s, "
+                  "flow %.1f s",
+                  run.n_steps, run.total_iterations, run.max_balance_error, mechanics_seconds, geometry_seconds,
+                  flow_seconds);
+    progress.finish(summary);
     if (!run.is_ok()) {
       std::cerr << "hmlattice run: numerical failure: " << run.message << "\n";
       exit_code = 1;

@@ -101,7 +101,10 @@ struct CoupledStepSummary {
   std::vector<double> pressure_history;
   FlowStepSummary flow;                ///< the last flow solve (volumes of this step, balance)
   int n_broken = 0;
-  double seconds = 0.0;
+  double seconds = 0.0;             ///< wall time of the step, of which:
+  double mechanics_seconds = 0.0;   ///< BeamMechanics::solve (back-substitutions)
+  double geometry_seconds = 0.0;    ///< deformed dual graph and FlowNetwork::update_geometry
+  double flow_seconds = 0.0;        ///< FlowNetwork::solve (refactorisation and solve)
   std::string message;  ///< empty when converged
   bool is_ok() const { return status == CoupledStatus::converged || status == CoupledStatus::accepted_unconverged; }
 };
