@@ -127,6 +127,8 @@ TEST_CASE("The measured E is linear in k_n and nu does not depend on k_n", "[lat
   CHECK(scaled.youngs_modulus == Approx(3.7 * one.youngs_modulus).epsilon(1e-9));
   CHECK(scaled.poisson_ratio == Approx(one.poisson_ratio).epsilon(1e-9));
   CHECK(scaled.boundary_youngs_modulus == Approx(3.7 * one.boundary_youngs_modulus).epsilon(1e-9));
+  CHECK(one.is_converged);
+  CHECK(one.message.empty());
 }
 
 TEST_CASE("A random lattice is isotropic within its sampling error: C66 = (C11 - C12)/2", "[lattice2d]") {

@@ -58,6 +58,10 @@ struct ElasticProperties {
   double boundary_poisson_ratio = 0.0;   ///< nu from boundary_stiffness
   int n_particles_used = 0;              ///< interior particles in the region
   double seconds = 0.0;                  ///< wall time (three assemblies, factorisations and solves)
+  /// All three solves succeeded (BeamMechanics::solve().is_converged()); if false the numbers above are
+  /// not to be trusted (e.g. a nearly singular stiffness from an extreme a) and `message` says why.
+  bool is_converged = true;
+  std::string message;  ///< empty when converged
 };
 
 /// Measures the relaxed elastic constants of `lattice` (a rectangle or a disk; centred at the origin)
