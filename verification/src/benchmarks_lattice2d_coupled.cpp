@@ -197,6 +197,11 @@ BenchmarkResult rudnicki_paper(const BenchmarkContext& ctx) {
     res.metrics.push_back({.name = b + ": error of p, N = 1e4 over N = 3e4", .value = coarse.max_error_p / fine.max_error_p,
                            .reference = 1.0, .tolerance = 1.0, .comparison = Comparison::at_least,
                            .justification = "issue 5: the error shrinks under refinement", .gating = true});
+    res.metrics.push_back({.name = b + ": error of u_r, N = 1e4 over N = 3e4", .value = coarse.max_error_u / fine.max_error_u,
+                           .reference = 1.0, .tolerance = 1.0, .comparison = Comparison::at_least,
+                           .justification = "issue 5: the error shrinks under refinement (measured 8.6% -> 6.5%: the "
+                                            "lattice goes from 6-9% low to 4-6% high, not yet in the asymptotic range)",
+                           .gating = true});
     if (outer == lt::BoundarySupport::free) {
       // The paper's other two variants at the fine resolution: same profiles within a few percent.
       const RudnickiOutcome one = run({.label = "free_N3e4_one_pass", .n_particles = 30000, .one_pass = true});
@@ -224,8 +229,11 @@ BenchmarkResult rudnicki_paper(const BenchmarkContext& ctx) {
   res.notes.push_back(
       "The analytic solution uses the calibrated lattice's nu = " + fmt(lt::calibrated_continuum().poisson_ratio) +
       ", the model's E/M and vol_strain = plane-strain (the lattice's volumetric strain is the triangle-area change, "
-      "eps_xx + eps_yy). Rudnicki's plane is unbounded; the disk's free boundary raises u_r and the fixed one lowers "
-      "it by an amount growing with r. The CSV of every run is in rudnicki_<run>/ (series.csv, radial.csv).");
+      "eps_xx + eps_yy). Rudnicki's plane is unbounded; at t* = 3e-4 the disk's outer boundary hardly matters for "
+      "r* <= 0.05 (free and fixed differ by < 0.5% there). Measured (2026-11-22): the drained split converges to the "
+      "iterated undrained profiles to 4e-8 in 1.5x the passes; one pass per step differs from the converged profiles "
+      "by up to 5% (p in the tail), more than the paper's 'no significant differences'. "
+      "The CSV of every run is in rudnicki_<run>/ (series.csv, radial.csv).");
   return res;
 }
 
