@@ -155,6 +155,10 @@ void CalibrationSpec::validate() const {
     throw hm::InputError("calibration.rectangle_side = " + format_value(rectangle_side) +
                          ", allowed: a rectangle of at least 500 particles at n_particles = " +
                          std::to_string(n_particles) + " (it holds " + std::to_string(n_rectangle) + ")");
+  if (n_rectangle > 5'000'000)  // generate_lattice's limit
+    throw hm::InputError("calibration.n_particles = " + std::to_string(n_particles) +
+                         ", allowed: a rectangle of at most 5e6 particles at rectangle_side = " +
+                         format_value(rectangle_side) + " (it would hold " + std::to_string(n_rectangle) + ")");
   if (seeds.empty()) throw hm::InputError("calibration.seeds = [], allowed: at least one seed");
   require_positive(target_youngs_modulus, "calibration.target_youngs_modulus");
   require_open(target_poisson_ratio, "calibration.target_poisson_ratio", -1.0, 0.5);

@@ -191,6 +191,7 @@ TEST_CASE("Calibration inputs: defaults are valid and each bad value is rejected
     CHECK_THROWS_AS(spec.validate(), hm::InputError);
   };
   rejects([](CalibrationSpec& s) { s.n_particles = 100; }, "calibration.n_particles");
+  rejects([](CalibrationSpec& s) { s.n_particles = 5'000'000; }, "calibration.n_particles");
   rejects([](CalibrationSpec& s) { s.rectangle_side = -1; }, "calibration.rectangle_side");
   rejects([](CalibrationSpec& s) { s.rectangle_side = 0.2; }, "calibration.rectangle_side");
   rejects([](CalibrationSpec& s) { s.seeds.clear(); }, "calibration.seeds");
