@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "hm/analytic/lame.hpp"
@@ -59,6 +60,7 @@ BenchmarkResult calibration(const BenchmarkContext& ctx) {
   const std::vector<long long> densities = ctx.tier == Tier::paper ? std::vector<long long>{2500, 10000, 40000, 100000}
                                                                    : std::vector<long long>{2500, 10000};
   double e_default = 0, nu_default = 0, iso_default = 0;
+  std::vector<std::pair<long long, double>> e_by_density;
   for (long long n : densities) {
     const std::vector<std::uint64_t> seeds = n > 40000 ? std::vector<std::uint64_t>{1} : std::vector<std::uint64_t>{1, 2, 3};
     std::vector<double> e, nu;
@@ -88,6 +90,7 @@ BenchmarkResult calibration(const BenchmarkContext& ctx) {
     }
     by_density.rows.push_back({std::to_string(n), std::to_string(seeds.size()), fmt(em), fmt(std::sqrt(es)), fmt(nm),
                                fmt(std::sqrt(ns)), pct(worst_iso)});
+    e_by_density.emplace_back(n, em);
     if (n == 10000) {
       e_default = em;
       nu_default = nm;
@@ -100,6 +103,13 @@ BenchmarkResult calibration(const BenchmarkContext& ctx) {
                          .tolerance = 0.02, .comparison = Comparison::rel_error,
                          .justification = "the issue's 2% (k_n is scaled for E = 1 on exactly these lattices, so "
                                           "the check guards the stored constants)"});
+  for (auto [n, em] : e_by_density)
+    if (n != 10000)
+      res.metrics.push_back({.name = "E at another density, N = " + std::to_string(n) + " (constants from N = 1e4)",
+                             .value = em, .reference = target_e, .tolerance = 0.02, .comparison = Comparison::rel_error,
+                             .justification = "the issue's 2%, on lattices the calibration did not see; E is "
+                                              "spacing-independent for per-beam k_n up to a measured drift of "
+                                              "+0.6% (2.5e3) to -0.6% (1e5)"});
   res.metrics.push_back({.name = "nu, mean over seeds 1-3 at N = 1e4, against the target 0.25", .value = nu_default,
                          .reference = target_nu, .tolerance = 0.02, .comparison = Comparison::abs_error,
                          .justification = unreachable_reason, .gating = false});
