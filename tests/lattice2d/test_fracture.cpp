@@ -95,6 +95,36 @@ TEST_CASE("Load stepping breaks beams in load order and never heals one", "[latt
   for (const auto& ev : r.breaks) CHECK(run.states_per_step.back()[static_cast<std::size_t>(ev.beam)] != BeamState::intact);
 }
 
+TEST_CASE("A pulled square fails completely: the crack crosses it and the load drops to zero", "[lattice2d]") {
+  const Lattice lattice = square();
+  BoundaryConditions bc = uniaxial_pull(lattice, 1.0);
+  std::vector<int> top;
+  for (const auto& pd : bc.prescribed)
+    if (pd.component == 1 && pd.value > 0) top.push_back(pd.particle);
+  BeamMechanics mechanics(lattice, BeamParameters{}, bc);
+  const DualGraph dual = build_dual_graph(lattice);
+  const BeamStrengths strengths = draw_beam_strengths(strength_spec(), lattice.n_beams());
+  LoadSteppingOptions options;
+  options.load_increment = 2e-5;
+  options.max_load = 1e-2;
+  double peak = 0, last = 0;
+  const LoadingResult r = run_load_stepping(mechanics, dual, strengths, options, [&](const LoadStep& s, const BeamMechanics& m) {
+    const Eigen::VectorXd reaction = m.reactions();
+    double force = 0;
+    for (int p : top) force += reaction[3 * p + 1];
+    last = s.load * force;
+    peak = std::max(peak, last);
+    return !(s.n_breaks_total > 0 && last < 1e-3 * peak);
+  });
+  INFO(r.message);
+  REQUIRE(r.status == LoadingStatus::stopped);  // by the observer, not a cap or a failed solve
+  CHECK(peak > 0);
+  CHECK(std::abs(last) < 1e-3 * peak);
+  double x_lo = 1, x_hi = -1;
+  for (const auto& ev : r.breaks) x_lo = std::min(x_lo, ev.position.x()), x_hi = std::max(x_hi, ev.position.x());
+  CHECK(x_hi - x_lo > 0.8);  // across the unit width, up to a spacing (~0.04) at each side
+}
+
 TEST_CASE("Same seeds give an identical break sequence, other strength seeds a different one", "[lattice2d]") {
   const PullRun a = pull(3, 5), b = pull(3, 5), c = pull(3, 6);
   REQUIRE(a.result.breaks.size() == b.result.breaks.size());
