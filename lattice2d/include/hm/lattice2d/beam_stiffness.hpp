@@ -23,8 +23,9 @@
 
 namespace hm::lattice2d {
 
-/// Beam constants of Eqs. 3-4. The defaults are placeholders until the lattice calibration
-/// (E = 1, nu = 0.25 measured on the lattice) chooses them.
+/// Beam constants of Eqs. 3-4. The defaults are generic unit values; the calibrated constants
+/// (E = 1, nu = 0.2236 measured on the lattice, docs/lattice.md "Calibration") come from
+/// calibrated_beam_parameters() in calibration.hpp, which every model should use.
 struct BeamParameters {
   /// k_n, normal spring constant (Eq. 3), the same for every beam. Allowed: > 0.
   double normal_stiffness = 1.0;
