@@ -100,7 +100,16 @@ BeamStress current_beam_stress(const BeamMechanics& mechanics, const DualGraph& 
                                double stress_scale) {
   const Lattice& lattice = mechanics.lattice();
   assert(dual.particle_area.size() == lattice.n_particles() && "dual graph of another lattice");
-  const BeamForces forces = compute_beam_forces(lattice, mechanics.parameters(), mechanics.displacement(), mechanics.states());
+  // The mechanics' own connection forces (each beam in its local frame) rather than compute_beam_forces,
+  // which forms a 6 x 6 element matrix per beam: the same F_ij and moments (tested in test_mechanics),
+  // and the O(N) stress evaluation after every break is the break loop's main cost besides the re-solve.
+  const std::vector<BeamForce> connection = mechanics.beam_forces();
+  BeamForces forces{Eigen::Matrix2Xd(2, lattice.n_beams()), Eigen::Matrix2Xd(2, lattice.n_beams())};
+  for (int e = 0; e < lattice.n_beams(); ++e) {
+    const BeamForce& f = connection[static_cast<std::size_t>(e)];
+    forces.force.col(e) = f.force_on_i;
+    forces.moment.col(e) = Eigen::Vector2d(f.moment_i, f.moment_j);
+  }
   BeamStress stress = compute_beam_stress(lattice, compute_particle_stress(lattice, dual, forces), mechanics.states(), crack_tip);
   return stress_scale == 1.0 ? stress : scaled(std::move(stress), stress_scale);
 }

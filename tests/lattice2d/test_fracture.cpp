@@ -185,6 +185,28 @@ TEST_CASE("The load factor convention equals solving at the scaled load", "[latt
   }
 }
 
+TEST_CASE("current_beam_stress equals the compute_beam_forces path on a cracked lattice", "[lattice2d]") {
+  // It takes the forces from BeamMechanics::beam_forces (local frames) instead of compute_beam_forces.
+  const Lattice lattice = square();
+  const DualGraph dual = build_dual_graph(lattice);
+  const BeamStrengths strengths = draw_beam_strengths(strength_spec(), lattice.n_beams());
+  BeamMechanics m(lattice, BeamParameters{}, uniaxial_pull(lattice, 1.0));
+  BreakLoopOptions options;
+  options.max_breaks = 25;
+  std::vector<BreakEvent> log;
+  break_until_stable(m, dual, strengths, options, 4e-4, log, 4e-4);
+  m.solve();
+  int n_broken = 0;
+  for (BeamState s : m.states()) n_broken += s != BeamState::intact;
+  REQUIRE(n_broken == 25);
+  const BeamStress fast = current_beam_stress(m, dual, {}, 2.0);
+  const BeamForces forces = compute_beam_forces(lattice, m.parameters(), m.displacement(), m.states());
+  const BeamStress slow = compute_beam_stress(lattice, compute_particle_stress(lattice, dual, forces), m.states());
+  const double scale = slow.stress.cwiseAbs().maxCoeff();
+  CHECK((fast.stress - 2.0 * slow.stress).cwiseAbs().maxCoeff() <= 1e-12 * scale);  // round-off
+  CHECK((fast.crack_tip_factor - slow.crack_tip_factor).cwiseAbs().maxCoeff() == 0.0);
+}
+
 TEST_CASE("The break loop stops only when no intact beam reaches its threshold", "[lattice2d]") {
   const Lattice lattice = square();
   const DualGraph dual = build_dual_graph(lattice);
