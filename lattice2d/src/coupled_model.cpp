@@ -174,6 +174,7 @@ CoupledStepSummary CoupledModel::step(double dt) {
     summary.pressure_residual = relative_change(p, p_guess, false);
     summary.displacement_residual = relative_change(u, u_prev, true);
     summary.pressure_history.push_back(summary.pressure_residual);
+    if (pass_observer_) pass_observer_(k, p, u);
     p_guess = p;
     u_prev = u;
     if (summary.pressure_residual <= options_.pressure_tolerance &&

@@ -180,3 +180,19 @@ TEST_CASE("run() lands on the output times, grows dt geometrically and caps it",
   CHECK(*std::max_element(dts.begin(), dts.end()) <= 8e-6 * (1 + 1e-12));
   CHECK(run.n_steps == static_cast<int>(dts.size()));
 }
+
+TEST_CASE("The pass observer sees every pass of a step, the last one being the accepted state", "[lattice2d]") {
+  const Lattice lattice = make_lattice(DomainShape::disk, 1000);
+  CoupledModel model = make_model(lattice, CouplingOptions{});
+  int calls = 0;
+  Eigen::VectorXd last_p;
+  model.set_pass_observer([&](int pass, const Eigen::VectorXd& p, const Eigen::VectorXd&) {
+    CHECK(pass == ++calls);
+    last_p = p;
+  });
+  const CoupledStepSummary s = model.step(2e-5);
+  REQUIRE(s.is_ok());
+  CHECK(calls == s.iterations);
+  CHECK(static_cast<int>(s.pressure_history.size()) == s.iterations);
+  CHECK((last_p - model.pressure()).cwiseAbs().maxCoeff() == 0.0);
+}

@@ -9,6 +9,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -146,6 +147,11 @@ class CoupledModel {
   /// Initial state (observer at t = 0), then while time remains, a step. Stops at the first failed step.
   CoupledRunSummary run(const TimeStepping& stepping, const Observer& observer = {});
 
+  /// Called after every pass of step() with the pass number (1-based), that pass's flow pressure
+  /// (trial, size n_unknowns) and displacement: for studies of the iteration itself (Fig. 8).
+  using PassObserver = std::function<void(int pass, const Eigen::VectorXd& pressure, const Eigen::VectorXd& displacement)>;
+  void set_pass_observer(PassObserver observer) { pass_observer_ = std::move(observer); }
+
   double time() const { return flow_->time(); }
   const Lattice& lattice() const { return mechanics_->lattice(); }
   /// Displacement u^n (3 n_particles) of the last accepted step.
@@ -177,6 +183,7 @@ class CoupledModel {
   Eigen::VectorXd springs_;
   Eigen::VectorXd displacement_;
   Eigen::VectorXd volume_;  // V^n per unknown
+  PassObserver pass_observer_;
 };
 
 }  // namespace hm::lattice2d
