@@ -71,7 +71,8 @@ struct BreakLoopSummary {
 };
 
 /// Beam stresses (with the crack-tip factor) of `mechanics`' current solution, times stress_scale:
-/// compute_beam_forces -> compute_particle_stress (V_i from `dual`) -> compute_beam_stress.
+/// mechanics.beam_forces() (equal to compute_beam_forces, tested, without its 6 x 6 per beam) ->
+/// compute_particle_stress (V_i from `dual`) -> compute_beam_stress.
 /// Only beam forces enter the particle stress (as in Section 2.1): external forces (crack-face or
 /// pore pressure) are loads, not stresses. Precondition: dual built from mechanics.lattice().
 BeamStress current_beam_stress(const BeamMechanics& mechanics, const DualGraph& dual,
