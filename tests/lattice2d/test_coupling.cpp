@@ -1,5 +1,7 @@
 #include <catch2/catch.hpp>
 
+#include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -9,6 +11,7 @@
 #include "hm/lattice2d/beam_stiffness.hpp"
 #include "hm/lattice2d/coupling.hpp"
 #include "hm/lattice2d/mechanics.hpp"
+#include "hm/lattice2d/spd_solver.hpp"
 
 using namespace hm::lattice2d;
 
@@ -201,4 +204,46 @@ TEST_CASE("Springs relaxed at the drained solution leave it unchanged: (K + K_ps
     REQUIRE_THROWS_AS(undrained.set_normal_springs(bad), hm::InputError);
     REQUIRE_THROWS_AS(undrained.set_normal_springs(Eigen::VectorXd::Zero(5)), hm::InputError);
   }
+}
+
+TEST_CASE("Timing: the Eq. 20 springs by refactorisation against a rank-n_beams CHOLMOD update", "[lattice2d][slow]") {
+  // The measurement behind docs/coupling.md, section 2 ("Implementation"). Prints, asserts only that
+  // both routes give the same matrix.
+  const Lattice lattice = make_lattice(DomainShape::disk, 10000);
+  const DualGraph dual = build_dual_graph(lattice);
+  const BeamMechanics mechanics(lattice, BeamParameters{}, BoundaryConditions{});
+  const Eigen::VectorXd k = undrained_spring_stiffness(lattice, dual, CouplingParameters{});
+  std::vector<int> free_index(static_cast<std::size_t>(3 * lattice.n_particles()), -1);
+  int n_free = 0;
+  for (std::size_t d = 0; d < free_index.size(); ++d)
+    if (!mechanics.held_dofs()[d]) free_index[d] = n_free++;
+  std::vector<Eigen::Triplet<double>> w;
+  for (int e = 0; e < lattice.n_beams(); ++e) {
+    const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
+    const Eigen::Vector2d n = lattice.direction.col(e);
+    const double s = std::sqrt(k[e]);
+    const std::array<std::pair<int, double>, 4> entries = {
+        std::pair{dof_index(i, 0), -s * n.x()}, {dof_index(i, 1), -s * n.y()}, {dof_index(j, 0), s * n.x()},
+        {dof_index(j, 1), s * n.y()}};
+    for (const auto& [dof, value] : entries)
+      if (free_index[static_cast<std::size_t>(dof)] >= 0) w.emplace_back(free_index[static_cast<std::size_t>(dof)], e, value);
+  }
+  SpdSolver::Matrix W(n_free, lattice.n_beams());
+  W.setFromTriplets(w.begin(), w.end());
+  const SpdSolver::Matrix A = mechanics.solver().matrix();
+  auto seconds = [](auto&& f) {
+    const auto t0 = std::chrono::steady_clock::now();
+    f();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  };
+  CholmodSolver refactor, update;
+  const SpdSolver::Matrix AW = A + SpdSolver::Matrix(W * W.transpose());
+  const double t_factor = seconds([&] { refactor.compute(AW); });
+  update.compute(A);
+  const double t_update = seconds([&] { update.modify(W, 1); });
+  std::printf("N = 1e4: springs by a new factorisation %.3f s, by a rank-%d update %.3f s\n", t_factor,
+              lattice.n_beams(), t_update);
+  const Eigen::VectorXd b = Eigen::VectorXd::Ones(n_free);
+  const Eigen::VectorXd x1 = refactor.solve(b), x2 = update.solve(b);
+  CHECK((x1 - x2).cwiseAbs().maxCoeff() < 1e-8 * x1.cwiseAbs().maxCoeff());
 }
