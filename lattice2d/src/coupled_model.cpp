@@ -18,6 +18,16 @@ CouplingSplit coupling_split_from_string(std::string_view name) {
   throw hm::InputError("coupling.split = '" + std::string(name) + "', allowed: undrained, drained");
 }
 
+std::string to_string(CouplingRelaxation relaxation) {
+  return relaxation == CouplingRelaxation::none ? "none" : "aitken";
+}
+
+CouplingRelaxation coupling_relaxation_from_string(std::string_view name) {
+  if (name == "none") return CouplingRelaxation::none;
+  if (name == "aitken") return CouplingRelaxation::aitken;
+  throw hm::InputError("coupling.relaxation = '" + std::string(name) + "', allowed: none, aitken");
+}
+
 std::string to_string(CoupledStatus status) {
   switch (status) {
     case CoupledStatus::converged: return "converged";
@@ -39,6 +49,8 @@ void CouplingOptions::validate() const {
   require_open(pressure_tolerance, "coupling.pressure_tolerance", 0.0, 1.0);
   require_open(displacement_tolerance, "coupling.displacement_tolerance", 0.0, 1.0);
   require_at_least(max_iterations, "coupling.max_iterations", 1);
+  if (!(initial_relaxation > 0.0 && initial_relaxation <= 1.0))
+    throw hm::InputError("coupling.initial_relaxation = " + format_value(initial_relaxation) + ", allowed: 0 < initial_relaxation <= 1");
   if (fracture) throw hm::InputError("fracture.enabled = true, allowed: false (fracture in the coupled model comes later)");
 }
 
@@ -138,6 +150,8 @@ CoupledStepSummary CoupledModel::step(double dt) {
   Eigen::VectorXd u_prev = displacement_;       // u^n: where the springs are relaxed at the first pass
   DualGraph dual;
   bool converged = false;
+  double omega = 1.0;     // Aitken relaxation factor
+  Eigen::VectorXd r_prev;  // last pressure residual (Aitken)
   for (int k = 1; k <= options_.max_iterations; ++k) {
     summary.iterations = k;
     // 1. Mechanics with the current pressure guess (Eq. 17) and the undrained predictor (Eq. 20).
@@ -175,7 +189,23 @@ CoupledStepSummary CoupledModel::step(double dt) {
     summary.displacement_residual = relative_change(u, u_prev, true);
     summary.pressure_history.push_back(summary.pressure_residual);
     if (pass_observer_) pass_observer_(k, p, u);
-    p_guess = p;
+    // Next pressure guess: the flow result, or with Aitken's dynamic relaxation (Kuettler & Wall 2008)
+    // p_guess += omega (p - p_guess), omega from the last two residuals r = p - p_guess. It changes the
+    // path, not the fixed point; it tames the borehole's feedback (docs/coupling.md, section 3).
+    if (options_.relaxation == CouplingRelaxation::aitken) {
+      const Eigen::VectorXd r = p - p_guess;
+      if (k == 1) {
+        omega = options_.initial_relaxation;
+      } else {
+        const Eigen::VectorXd dr = r - r_prev;
+        const double dr2 = dr.squaredNorm();
+        if (dr2 > 0.0) omega = std::clamp(-omega * r_prev.dot(dr) / dr2, -1.0, 1.0);
+      }
+      r_prev = r;
+      p_guess += omega * r;
+    } else {
+      p_guess = p;
+    }
     u_prev = u;
     if (summary.pressure_residual <= options_.pressure_tolerance &&
         summary.displacement_residual <= options_.displacement_tolerance) {

@@ -102,6 +102,8 @@ RunCase read_run_case(const std::filesystem::path& file) {
       throw InputError("max_iterations = " + std::to_string(max_it) + ", allowed: 1 <= max_iterations <= 1e6");
     o.max_iterations = static_cast<int>(max_it);
     o.accept_unconverged = cpl.get_bool("accept_unconverged", o.accept_unconverged);
+    o.relaxation = lt::coupling_relaxation_from_string(cpl.get_string("relaxation", lt::to_string(o.relaxation)));
+    o.initial_relaxation = cpl.get_double("initial_relaxation", o.initial_relaxation);
     cpl.reject_unknown();
     o.validate();
   });
@@ -167,7 +169,8 @@ std::string run_case_to_toml(const RunCase& c, const std::string& provenance_tom
      << "[coupling]\nsplit = \"" << lt::to_string(o.split) << "\"\npsi = " << v(o.psi) << "\nxi = " << v(o.xi)
      << "\npressure_tolerance = " << v(o.pressure_tolerance) << "\ndisplacement_tolerance = "
      << v(o.displacement_tolerance) << "\nmax_iterations = " << o.max_iterations
-     << "\naccept_unconverged = " << b(o.accept_unconverged) << "\n\n"
+     << "\naccept_unconverged = " << b(o.accept_unconverged) << "\nrelaxation = \"" << lt::to_string(o.relaxation)
+     << "\"\ninitial_relaxation = " << v(o.initial_relaxation) << "\n\n"
      << "[numerics]\ndt_initial = " << v(s.dt_initial) << "\ndt_growth = " << v(s.dt_growth) << "\ndt_max = "
      << v(s.dt_max) << "\nt_end = " << v(s.t_end) << "\n\n"
      << "[fracture]\nenabled = " << b(c.fracture_enabled) << "\n\n"

@@ -33,6 +33,16 @@ std::string to_string(CouplingSplit split);
 /// Inverse of to_string; throws hm::InputError "coupling.split = 'x', allowed: undrained, drained".
 CouplingSplit coupling_split_from_string(std::string_view name);
 
+/// How the pressure guess of the next pass is formed from the flow's result.
+enum class CouplingRelaxation {
+  none,    ///< the flow's pressure as it is (the paper's Fig. 5)
+  aitken,  ///< Aitken's dynamic relaxation of the pressure update (same fixed point; our addition)
+};
+/// "none" or "aitken".
+std::string to_string(CouplingRelaxation relaxation);
+/// Inverse of to_string; throws hm::InputError "coupling.relaxation = 'x', allowed: none, aitken".
+CouplingRelaxation coupling_relaxation_from_string(std::string_view name);
+
 /// Options of the coupling iteration (Fig. 5). Every default is set here.
 struct CouplingOptions {
   /// The split. Default undrained (the paper's primary scheme).
@@ -51,6 +61,11 @@ struct CouplingOptions {
   double displacement_tolerance = 1e-6;
   /// Cap on the mechanics -> flow iterations of one step. Allowed: >= 1.
   int max_iterations = 100;
+  /// Relaxation of the pressure guess between passes. Default none (the paper's loop). Our addition for
+  /// the borehole, whose stiff feedback makes the plain loop diverge (docs/coupling.md, section 3).
+  CouplingRelaxation relaxation = CouplingRelaxation::none;
+  /// First relaxation factor of the aitken variant. Our choice 0.5. Allowed: 0 < initial_relaxation <= 1.
+  double initial_relaxation = 0.5;
   /// Accept a step that hit max_iterations (the paper's "one iteration of both systems" with
   /// max_iterations = 1). Default false: such a step is a numerical failure (status not_converged).
   bool accept_unconverged = false;

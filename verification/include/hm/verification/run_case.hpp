@@ -6,7 +6,7 @@
 ///   [mechanics]  outer ("free" | "fixed"), solver ("cholmod" | "pcg")
 ///   [flow]       borehole_storage ("biot-modulus" | "none")
 ///   [coupling]   split ("undrained" | "drained"), psi, xi, pressure_tolerance, displacement_tolerance,
-///                max_iterations, accept_unconverged
+///                max_iterations, accept_unconverged, relaxation ("none" | "aitken"), initial_relaxation
 ///   [numerics]   dt_initial, dt_growth, dt_max, t_end
 ///   [fracture]   enabled (must be false for now: reserved for the fracture issue)
 ///   [output]     times, vtk, radial_bins, radial_max
