@@ -36,6 +36,7 @@ void LatticeSpec::validate() const {
     throw InputError("domain = " + to_string(domain) + ", allowed: disk, annulus, rectangle");
   require_closed(static_cast<double>(n_particles), "n_particles", 500.0, 5e6);
   require_closed(bridson_attempts, "bridson_attempts", 5.0, 1000.0);
+  require_closed(boundary_spacing_factor, "boundary_spacing_factor", 1.0, 1.35);
   if (domain == DomainShape::annulus) require_open(inner_radius, "inner_radius", 0.0, 1.0);
   if (domain == DomainShape::rectangle) {
     require_positive(width, "width");

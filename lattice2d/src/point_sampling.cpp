@@ -114,13 +114,16 @@ double initial_spacing_guess(const LatticeSpec& spec) {
 
 PointSet sample_points(const LatticeSpec& spec, double r, std::uint64_t stream_seed) {
   PointSet out;
+  // Boundary spacing h = boundary_spacing_factor * r (>= r, so the interior's spacing test still holds
+  // against boundary particles; default 1 = spacing in [r, ~1.01 r]).
+  const double h = spec.boundary_spacing_factor * r;
   switch (spec.domain) {
-    case DomainShape::disk: add_circle(1.0, r, BoundaryTag::outer, out); break;
+    case DomainShape::disk: add_circle(1.0, h, BoundaryTag::outer, out); break;
     case DomainShape::annulus:
-      add_circle(1.0, r, BoundaryTag::outer, out);
-      add_circle(spec.inner_radius, r, BoundaryTag::inner, out);
+      add_circle(1.0, h, BoundaryTag::outer, out);
+      add_circle(spec.inner_radius, h, BoundaryTag::inner, out);
       break;
-    case DomainShape::rectangle: add_rectangle(spec.width, spec.height, r, out); break;
+    case DomainShape::rectangle: add_rectangle(spec.width, spec.height, h, out); break;
   }
 
   const Box box = bounding_box(spec);

@@ -14,7 +14,7 @@ struct PointSet {
   std::vector<BoundaryTag> tags;
 };
 
-/// Boundary particles (evenly spaced, spacing in [r, ~1.01 r]) followed by Bridson interior
+/// Boundary particles (evenly spaced, spacing in [h, ~1.01 h], h = spec.boundary_spacing_factor r) followed by Bridson interior
 /// particles at least r from every particle, drawn from std::mt19937_64(stream_seed).
 /// Deterministic in (spec, r, stream_seed); spec.seed is not used here.
 PointSet sample_points(const LatticeSpec& spec, double r, std::uint64_t stream_seed);
