@@ -1,11 +1,14 @@
 #include "hm/lattice2d/beam_stiffness.hpp"
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <string>
 
 #include <Eigen/Cholesky>
 
 #include "hm/analytic/validation.hpp"
+#include "hm/analytic/input_error.hpp"
 
 namespace hm::lattice2d {
 
@@ -14,6 +17,50 @@ void BeamParameters::validate() const {
   require_positive(normal_stiffness, "normal_stiffness");
   require_positive(aspect, "aspect");
   require_open(beam_poisson, "beam_poisson", -1.0, 0.5);
+  const int scaling = static_cast<int>(stiffness_scaling);
+  if (scaling < 0 || scaling > static_cast<int>(StiffnessScaling::voronoi_facet))
+    throw InputError("stiffness_scaling = " + std::to_string(scaling) + ", allowed: uniform, voronoi_facet");
+  require_closed(facet_floor, "facet_floor", 0.0, 1.0 / std::sqrt(3.0));
+}
+
+namespace {
+
+// cot of the angle at vertex k of triangle t (the angle opposite its beam k).
+double opposite_cot(const Lattice& l, int t, int k) {
+  const auto& tri = l.triangles[static_cast<std::size_t>(t)];
+  auto vertex = [&](int m) { return l.points.col(tri[static_cast<std::size_t>(m % 3)]); };
+  const Eigen::Vector2d a = vertex(k + 1) - vertex(k), b = vertex(k + 2) - vertex(k);
+  return a.dot(b) / std::abs(a.x() * b.y() - a.y() * b.x());
+}
+
+double facet_ratio(const Lattice& l, int beam) {
+  double sum_cot = 0.0;
+  for (int t : l.beam_triangles[static_cast<std::size_t>(beam)]) {
+    if (t < 0) continue;
+    const auto& tb = l.triangle_beams[static_cast<std::size_t>(t)];
+    for (int k = 0; k < 3; ++k)
+      if (tb[static_cast<std::size_t>(k)] == beam) sum_cot += opposite_cot(l, t, k);
+  }
+  return 0.5 * sum_cot;  // d / L = (cot a_s + cot a_t) / 2
+}
+
+}  // namespace
+
+Eigen::VectorXd facet_ratios(const Lattice& lattice) {
+  Eigen::VectorXd r(lattice.n_beams());
+  for (int e = 0; e < lattice.n_beams(); ++e) r[e] = facet_ratio(lattice, e);
+  return r;
+}
+
+double beam_stiffness_factor(const Lattice& lattice, const BeamParameters& parameters, int beam) {
+  if (parameters.stiffness_scaling == StiffnessScaling::uniform) return 1.0;
+  return std::sqrt(3.0) * std::max(facet_ratio(lattice, beam), parameters.facet_floor);
+}
+
+BeamParameters beam_parameters_for(const Lattice& lattice, const BeamParameters& parameters, int beam) {
+  BeamParameters q = parameters;
+  q.normal_stiffness *= beam_stiffness_factor(lattice, parameters, beam);
+  return q;
 }
 
 double BeamParameters::rotational_stiffness() const {
@@ -84,7 +131,8 @@ Eigen::SparseMatrix<double> assemble_stiffness(const Lattice& lattice, const Bea
   for (int e = 0; e < lattice.n_beams(); ++e) {
     const BeamState state = states.empty() ? BeamState::intact : states[static_cast<std::size_t>(e)];
     if (state == BeamState::open) continue;
-    const Matrix6d k = beam_element_stiffness(lattice.length[e], lattice.angle[e], parameters, state);
+    const Matrix6d k =
+        beam_element_stiffness(lattice.length[e], lattice.angle[e], beam_parameters_for(lattice, parameters, e), state);
     const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
     const int dofs[6] = {dof_index(i, 0), dof_index(i, 1), dof_index(i, 2),
                          dof_index(j, 0), dof_index(j, 1), dof_index(j, 2)};

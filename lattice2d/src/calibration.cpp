@@ -163,6 +163,10 @@ void CalibrationSpec::validate() const {
   require_positive(target_youngs_modulus, "calibration.target_youngs_modulus");
   require_open(target_poisson_ratio, "calibration.target_poisson_ratio", -1.0, 0.5);
   require_open(beam_poisson, "calibration.beam_poisson", -1.0, 0.5);
+  if (stiffness_scaling != StiffnessScaling::uniform && stiffness_scaling != StiffnessScaling::voronoi_facet)
+    throw hm::InputError("calibration.stiffness_scaling = " + std::to_string(static_cast<int>(stiffness_scaling)) +
+                         ", allowed: uniform, voronoi_facet");
+  require_closed(facet_floor, "calibration.facet_floor", 0.0, 1.0 / std::sqrt(3.0));
   require_positive(aspect_min, "calibration.aspect_min");
   require_finite(aspect_max, "calibration.aspect_max");
   if (!(aspect_max > aspect_min))
@@ -201,6 +205,8 @@ Calibration calibrate_beams(const CalibrationSpec& spec) {
     beams.normal_stiffness = 1.0;
     beams.aspect = aspect;
     beams.beam_poisson = spec.beam_poisson;
+    beams.stiffness_scaling = spec.stiffness_scaling;
+    beams.facet_floor = spec.facet_floor;
     return beams;
   };
 

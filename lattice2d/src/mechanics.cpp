@@ -107,10 +107,11 @@ namespace {
 // Internal force K_e u_e of one beam in global components (x_i, y_i, w_i, x_j, y_j, w_j), evaluated in
 // the beam's local frame from n_ij (no 6 x 6 products, no trigonometry): the same numbers as
 // beam_element_stiffness(...) * u_e up to round-off, about ten times cheaper.
-Eigen::Matrix<double, 6, 1> internal_force(const Lattice& l, const BeamParameters& p, BeamState state, int e,
+Eigen::Matrix<double, 6, 1> internal_force(const Lattice& l, const BeamParameters& uniform_p, BeamState state, int e,
                                            const Eigen::VectorXd& u) {
   Eigen::Matrix<double, 6, 1> f = Eigen::Matrix<double, 6, 1>::Zero();
   if (state == BeamState::open) return f;
+  const BeamParameters p = beam_parameters_for(l, uniform_p, e);  // this beam's k_n (stiffness_scaling)
   const auto [i, j] = l.beams[static_cast<std::size_t>(e)];
   const double c = l.direction(0, e), s = l.direction(1, e), L = l.length[e];
   const double uxi = u[dof_index(i, 0)], uyi = u[dof_index(i, 1)], uxj = u[dof_index(j, 0)], uyj = u[dof_index(j, 1)];
@@ -267,7 +268,8 @@ void BeamMechanics::setup_system() {
   triplets.reserve(36 * static_cast<std::size_t>(lattice_.n_beams()));
   for (int e = 0; e < lattice_.n_beams(); ++e) {
     const auto d = beam_dofs(lattice_, e);
-    const Matrix6d k = beam_element_stiffness(lattice_.length[e], lattice_.angle[e], parameters_,
+    const Matrix6d k = beam_element_stiffness(lattice_.length[e], lattice_.angle[e],
+                                              beam_parameters_for(lattice_, parameters_, e),
                                               states_[static_cast<std::size_t>(e)]);
     Eigen::Matrix<double, 6, 1> uh;
     for (int a = 0; a < 6; ++a) uh[a] = held_value_[d[static_cast<std::size_t>(a)]];
@@ -321,7 +323,8 @@ void BeamMechanics::change_state(int beam, BeamState to) {
   const BeamState from = states_[static_cast<std::size_t>(beam)];
   if (from == to) return;
   // K_e(from) - K_e(to) (or the reverse) is a subset of the columns of beam_element_factor.
-  const Matrix63d V = beam_element_factor(lattice_.length[beam], lattice_.angle[beam], parameters_, BeamState::intact);
+  const Matrix63d V = beam_element_factor(lattice_.length[beam], lattice_.angle[beam],
+                                            beam_parameters_for(lattice_, parameters_, beam), BeamState::intact);
   std::vector<int> columns;
   int sigma = -1;
   if (from == BeamState::intact) columns = to == BeamState::contact ? std::vector<int>{1, 2} : std::vector<int>{0, 1, 2};

@@ -36,12 +36,13 @@ BeamForces compute_beam_forces(const Lattice& lattice, const BeamParameters& par
       // Eq. 8: k_n (L - L_eq) H(L_eq - L) n with the linearised stretch (u_j - u_i).n.
       const Eigen::Vector2d n = lattice.direction.col(e);
       const double stretch = (ue.segment<2>(3) - ue.segment<2>(0)).dot(n);
-      if (stretch < 0.0) out.force.col(e) = parameters.normal_stiffness * stretch * n;
+      if (stretch < 0.0)
+        out.force.col(e) = beam_parameters_for(lattice, parameters, e).normal_stiffness * stretch * n;
       continue;
     }
     // Internal force = -K_e u_e: the same matrix as the assembly, so forces and K u = f agree exactly.
     const Eigen::Matrix<double, 6, 1> f =
-        -beam_element_stiffness(lattice.length[e], lattice.angle[e], parameters, state) * ue;
+        -beam_element_stiffness(lattice.length[e], lattice.angle[e], beam_parameters_for(lattice, parameters, e), state) * ue;
     out.force.col(e) = f.segment<2>(0);
     out.moment.col(e) << f[2], f[5];
   }

@@ -23,6 +23,18 @@
 
 namespace hm::lattice2d {
 
+/// How k_n (and with it k_omega, which Eq. 4 makes proportional to k_n) varies from beam to beam.
+enum class StiffnessScaling : std::uint8_t {
+  /// The paper's: every beam has the same k_n.
+  uniform,
+  /// Our option (not in the paper): k_n,ij = k_n sqrt(3) max(d_ij / L_ij, facet_floor), d_ij the exact
+  /// Voronoi facet (dual) length (d_st, or d_su on the boundary). Each beam then stands for the
+  /// "diamond" of area d L / 2; the diamonds tile the domain, so an affine strain stores the energy of a
+  /// uniform continuum (central springs: nu = 1/4 in plane strain for the affine field). sqrt(3)
+  /// normalises to the regular triangular lattice (d/L = 1/sqrt(3) -> factor 1).
+  voronoi_facet,
+};
+
 /// Beam constants of Eqs. 3-4. The defaults are generic unit values; the calibrated constants
 /// (E = 1, nu = 0.2236 measured on the lattice, docs/lattice.md "Calibration") come from
 /// calibrated_beam_parameters() in calibration.hpp, which every model should use.
@@ -34,6 +46,12 @@ struct BeamParameters {
   double aspect = 1.0;
   /// nu0, Poisson ratio of the beam material (Eq. 4). Allowed: -1 < nu0 < 0.5.
   double beam_poisson = 0.25;
+  /// Per-beam variation of k_n (and k_omega). Default uniform (the paper's); docs/lattice.md
+  /// "Stiffness scaling and boundary spacing" has the measurements. Allowed: uniform, voronoi_facet.
+  StiffnessScaling stiffness_scaling = StiffnessScaling::uniform;
+  /// voronoi_facet only: floor on d/L in the factor, so that the beams of nearly co-circular
+  /// quadrilaterals (d -> 0) keep a little stiffness. Allowed: 0 <= facet_floor <= 1/sqrt(3).
+  double facet_floor = 0.0;
 
   void validate() const;
   /// k_omega = k_n (2/a^2 + 4 (1 + nu0))^-1 (text after Eq. 4).
@@ -48,6 +66,18 @@ enum class BeamState : std::uint8_t {
   contact,  ///< broken, particles overlapping: normal spring only, Eqs. 9-10
   open,     ///< broken, particles apart: no force (Eq. 8 with H = 0)
 };
+
+/// d/L of every beam of the undeformed lattice, d the exact Voronoi facet: (L/2)(cot a_s + cot a_t)
+/// with a_s, a_t the angles opposite the beam in its triangles (one triangle on the boundary). The
+/// same number as DualGraph::dual_length / length, computed from the lattice alone.
+Eigen::VectorXd facet_ratios(const Lattice& lattice);
+
+/// k_n,beam / k_n: 1 for uniform, sqrt(3) max(d/L, facet_floor) for voronoi_facet.
+double beam_stiffness_factor(const Lattice& lattice, const BeamParameters& parameters, int beam);
+
+/// `parameters` with normal_stiffness multiplied by beam_stiffness_factor (the constants that beam
+/// `beam` uses in every element matrix and force).
+BeamParameters beam_parameters_for(const Lattice& lattice, const BeamParameters& parameters, int beam);
 
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
 
@@ -71,7 +101,8 @@ Matrix63d beam_element_factor(double length, double angle, const BeamParameters&
 /// Degree of freedom of a particle's component (0 = x, 1 = y, 2 = rotation).
 constexpr int dof_index(int particle, int component) { return 3 * particle + component; }
 
-/// K (3 n x 3 n, both triangles stored) for the lattice's undeformed beam geometry; `states` is
+/// K (3 n x 3 n, both triangles stored) for the lattice's undeformed beam geometry, each beam with
+/// beam_parameters_for(lattice, parameters, e); `states` is
 /// empty (all intact) or one per beam. Validates `parameters` (throws hm::InputError).
 /// Singular until displacements are prescribed somewhere (three rigid-body modes per connected part).
 Eigen::SparseMatrix<double> assemble_stiffness(const Lattice& lattice, const BeamParameters& parameters,

@@ -101,6 +101,12 @@ struct CalibrationSpec {
   /// rotations nearly unrestrained. Allowed: 0 < aspect_min < aspect_max.
   double aspect_min = 0.05;
   double aspect_max = 2.0;
+  /// Per-beam stiffness variation of the calibrated beams (BeamParameters::stiffness_scaling and
+  /// facet_floor). Default uniform (the paper's, and the stored constants'); with voronoi_facet the
+  /// central-force limit of nu is ~0.32, so nu = 0.25 lies inside the bracket (docs/lattice.md,
+  /// "Stiffness scaling and boundary spacing: measurements").
+  StiffnessScaling stiffness_scaling = StiffnessScaling::uniform;
+  double facet_floor = 0.0;
   /// Stop when the seed-mean nu is within this of the target. Allowed: > 0.
   double poisson_tolerance = 2e-4;
   /// Cap on the bisection steps. Allowed: >= 1.
