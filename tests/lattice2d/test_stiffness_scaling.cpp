@@ -1,7 +1,7 @@
 // Tests of the two lattice options against the dry lattice's defects (docs/lattice.md, "Stiffness
 // scaling and boundary spacing: measurements"): BeamParameters::stiffness_scaling = voronoi_facet
 // (k_n,ij = k_n sqrt(3) max(d/L, floor)) and LatticeSpec::boundary_spacing_factor. The hidden
-// "[.][measure]" case re-measures the comparison table of the docs (~2 min at N = 1e4).
+// "[.][measure][slow]" case re-measures the comparison table of the docs (~25 s per seed at N = 1e4).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -306,7 +306,7 @@ void measure(const Option& o, long long n, std::uint64_t seed) {
 
 }  // namespace
 
-TEST_CASE("measure the stiffness-scaling and boundary-spacing options", "[.][measure]") {
+TEST_CASE("measure the stiffness-scaling and boundary-spacing options", "[.][measure][slow]") {
   const char* env = std::getenv("HM_MEASURE_N");
   const long long n = env ? std::atoll(env) : 10000;
   const char* seeds_env = std::getenv("HM_MEASURE_SEEDS");
