@@ -77,8 +77,6 @@ ElasticProperties measure_elastic_properties(const Lattice& lattice, const BeamP
                          ", allowed: a region holding at least one interior particle");
 
   const DualGraph dual = build_dual_graph(lattice);
-  double region_area = 0.0;
-  for (int i : chosen) region_area += dual.particle_area[i];
   const double body_area = dual.particle_area.sum();  // the polygon through the boundary particles
 
   ElasticProperties out;
@@ -99,16 +97,9 @@ ElasticProperties measure_elastic_properties(const Lattice& lattice, const BeamP
 
     const ParticleStress stress =
         compute_particle_stress(lattice, dual, compute_beam_forces(lattice, parameters, mechanics.displacement()));
-    Eigen::Vector3d weighted = Eigen::Vector3d::Zero(), mean = Eigen::Vector3d::Zero();
-    for (int i : chosen) {
-      weighted += dual.particle_area[i] * stress.stress.col(i);
-      mean += stress.stress.col(i);
-    }
-    mean /= static_cast<double>(chosen.size());
-    Eigen::Vector3d variance = Eigen::Vector3d::Zero();
-    for (int i : chosen) variance += (stress.stress.col(i) - mean).cwiseAbs2();
-    out.stiffness.col(k) = weighted / region_area;
-    out.scatter.col(k) = (variance / static_cast<double>(chosen.size())).cwiseSqrt();
+    const RegionStress region_mean = region_stress(stress, dual, chosen);
+    out.stiffness.col(k) = region_mean.area_mean;
+    out.scatter.col(k) = region_mean.scatter;
 
     // Virial of the external forces: the body's mean stress is sum_b x_b (x) R_b / area.
     const Eigen::VectorXd reactions = mechanics.reactions();

@@ -126,6 +126,24 @@ PlaneStrainModuli plane_strain_moduli(double c11, double c12) {
   return {c11 * (1.0 + nu) * (1.0 - 2.0 * nu) / (1.0 - nu), nu};
 }
 
+RegionStress region_stress(const ParticleStress& stress, const DualGraph& dual, const std::vector<int>& particles) {
+  assert(!particles.empty() && "region_stress: no particles");
+  RegionStress out;
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  double area = 0.0;
+  for (int i : particles) {
+    out.area_mean += dual.particle_area[i] * stress.stress.col(i);
+    area += dual.particle_area[i];
+    mean += stress.stress.col(i);
+  }
+  out.area_mean /= area;
+  mean /= static_cast<double>(particles.size());
+  Eigen::Vector3d variance = Eigen::Vector3d::Zero();
+  for (int i : particles) variance += (stress.stress.col(i) - mean).cwiseAbs2();
+  out.scatter = (variance / static_cast<double>(particles.size())).cwiseSqrt();
+  return out;
+}
+
 AffineStiffness affine_effective_stiffness(const Lattice& lattice, const BeamParameters& parameters,
                                            const AveragingRegion& region) {
   parameters.validate();
@@ -142,9 +160,6 @@ AffineStiffness affine_effective_stiffness(const Lattice& lattice, const BeamPar
   const DualGraph dual = build_dual_graph(lattice);
   AffineStiffness out;
   out.n_particles_used = static_cast<int>(chosen.size());
-  double total_area = 0.0;
-  for (int i : chosen) total_area += dual.particle_area[i];
-
   for (int k = 0; k < 3; ++k) {
     Eigen::Matrix2d eps = Eigen::Matrix2d::Zero();  // unit Voigt strain state k (engineering shear)
     if (k < 2) eps(k, k) = 1.0;
@@ -152,16 +167,9 @@ AffineStiffness affine_effective_stiffness(const Lattice& lattice, const BeamPar
     Eigen::VectorXd u = Eigen::VectorXd::Zero(3 * lattice.n_particles());
     for (int i = 0; i < lattice.n_particles(); ++i) u.segment<2>(dof_index(i, 0)) = eps * lattice.points.col(i);
     const ParticleStress stress = compute_particle_stress(lattice, dual, compute_beam_forces(lattice, parameters, u));
-    Eigen::Vector3d weighted = Eigen::Vector3d::Zero(), mean = Eigen::Vector3d::Zero();
-    for (int i : chosen) {
-      weighted += dual.particle_area[i] * stress.stress.col(i);
-      mean += stress.stress.col(i);
-    }
-    mean /= static_cast<double>(chosen.size());
-    Eigen::Vector3d variance = Eigen::Vector3d::Zero();
-    for (int i : chosen) variance += (stress.stress.col(i) - mean).cwiseAbs2();
-    out.stiffness.col(k) = weighted / total_area;
-    out.scatter.col(k) = (variance / static_cast<double>(chosen.size())).cwiseSqrt();
+    const RegionStress region_mean = region_stress(stress, dual, chosen);
+    out.stiffness.col(k) = region_mean.area_mean;
+    out.scatter.col(k) = region_mean.scatter;
   }
 
   const double c11 = 0.5 * (out.stiffness(0, 0) + out.stiffness(1, 1));

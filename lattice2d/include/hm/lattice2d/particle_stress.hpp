@@ -133,6 +133,15 @@ struct AffineStiffness {
 AffineStiffness affine_effective_stiffness(const Lattice& lattice, const BeamParameters& parameters,
                                            const AveragingRegion& region = {});
 
+/// Mean particle stress over a set of particles, weighted by their Voronoi areas (the region's
+/// average stress), and the particle-to-particle standard deviation (unweighted), both in Voigt
+/// order (xx, yy, xy). `particles` must not be empty.
+struct RegionStress {
+  Eigen::Vector3d area_mean = Eigen::Vector3d::Zero();
+  Eigen::Vector3d scatter = Eigen::Vector3d::Zero();
+};
+RegionStress region_stress(const ParticleStress& stress, const DualGraph& dual, const std::vector<int>& particles);
+
 /// Plane-strain (E, nu) from the isotropic stiffness entries C11 = E(1-nu)/((1+nu)(1-2nu)) and
 /// C12 = E nu/((1+nu)(1-2nu)): nu = C12/(C11 + C12), E = C11 (1+nu)(1-2nu)/(1-nu).
 /// Precondition: C11 > |C12|.
