@@ -6,18 +6,13 @@
 
 #include "hm/analytic/input_error.hpp"
 #include "hm/lattice2d/coupled_model.hpp"
+#include "lattice2d/lattice_fixtures.hpp"
 
 using namespace hm::lattice2d;
+using hm::test::make_lattice;
 
 namespace {
 
-Lattice make_lattice(DomainShape shape, long long n, std::uint64_t seed = 1) {
-  LatticeSpec spec;
-  spec.domain = shape;
-  spec.n_particles = n;
-  spec.seed = seed;
-  return generate_lattice(spec);
-}
 
 // Section 3.1's point injection: Q = 0.1, b = 0.5, E/M of Table 1 at b = 0.5, free outer boundary.
 FlowParameters rudnicki_flow() {

@@ -12,18 +12,13 @@
 #include "hm/lattice2d/coupling.hpp"
 #include "hm/lattice2d/mechanics.hpp"
 #include "hm/lattice2d/spd_solver.hpp"
+#include "lattice2d/lattice_fixtures.hpp"
 
 using namespace hm::lattice2d;
+using hm::test::make_lattice;
 
 namespace {
 
-Lattice make_lattice(DomainShape shape, long long n, std::uint64_t seed = 1) {
-  LatticeSpec spec;
-  spec.domain = shape;
-  spec.n_particles = n;
-  spec.seed = seed;
-  return generate_lattice(spec);
-}
 
 // Net pressure force on particle i against the continuum body force -xi b V_i grad p.
 struct GradientError {

@@ -8,18 +8,13 @@
 #include "hm/analytic/input_error.hpp"
 #include "hm/lattice2d/dual_graph.hpp"
 #include "hm/lattice2d/lattice.hpp"
+#include "lattice2d/lattice_fixtures.hpp"
 
 using namespace hm::lattice2d;
+using hm::test::spec_of;
 
 namespace {
 
-LatticeSpec spec_of(DomainShape shape, long long n, std::uint64_t seed = 1) {
-  LatticeSpec spec;
-  spec.domain = shape;
-  spec.n_particles = n;
-  spec.seed = seed;
-  return spec;
-}
 
 // Shoelace area of the boundary polygon(s), from the boundary particles, which are generated in
 // counter-clockwise order on each curve: outer polygon minus the borehole polygon.

@@ -12,20 +12,15 @@
 #include "hm/analytic/steady_borehole.hpp"
 #include "hm/lattice2d/flow_network.hpp"
 #include "hm/lattice2d/radial_average.hpp"
+#include "lattice2d/lattice_fixtures.hpp"
 
 using namespace hm::lattice2d;
+using hm::test::make_lattice;
 
 namespace {
 
 constexpr double pi = std::numbers::pi;
 
-Lattice make_lattice(DomainShape shape, long long n, std::uint64_t seed = 1) {
-  LatticeSpec spec;
-  spec.domain = shape;
-  spec.n_particles = n;
-  spec.seed = seed;
-  return generate_lattice(spec);
-}
 
 DualGraph dual_with_floor(const Lattice& lattice, double min_dual_ratio) {
   DualGraphOptions options;

@@ -8,18 +8,13 @@
 #include "approx.hpp"
 #include "hm/analytic/input_error.hpp"
 #include "hm/lattice2d/lattice.hpp"
+#include "lattice2d/lattice_fixtures.hpp"
 
 using namespace hm::lattice2d;
+using hm::test::spec_of;
 
 namespace {
 
-LatticeSpec spec_of(DomainShape shape, long long n, std::uint64_t seed = 1) {
-  LatticeSpec spec;
-  spec.domain = shape;
-  spec.n_particles = n;
-  spec.seed = seed;
-  return spec;
-}
 
 // The message of the hm::InputError thrown by `f`, or "" if none.
 template <class F>

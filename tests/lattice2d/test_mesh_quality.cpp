@@ -8,17 +8,12 @@
 #include "hm/lattice2d/dual_graph.hpp"
 #include "hm/lattice2d/lattice.hpp"
 #include "hm/lattice2d/mesh_quality.hpp"
+#include "lattice2d/lattice_fixtures.hpp"
 
 using namespace hm::lattice2d;
+using hm::test::spec_of;
 
 namespace {
-LatticeSpec spec_of(DomainShape shape, long long n, std::uint64_t seed = 1) {
-  LatticeSpec spec;
-  spec.domain = shape;
-  spec.n_particles = n;
-  spec.seed = seed;
-  return spec;
-}
 }  // namespace
 
 TEST_CASE("The mesh-quality report is consistent with the lattice", "[lattice2d]") {
