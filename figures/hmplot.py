@@ -52,6 +52,16 @@ def read_csv(path):
     return {name: data[:, i] for i, name in enumerate(header)}
 
 
+def read_break_log(path):
+    """The break log's columns as numpy arrays; the text column `mode` is kept as strings."""
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    if not rows:
+        raise SystemExit(f"{path}: no breaks")
+    return {k: (np.array([r[k] for r in rows]) if k == "mode" else np.array([float(r[k]) for r in rows]))
+            for k in rows[0]}
+
+
 def group_by(columns, key):
     """Split a column dict into {value of `key`: column dict}, in order of first appearance."""
     groups = defaultdict(list)

@@ -4,7 +4,6 @@ Reads lattice2d_cylinder_breaks.csv (the break log of the run with +-5% strength
 sigma_1, ..., mode). Left: the broken beams' midpoints around the borehole (R_i = 0.138), coloured by
 break order, the first break marked. Right: the borehole pressure of each break over Lamé's p_crit.
 """
-import csv
 import os
 
 import matplotlib.pyplot as plt
@@ -16,18 +15,8 @@ T_U, R_I = 2e-4, 0.138
 P_CRIT = T_U * (1 - R_I**2) / (1 + R_I**2)  # Lamé, free outer boundary R_o = 1
 
 
-def read_break_log(path):
-    """The break log's columns as numpy arrays; the text column `mode` is kept as strings."""
-    with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
-    if not rows:
-        raise SystemExit(f"{path}: no breaks")
-    return {k: (np.array([r[k] for r in rows]) if k == "mode" else np.array([float(r[k]) for r in rows]))
-            for k in rows[0]}
-
-
 args = hmplot.arguments(__doc__)
-b = read_break_log(os.path.join(args.data, "lattice2d_cylinder_breaks.csv"))
+b = hmplot.read_break_log(os.path.join(args.data, "lattice2d_cylinder_breaks.csv"))
 
 fig, axes = plt.subplots(1, 2, figsize=(9, 3.8))
 t = np.linspace(0, 2 * np.pi, 400)

@@ -4,30 +4,18 @@ Reads lattice2d_uniaxial_tension.csv (strain, mean_stress, n_broken, next_break_
 step) and lattice2d_uniaxial_tension_breaks.csv (the break log: x, y, strain, sigma_1, ..., mode).
 Left: mean stress / T_u against strain. Right: the broken beams' midpoints, coloured by break order.
 """
-import csv
 import os
 
 import matplotlib.pyplot as plt
-import numpy as np
 
 import hmplot
 
 T_U = 2e-4  # Table 1 T_u/E, the benchmark's mean strength
 
 
-def read_break_log(path):
-    """The break log's columns as numpy arrays; the text column `mode` is kept as strings."""
-    with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
-    if not rows:
-        raise SystemExit(f"{path}: no breaks")
-    return {k: (np.array([r[k] for r in rows]) if k == "mode" else np.array([float(r[k]) for r in rows]))
-            for k in rows[0]}
-
-
 args = hmplot.arguments(__doc__)
 steps = hmplot.read_csv(os.path.join(args.data, "lattice2d_uniaxial_tension.csv"))
-breaks = read_break_log(os.path.join(args.data, "lattice2d_uniaxial_tension_breaks.csv"))
+breaks = hmplot.read_break_log(os.path.join(args.data, "lattice2d_uniaxial_tension_breaks.csv"))
 
 fig, axes = plt.subplots(1, 2, figsize=(9, 3.8))
 axes[0].plot(steps["strain"], steps["mean_stress"] / T_U, "-", marker=".", ms=3)
