@@ -1,7 +1,11 @@
 #pragma once
 // Lattices the lattice2d tests build over and over: a spec or a generated lattice of a given
 // domain, size and seed, everything else at LatticeSpec's defaults.
+#include <cstddef>
 #include <cstdint>
+#include <vector>
+
+#include <Eigen/Core>
 
 #include "hm/lattice2d/lattice.hpp"
 
@@ -17,6 +21,20 @@ inline hm::lattice2d::LatticeSpec spec_of(hm::lattice2d::DomainShape shape, long
 
 inline hm::lattice2d::Lattice make_lattice(hm::lattice2d::DomainShape shape, long long n, std::uint64_t seed = 1) {
   return hm::lattice2d::generate_lattice(spec_of(shape, n, seed));
+}
+
+/// Shoelace area of the polygon through the boundary particles with `tag` (the generator places
+/// them counter-clockwise along each curve, so the area is positive).
+inline double ring_area(const hm::lattice2d::Lattice& lattice, hm::lattice2d::BoundaryTag tag) {
+  std::vector<int> ring;
+  for (int i = 0; i < lattice.n_particles(); ++i)
+    if (lattice.boundary[static_cast<std::size_t>(i)] == tag) ring.push_back(i);
+  double twice = 0.0;
+  for (std::size_t k = 0; k < ring.size(); ++k) {
+    const Eigen::Vector2d a = lattice.points.col(ring[k]), b = lattice.points.col(ring[(k + 1) % ring.size()]);
+    twice += a.x() * b.y() - a.y() * b.x();
+  }
+  return 0.5 * twice;
 }
 
 }  // namespace hm::test

@@ -15,23 +15,10 @@ using hm::test::spec_of;
 
 namespace {
 
-
 // Shoelace area of the boundary polygon(s), from the boundary particles, which are generated in
 // counter-clockwise order on each curve: outer polygon minus the borehole polygon.
 double polygon_area(const Lattice& lattice) {
-  double area = 0.0;
-  for (BoundaryTag tag : {BoundaryTag::outer, BoundaryTag::inner}) {
-    std::vector<int> ring;
-    for (int i = 0; i < lattice.n_particles(); ++i)
-      if (lattice.boundary[static_cast<std::size_t>(i)] == tag) ring.push_back(i);
-    double twice = 0.0;
-    for (std::size_t k = 0; k < ring.size(); ++k) {
-      const Eigen::Vector2d a = lattice.points.col(ring[k]), b = lattice.points.col(ring[(k + 1) % ring.size()]);
-      twice += a.x() * b.y() - a.y() * b.x();
-    }
-    area += (tag == BoundaryTag::outer ? 0.5 : -0.5) * twice;
-  }
-  return area;
+  return hm::test::ring_area(lattice, BoundaryTag::outer) - hm::test::ring_area(lattice, BoundaryTag::inner);
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 
 using namespace hm::lattice2d;
 using hm::test::make_lattice;
+using hm::test::ring_area;
 
 namespace {
 
@@ -26,20 +27,6 @@ DualGraph dual_with_floor(const Lattice& lattice, double min_dual_ratio) {
   DualGraphOptions options;
   options.min_dual_ratio = min_dual_ratio;
   return build_dual_graph(lattice, options);
-}
-
-// Shoelace area of the polygon through the boundary particles with `tag` (generated in
-// counter-clockwise order on each curve).
-double ring_area(const Lattice& lattice, BoundaryTag tag) {
-  std::vector<int> ring;
-  for (int i = 0; i < lattice.n_particles(); ++i)
-    if (lattice.boundary[static_cast<std::size_t>(i)] == tag) ring.push_back(i);
-  double twice = 0.0;
-  for (std::size_t k = 0; k < ring.size(); ++k) {
-    const Eigen::Vector2d a = lattice.points.col(ring[k]), b = lattice.points.col(ring[(k + 1) % ring.size()]);
-    twice += a.x() * b.y() - a.y() * b.x();
-  }
-  return 0.5 * twice;
 }
 
 // Beams cut by the segment y = 0, R_i < x < 0.6: a radial "crack" from the borehole wall, whose
