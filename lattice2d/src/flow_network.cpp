@@ -36,6 +36,16 @@ BoreholeStorage borehole_storage_from_string(std::string_view name) {
   throw InputError("borehole_storage = '" + std::string(name) + "', allowed: biot-modulus, none");
 }
 
+std::string to_string(BoreholeDeformation deformation) {
+  return deformation == BoreholeDeformation::biot ? "biot" : "none";
+}
+
+BoreholeDeformation borehole_deformation_from_string(std::string_view name) {
+  if (name == "biot") return BoreholeDeformation::biot;
+  if (name == "none") return BoreholeDeformation::none;
+  throw InputError("borehole_deformation = '" + std::string(name) + "', allowed: biot, none");
+}
+
 void FlowParameters::validate() const {
   using namespace hm::analytic;
   require_non_negative(Q, "Q");
@@ -46,6 +56,9 @@ void FlowParameters::validate() const {
   if (borehole_storage != BoreholeStorage::biot_modulus && borehole_storage != BoreholeStorage::none)
     throw InputError("borehole_storage = " + std::to_string(static_cast<int>(borehole_storage)) +
                      ", allowed: biot-modulus, none");
+  if (borehole_deformation != BoreholeDeformation::biot && borehole_deformation != BoreholeDeformation::none)
+    throw InputError("borehole_deformation = " + std::to_string(static_cast<int>(borehole_deformation)) +
+                     ", allowed: biot, none");
   require_finite(source_x, "source_x");
   require_finite(source_y, "source_y");
 }
@@ -248,8 +261,11 @@ FlowStepSummary FlowNetwork::solve(double dt, const Eigen::VectorXd& volume_chan
   storage_coefficient.head(n_triangles_) = parameters_.E_over_M * triangle_area_;
   if (has_borehole_) storage_coefficient[n_triangles_] = borehole_stores ? parameters_.E_over_M * borehole_volume_ : 0.0;
 
-  Eigen::VectorXd rhs = storage_coefficient.cwiseProduct(pressure_);
-  if (volume_change.size() > 0) rhs -= parameters_.b * volume_change;
+  // The b (V^{n+1} - V^n) terms; the borehole's is dropped when it is a plain flux boundary.
+  Eigen::VectorXd deformation = volume_change.size() > 0 ? Eigen::VectorXd(parameters_.b * volume_change)
+                                                         : Eigen::VectorXd::Zero(n);
+  if (has_borehole_ && parameters_.borehole_deformation == BoreholeDeformation::none) deformation[n_triangles_] = 0.0;
+  Eigen::VectorXd rhs = storage_coefficient.cwiseProduct(pressure_) - deformation;
   rhs[has_borehole_ ? n_triangles_ : source_triangle_] += summary.injected;
 
   trial_pressure_ = solver_->factorisation.solve(rhs);
@@ -259,7 +275,7 @@ FlowStepSummary FlowNetwork::solve(double dt, const Eigen::VectorXd& volume_chan
   }
 
   summary.storage = storage_coefficient.dot(trial_pressure_ - pressure_);
-  summary.deformation = volume_change.size() > 0 ? parameters_.b * volume_change.sum() : 0.0;
+  summary.deformation = deformation.sum();
   summary.outflow = dt * outflow_rate(trial_pressure_);
   summary.balance_error = relative_imbalance(summary.injected, summary.storage, summary.deformation, summary.outflow);
   summary.solved = true;

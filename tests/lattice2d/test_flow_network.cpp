@@ -145,6 +145,9 @@ TEST_CASE("Default flow parameters are valid and each bad value is rejected by n
   CHECK(borehole_storage_from_string(to_string(BoreholeStorage::none)) == BoreholeStorage::none);
   CHECK(borehole_storage_from_string(to_string(BoreholeStorage::biot_modulus)) == BoreholeStorage::biot_modulus);
   CHECK_THROWS_WITH(borehole_storage_from_string("fluid"), Catch::Contains("borehole_storage = 'fluid'"));
+  CHECK(borehole_deformation_from_string(to_string(BoreholeDeformation::none)) == BoreholeDeformation::none);
+  CHECK(borehole_deformation_from_string(to_string(BoreholeDeformation::biot)) == BoreholeDeformation::biot);
+  CHECK_THROWS_WITH(borehole_deformation_from_string("full"), Catch::Contains("borehole_deformation = 'full'"));
 }
 
 TEST_CASE("Flow parameters come from the shared dimensionless set", "[lattice2d]") {
@@ -243,12 +246,14 @@ TEST_CASE("A uniform pressure drives no flow between triangles, only out through
 TEST_CASE("Every step conserves fluid volume: injected = stored + deformation + outflow", "[lattice2d]") {
   const auto shape = GENERATE(DomainShape::annulus, DomainShape::disk);
   const auto storage = GENERATE(BoreholeStorage::biot_modulus, BoreholeStorage::none);
+  const auto deformation = GENERATE(BoreholeDeformation::biot, BoreholeDeformation::none);
   const Lattice lattice = make_lattice(shape, 2500);
   const DualGraph dual = build_dual_graph(lattice);
   FlowParameters parameters;
   parameters.Q = 0.01;
   parameters.b = 0.5;
   parameters.borehole_storage = storage;
+  parameters.borehole_deformation = deformation;
   FlowNetwork network(lattice, dual, parameters);
   // A volume change as the mechanics might supply it: smooth, of both signs, O(Q dt) in total.
   Eigen::VectorXd dV(network.n_unknowns());
@@ -262,7 +267,8 @@ TEST_CASE("Every step conserves fluid volume: injected = stored + deformation + 
     REQUIRE(summary.is_ok());
     worst = std::max(worst, summary.balance_error);
   }
-  INFO(to_string(shape) << ", borehole storage " << to_string(storage) << ": worst balance " << worst);
+  INFO(to_string(shape) << ", borehole storage " << to_string(storage) << ", deformation " << to_string(deformation)
+                       << ": worst balance " << worst);
   // Measured <= 1e-13: the scheme is conservative and the direct solve's residual is round-off.
   CHECK(worst <= 1e-10);
   const FlowTotals& totals = network.totals();
@@ -386,6 +392,30 @@ TEST_CASE("Borehole storage delays the borehole pressure but not the steady stat
     CHECK(network->borehole_pressure() == Approx(steady.pressure[network->borehole_index()]).epsilon(1e-10));
   }
   CHECK(storing.borehole_pressure() == Approx(passing.borehole_pressure()).epsilon(1e-10));
+}
+
+TEST_CASE("A flux-boundary borehole ignores its own area change; Eq. 16 turns it into a pressure drop", "[lattice2d]") {
+  const Lattice lattice = make_lattice(DomainShape::annulus, 2500);
+  const DualGraph dual = build_dual_graph(lattice);
+  FlowParameters parameters;
+  parameters.time_step = 1e-4;
+  Eigen::VectorXd dV = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(lattice.n_triangles()) + 1);
+  for (const auto deformation : {BoreholeDeformation::biot, BoreholeDeformation::none}) {
+    parameters.borehole_deformation = deformation;
+    FlowNetwork still(lattice, dual, parameters), expanding(lattice, dual, parameters);
+    dV[expanding.borehole_index()] = 1e-6;  // the wall moves out: Eq. 16 removes b dV_h of fluid
+    const FlowStepSummary a = still.step(), b = expanding.step(dV);
+    REQUIRE(a.is_ok());
+    REQUIRE(b.is_ok());
+    INFO("borehole deformation " << to_string(deformation));
+    if (deformation == BoreholeDeformation::none) {
+      CHECK(expanding.pressure() == still.pressure());  // bit for bit: the term is not there
+      CHECK(b.deformation == 0.0);
+    } else {
+      CHECK(expanding.borehole_pressure() < still.borehole_pressure());
+      CHECK(b.deformation == hm::test::roundoff(parameters.b * 1e-6));
+    }
+  }
 }
 
 // --- verification against the analytic solutions ----------------------------------------------------

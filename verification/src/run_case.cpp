@@ -36,6 +36,7 @@ void located(CaseTable& table, const std::string& prefix, F&& read) {
 lt::FlowParameters RunCase::flow_parameters() const {
   lt::FlowParameters flow = lt::flow_parameters_of(physics.parameters, stepping.dt_initial);
   flow.borehole_storage = borehole_storage;
+  flow.borehole_deformation = borehole_deformation;
   return flow;
 }
 
@@ -84,6 +85,7 @@ RunCase read_run_case(const std::filesystem::path& file) {
   CaseTable flow = root.table("flow");
   located(flow, "", [&] {
     c.borehole_storage = lt::borehole_storage_from_string(flow.get_string("borehole_storage", "biot-modulus"));
+    c.borehole_deformation = lt::borehole_deformation_from_string(flow.get_string("borehole_deformation", "biot"));
     flow.reject_unknown();
   });
 
@@ -165,7 +167,8 @@ std::string run_case_to_toml(const RunCase& c, const std::string& provenance_tom
      << "\nseed = " << c.lattice.seed << "\n\n"
      << "[mechanics]\nouter = \"" << lt::to_string(c.boundary.outer) << "\"\nsolver = \""
      << lt::to_string(c.mechanics.solver) << "\"\n\n"
-     << "[flow]\nborehole_storage = \"" << lt::to_string(c.borehole_storage) << "\"\n\n"
+     << "[flow]\nborehole_storage = \"" << lt::to_string(c.borehole_storage) << "\"\nborehole_deformation = \""
+     << lt::to_string(c.borehole_deformation) << "\"\n\n"
      << "[coupling]\nsplit = \"" << lt::to_string(o.split) << "\"\npsi = " << v(o.psi) << "\nxi = " << v(o.xi)
      << "\npressure_tolerance = " << v(o.pressure_tolerance) << "\ndisplacement_tolerance = "
      << v(o.displacement_tolerance) << "\nmax_iterations = " << o.max_iterations

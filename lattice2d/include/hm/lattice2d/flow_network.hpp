@@ -29,6 +29,16 @@ std::string to_string(BoreholeStorage storage);
 /// Inverse of to_string; throws hm::InputError "borehole_storage = 'x', allowed: biot-modulus, none".
 BoreholeStorage borehole_storage_from_string(std::string_view name);
 
+/// Whether the borehole node takes the deformation term of Eq. 16, -b (V_h^{n+1} - V_h^n).
+enum class BoreholeDeformation {
+  biot,  ///< Eq. 16 as printed: the borehole's area change weighted by b, like a triangle's; default
+  none,  ///< no term: the borehole is a flux boundary that passes Q on (Appendix A / fdm1d's choice)
+};
+/// "biot" or "none".
+std::string to_string(BoreholeDeformation deformation);
+/// Inverse of to_string; throws hm::InputError "borehole_deformation = 'x', allowed: biot, none".
+BoreholeDeformation borehole_deformation_from_string(std::string_view name);
+
 /// Parameters of the flow network. Every default is set here; validate() checks each rule.
 struct FlowParameters {
   /// Q, dimensionless injection rate (Eq. 14, Q = mu q/(k E)), into the borehole node (annulus) or
@@ -47,6 +57,9 @@ struct FlowParameters {
   double time_step = 1e-5;
   /// Borehole storage (Eq. 16). Default: the paper's Eq. 16; see docs/flow.md.
   BoreholeStorage borehole_storage = BoreholeStorage::biot_modulus;
+  /// Borehole deformation term (Eq. 16). Default: the paper's Eq. 16. With borehole_storage = none
+  /// and this = none the borehole node is the 1D model's flux boundary; see docs/flow.md.
+  BoreholeDeformation borehole_deformation = BoreholeDeformation::biot;
   /// Point-source position (x, y) for a domain without borehole (Section 3.1: r = 0). Our choice to
   /// make it a field; the source goes into the triangle containing it. Allowed: finite, inside the
   /// lattice (checked by FlowNetwork).
@@ -67,7 +80,7 @@ struct FlowStepSummary {
   double dt = 0.0;           ///< Delta t of this step
   double injected = 0.0;     ///< Q dt
   double storage = 0.0;      ///< sum (E/M) V^{n+1} (p^{n+1} - p^n), borehole included if it stores (signed)
-  double deformation = 0.0;  ///< b sum (V^{n+1} - V^n), triangles and borehole (signed)
+  double deformation = 0.0;  ///< b sum (V^{n+1} - V^n), triangles and (unless its term is off) borehole (signed)
   double outflow = 0.0;      ///< sum over outer segments dt (A/d_su) (p_s^{n+1} - 0) (signed)
   /// |injected - storage - deformation - outflow| / (|injected| + |storage| + |deformation| + |outflow|),
   /// 0 when all four vanish.

@@ -4,7 +4,7 @@
 ///   [physics] or [physics_si]  material, Q, b, iota, R_i (read_physics; R_i = 0 for domain = "disk")
 ///   [lattice]    domain ("disk" | "annulus"), n_particles, seed
 ///   [mechanics]  outer ("free" | "fixed"), solver ("cholmod" | "pcg")
-///   [flow]       borehole_storage ("biot-modulus" | "none")
+///   [flow]       borehole_storage ("biot-modulus" | "none"), borehole_deformation ("biot" | "none")
 ///   [coupling]   split ("undrained" | "drained"), psi, xi, pressure_tolerance, displacement_tolerance,
 ///                max_iterations, accept_unconverged, relaxation ("none" | "aitken"), initial_relaxation
 ///   [numerics]   dt_initial, dt_growth, dt_max, t_end
@@ -42,12 +42,13 @@ struct RunCase {
   hm::lattice2d::BoundaryConditions boundary;   ///< only `outer` is read from the case
   hm::lattice2d::MechanicsOptions mechanics;    ///< only `solver` is read from the case
   hm::lattice2d::BoreholeStorage borehole_storage = hm::lattice2d::BoreholeStorage::biot_modulus;
+  hm::lattice2d::BoreholeDeformation borehole_deformation = hm::lattice2d::BoreholeDeformation::biot;
   hm::lattice2d::CouplingOptions coupling;
   hm::lattice2d::TimeStepping stepping;         ///< output times from [output] times
   bool fracture_enabled = false;
   RunOutput output;
 
-  /// The flow parameters of the physics (Q, b, iota, E/M) with this case's borehole storage.
+  /// The flow parameters of the physics (Q, b, iota, E/M) with this case's borehole node.
   hm::lattice2d::FlowParameters flow_parameters() const;
 };
 
