@@ -108,6 +108,15 @@ RudnickiOutcome run_variant(const RudnickiVariant& v, const BenchmarkContext& ct
   continuum.nu = lt::calibrated_continuum().poisson_ratio;
   continuum.vol_strain = analytic::VolStrain::plane_strain;
   const analytic::RudnickiLineSource exact(c.physics.parameters.Q, continuum);
+  {  // the reference beside the run, for figures/fig07_rudnicki.py (which computes nothing itself)
+    std::ofstream file(dir / "analytic.csv");
+    CsvWriter w(file, {"t", "r", "p", "u_r"});
+    const double t = c.stepping.t_end;
+    for (int k = 1; k <= 400; ++k) {  // r* = 0.0005 ... radial_max, fine enough for a smooth line
+      const double r = c.output.radial_max * k / 400.0;
+      w.row({t, r, exact.pressure(r, t), exact.radial_displacement(r, t)});
+    }
+  }
   for (std::size_t k = 0; k < o.fields.r_mean.size(); ++k) {
     const double r = o.fields.r_mean[k];
     if (!(r >= 0.01 && r <= 0.05)) continue;
@@ -173,6 +182,11 @@ BenchmarkResult rudnicki_quick(const BenchmarkContext& ctx) {
                                      "paper tier checks it at N = 3e4"));
   res.metrics.push_back(balance_metric("N = 1e4", o.max_balance));
   res.tables = {runs, profiles};
+  res.figures.push_back({"fig07_rudnicki.py", "fig07_rudnicki_free_N1e4.png",
+                         "Fig. 7 at N = 1e4 (free disk, Q = 0.1, b = 0.5, t* = 3e-4): radially averaged u_r and p "
+                         "(markers) against Rudnicki (line; plane strain, the calibrated lattice's nu); below, the "
+                         "deviation in %. Shaded: the compared range r* in [0.01, 0.05].",
+                         "rudnicki_" + v.label});
   return res;
 }
 
@@ -236,7 +250,11 @@ BenchmarkResult rudnicki_paper(const BenchmarkContext& ctx) {
       "r* <= 0.05 (free and fixed differ by < 0.5% there). Measured (2026-11-22): the drained split converges to the "
       "iterated undrained profiles to 4e-8 in 1.5x the passes; one pass per step differs from the converged profiles "
       "by up to 5% (p in the tail), more than the paper's 'no significant differences'. "
-      "The CSV of every run is in rudnicki_<run>/ (series.csv, radial.csv).");
+      "The CSV of every run is in rudnicki_<run>/ (series.csv, radial.csv, and analytic.csv: Rudnicki at t* = 3e-4).");
+  res.figures.push_back({"fig07_rudnicki.py", "fig07_rudnicki.png",
+                         "Fig. 7 (Q = 0.1, b = 0.5, t* = 3e-4): radially averaged u_r and p of every run (markers; "
+                         "colour = outer boundary, marker = resolution and split) against Rudnicki (line); below, "
+                         "the deviation in %. Shaded: the compared range r* in [0.01, 0.05]."});
   return res;
 }
 
@@ -337,6 +355,11 @@ BenchmarkResult psi_study(const BenchmarkContext& ctx) {
   res.notes.push_back("psi_study/passes.csv: the area-weighted mean pressure in the shell 0.02 < r* < 0.03 (Fig. 6's "
                       "Gamma) after every pass of one implicit step dt = 3e-4 from rest, for each Psi (Fig. 8's "
                       "quantity; our step choice, the paper does not say which step it shows).");
+  res.figures.push_back({"fig08_psi_study.py", "fig08_psi_study.png",
+                         "Fig. 8: mean pressure in the shell 0.02 < r* < 0.03 against the coupling pass, one implicit "
+                         "step dt = 3e-4 from rest, for each Psi (Psi = 0: the drained split); right, its relative "
+                         "distance from the same Psi's last (converged) pass.",
+                         "psi_study"});
   return res;
 }
 
