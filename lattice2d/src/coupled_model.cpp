@@ -7,6 +7,7 @@
 
 #include "hm/analytic/input_error.hpp"
 #include "hm/analytic/validation.hpp"
+#include "hm/lattice2d/fracture_statistics.hpp"
 
 namespace hm::lattice2d {
 
@@ -51,7 +52,6 @@ void CouplingOptions::validate() const {
   require_at_least(max_iterations, "coupling.max_iterations", 1);
   if (!(initial_relaxation > 0.0 && initial_relaxation <= 1.0))
     throw hm::InputError("coupling.initial_relaxation = " + format_value(initial_relaxation) + ", allowed: 0 < initial_relaxation <= 1");
-  if (fracture) throw hm::InputError("fracture.enabled = true, allowed: false (fracture in the coupled model comes later)");
 }
 
 void TimeStepping::validate() const {
@@ -117,6 +117,15 @@ CoupledModel::CoupledModel(Lattice lattice, const BeamParameters& beams, const B
 
 CoupledModel::~CoupledModel() = default;
 
+void CoupledModel::enable_fracture(BeamStrengths strengths, const BreakLoopOptions& options) {
+  options.validate();
+  const int n = lattice().n_beams();
+  if (strengths.n_beams() != n || strengths.compressive.size() != n)
+    throw hm::InputError("fracture.strengths: " + std::to_string(strengths.n_beams()) +
+                         " values, allowed: one per beam (" + std::to_string(n) + ")");
+  fracture_ = std::make_unique<FractureSetup>(FractureSetup{std::move(strengths), options});
+}
+
 int CoupledModel::n_broken() const {
   return static_cast<int>(std::count_if(mechanics_->states().begin(), mechanics_->states().end(),
                                         [](BeamState s) { return s != BeamState::intact; }));
@@ -158,13 +167,31 @@ CoupledStepSummary CoupledModel::step(double dt) {
     Eigen::VectorXd f = pressure_forces(l, reference_dual_, p_guess, coupling_);
     if (coupling_.psi > 0.0) f += spring_preload(l, springs_, u_prev);
     mechanics_->set_external_forces(f);
-    const MechanicsSummary ms = mechanics_->solve();
-    summary.mechanics_seconds += ms.solve_seconds;
-    if (!ms.is_converged()) {
-      summary.status = CoupledStatus::solver_failure;
-      summary.message = "mechanics at t = " + hm::analytic::format_value(summary.time) + ", pass " +
-                        std::to_string(k) + ": " + ms.message;
-      break;
+    int breaks_this_pass = 0;
+    if (fracture_) {
+      // Solve, then break one beam at a time until none fails (the stresses of the effective, i.e.
+      // beam, forces; V_i of the undeformed dual like the rest of the linear mechanics).
+      const BreakLoopSummary bs = break_until_stable(*mechanics_, reference_dual_, fracture_->strengths,
+                                                     fracture_->options, summary.time, break_log_);
+      summary.fracture_seconds += bs.seconds;
+      breaks_this_pass = bs.n_breaks;
+      summary.n_breaks += bs.n_breaks;
+      if (!bs.is_stable()) {
+        summary.status = CoupledStatus::solver_failure;
+        summary.message = "break loop at t = " + hm::analytic::format_value(summary.time) + ", pass " +
+                          std::to_string(k) + ": " + to_string(bs.status) + " " + bs.message;
+        break;
+      }
+      if (breaks_this_pass > 0) flow_->set_broken(broken_flags(mechanics_->states()));
+    } else {
+      const MechanicsSummary ms = mechanics_->solve();
+      summary.mechanics_seconds += ms.solve_seconds;
+      if (!ms.is_converged()) {
+        summary.status = CoupledStatus::solver_failure;
+        summary.message = "mechanics at t = " + hm::analytic::format_value(summary.time) + ", pass " +
+                          std::to_string(k) + ": " + ms.message;
+        break;
+      }
     }
     const Eigen::VectorXd& u = mechanics_->displacement();
     // 2. The deformed flow geometry.
@@ -194,7 +221,8 @@ CoupledStepSummary CoupledModel::step(double dt) {
     // path, not the fixed point; it tames the borehole's feedback (docs/coupling.md, section 3).
     if (options_.relaxation == CouplingRelaxation::aitken) {
       const Eigen::VectorXd r = p - p_guess;
-      if (k == 1) {
+      if (k == 1 || breaks_this_pass > 0) {
+        // A break changed the system: the last residual belongs to another map, start afresh.
         omega = options_.initial_relaxation;
       } else {
         const Eigen::VectorXd dr = r - r_prev;
@@ -207,7 +235,7 @@ CoupledStepSummary CoupledModel::step(double dt) {
       p_guess = p;
     }
     u_prev = u;
-    if (summary.pressure_residual <= options_.pressure_tolerance &&
+    if (breaks_this_pass == 0 && summary.pressure_residual <= options_.pressure_tolerance &&
         summary.displacement_residual <= options_.displacement_tolerance) {
       converged = true;
       break;

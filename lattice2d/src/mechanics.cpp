@@ -370,7 +370,7 @@ BeamState BeamMechanics::break_beam(int beam) {
 }
 
 void BeamMechanics::check_detachment(int i, int j) {
-  // Breadth-first search over intact beams; stops early when i still reaches j (the usual case:
+  // Breadth-first search over intact beams (and sprung broken ones); stops early when i still reaches j (the usual case:
   // the broken beam's triangles keep the two ends connected), else returns the whole component.
   std::vector<char> seen(static_cast<std::size_t>(lattice_.n_particles()), 0);
   auto component = [&](int start, int target, std::vector<int>& out) {
@@ -380,7 +380,10 @@ void BeamMechanics::check_detachment(int i, int j) {
       const int p = out[k];
       for (int a = adjacency_start_[static_cast<std::size_t>(p)]; a < adjacency_start_[static_cast<std::size_t>(p) + 1]; ++a) {
         const int e = adjacency_beam_[static_cast<std::size_t>(a)];
-        if (states_[static_cast<std::size_t>(e)] != BeamState::intact) continue;
+        // A broken beam still connects through its normal spring (the coupling's Eq. 20): the part
+        // is then held by the fluid, not loose.
+        const bool spring = springs_.size() > 0 && springs_[e] > 0.0;
+        if (states_[static_cast<std::size_t>(e)] != BeamState::intact && !spring) continue;
         const auto& b = lattice_.beams[static_cast<std::size_t>(e)];
         const int q = b[0] == p ? b[1] : b[0];
         if (seen[static_cast<std::size_t>(q)]) continue;
@@ -391,8 +394,26 @@ void BeamMechanics::check_detachment(int i, int j) {
     }
     return false;
   };
+  // With springs (which carry no moment), a particle left without intact beams keeps its translations
+  // through them but has a free rotation: hold that at its current value.
+  bool changed = false;
+  if (springs_.size() > 0) {
+    for (int p : {i, j}) {
+      bool has_intact = false;
+      for (int a = adjacency_start_[static_cast<std::size_t>(p)]; a < adjacency_start_[static_cast<std::size_t>(p) + 1]; ++a)
+        has_intact = has_intact || states_[static_cast<std::size_t>(adjacency_beam_[static_cast<std::size_t>(a)])] == BeamState::intact;
+      const Eigen::Index d = dof_index(p, 2);
+      if (has_intact || held_[static_cast<std::size_t>(d)]) continue;
+      held_[static_cast<std::size_t>(d)] = true;
+      held_value_[d] = raw_[d];
+      changed = true;
+    }
+  }
   std::vector<int> part_i, part_j;
-  if (component(i, j, part_i)) return;
+  if (component(i, j, part_i)) {
+    if (changed) setup_system();
+    return;
+  }
   component(j, -1, part_j);
   // A part is anchored if its held degrees of freedom stop its three rigid motions (rank test).
   auto anchored = [&](const std::vector<int>& part) {
@@ -410,7 +431,6 @@ void BeamMechanics::check_detachment(int i, int j) {
     const Eigen::Vector3d ev = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(M).eigenvalues();
     return ev[0] > 1e-12 * ev[2];
   };
-  bool changed = false;
   for (const auto* part : {&part_i, &part_j}) {
     if (anchored(*part)) continue;
     // Freeze the part at the rigid motion nearest its last displacement: it then carries no force.

@@ -268,9 +268,11 @@ void CholmodSolver::modify(const Matrix& W, int sigma) {
     ok = cholmod_updown(sigma > 0 ? 1 : 0, C.get(), impl_->factor.get(), c);
   }
   if (!ok) {
+    // Seen (rarely, status CHOLMOD_INVALID on valid input, after hundreds of modifications of a
+    // re-assembled factor): A itself is current (add_low_rank above), so rebuild the factor from it.
     impl_->forward.reset();
-    report_.info = Eigen::NumericalIssue;
-    report_.message = "cholmod_updown failed (status " + std::to_string(c->status) + ")";
+    ++report_.n_update_failures;
+    refactorize();
     return;
   }
   // A downdate that makes A singular leaves a zero or negative pivot in D, without an error.

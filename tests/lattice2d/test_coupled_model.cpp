@@ -40,7 +40,6 @@ TEST_CASE("Coupling options and time stepping: defaults are valid, bad values ar
   SECTION("drained with Psi != 0") { o.split = CouplingSplit::drained; REQUIRE_THROWS_AS(o.validate(), hm::InputError); }
   SECTION("tolerance") { o.pressure_tolerance = 0.0; REQUIRE_THROWS_AS(o.validate(), hm::InputError); }
   SECTION("max_iterations") { o.max_iterations = 0; REQUIRE_THROWS_AS(o.validate(), hm::InputError); }
-  SECTION("fracture") { o.fracture = true; REQUIRE_THROWS_AS(o.validate(), hm::InputError); }
   SECTION("dt_growth") { t.dt_growth = 0.5; REQUIRE_THROWS_AS(t.validate(), hm::InputError); }
   SECTION("dt_initial > t_end") { t.dt_initial = 1.0; REQUIRE_THROWS_AS(t.validate(), hm::InputError); }
   SECTION("output times") {

@@ -19,6 +19,7 @@
 #include "commands.hpp"
 #include "hm/lattice2d/calibration.hpp"
 #include "hm/lattice2d/coupled_model.hpp"
+#include "hm/lattice2d/strength.hpp"
 #include "hm/verification/output_dir.hpp"
 #include "hm/verification/progress.hpp"
 #include "hm/verification/provenance.hpp"
@@ -69,6 +70,8 @@ void add_run_command(CLI::App& app, int& exit_code, const std::string& command_l
     //    enters E/M (Eq. 22) only.
     lattice2d::CoupledModel model(lattice2d::generate_lattice(c.lattice), lattice2d::calibrated_beam_parameters(),
                                   c.boundary, c.mechanics, c.flow_parameters(), c.coupling);
+    if (c.fracture_enabled)
+      model.enable_fracture(lattice2d::draw_beam_strengths(c.strength, model.lattice().n_beams()), c.break_loop);
     std::cout << "lattice: " << model.lattice().n_particles() << " particles, " << model.lattice().n_beams()
               << " beams, " << model.lattice().n_triangles() << " triangles\n";
 
@@ -77,7 +80,8 @@ void add_run_command(CLI::App& app, int& exit_code, const std::string& command_l
     verification::RunRecorder recorder(staged.path(), c);
     verification::ProgressReporter progress(std::cout, "run");
     int step = 0;
-    double step_seconds = 0.0, mechanics_seconds = 0.0, geometry_seconds = 0.0, flow_seconds = 0.0;
+    double step_seconds = 0.0, mechanics_seconds = 0.0, geometry_seconds = 0.0, flow_seconds = 0.0,
+           fracture_seconds = 0.0;
     const auto run = model.run(c.stepping, [&](const lattice2d::CoupledModel& m, const lattice2d::CoupledStepSummary& s,
                                                bool is_output) {
       recorder.record(m, s, is_output);
@@ -85,18 +89,19 @@ void add_run_command(CLI::App& app, int& exit_code, const std::string& command_l
       mechanics_seconds += s.mechanics_seconds;
       geometry_seconds += s.geometry_seconds;
       flow_seconds += s.flow_seconds;
+      fracture_seconds += s.fracture_seconds;
       const int remaining = remaining_steps(m.time(), s.dt, c.stepping);
       progress.update(m.time(), c.stepping.t_end,
-                      "step " + std::to_string(step) + ", iterations " + std::to_string(s.iterations) + ", ETA " +
+                      "step " + std::to_string(step) + ", broken " + std::to_string(m.n_broken()) + ", iterations " + std::to_string(s.iterations) + ", ETA " +
                           std::to_string(static_cast<int>(step > 0 ? step_seconds / step * remaining : 0.0)) + " s");
       ++step;
     });
-    char summary[200];
+    char summary[300];
     std::snprintf(summary, sizeof summary,
-                  "%d steps, %d coupling iterations, max volume-balance error %.2e; mechanics %.1f s, geometry %.1f s, "
-                  "flow %.1f s",
-                  run.n_steps, run.total_iterations, run.max_balance_error, mechanics_seconds, geometry_seconds,
-                  flow_seconds);
+                  "%d steps, %d coupling iterations, %d beams broken, max volume-balance error %.2e; mechanics %.1f s, "
+                  "break loops %.1f s, geometry %.1f s, flow %.1f s",
+                  run.n_steps, run.total_iterations, model.n_broken(), run.max_balance_error, mechanics_seconds,
+                  fracture_seconds, geometry_seconds, flow_seconds);
     progress.finish(summary);
     if (!run.is_ok()) {
       std::cerr << "hmlattice run: numerical failure: " << run.message << "\n";
@@ -109,7 +114,7 @@ void add_run_command(CLI::App& app, int& exit_code, const std::string& command_l
     std::ofstream(staged.path() / "config.toml")
         << verification::run_case_to_toml(c, verification::to_toml(verification::make_provenance(command_line)));
     staged.commit();
-    std::cout << "Results: " << out.string() << "/{series,radial}.csv, " << (c.output.vtk ? "vtk/lattice.pvd, " : "")
+    std::cout << "Results: " << out.string() << (c.fracture_enabled ? "/{series,radial,breaks,breakdown}.csv, " : "/{series,radial}.csv, ") << (c.output.vtk ? "vtk/lattice.pvd, " : "")
               << "config.toml\n";
   });
 }

@@ -110,11 +110,29 @@ RunCase read_run_case(const std::filesystem::path& file) {
     o.validate();
   });
 
-  // [fracture]: reserved; the switch exists so that cases written now keep working.
+  // [fracture]: the switch, the strength heterogeneity and the crack-tip rule; the mean strengths are
+  // the material's ([physics]).
   CaseTable frac = root.table("fracture");
-  c.fracture_enabled = frac.get_bool("enabled", false);
-  frac.reject_unknown();
-  if (c.fracture_enabled) frac.fail("enabled = true, allowed: false (fracture in `hmlattice run` comes with the next issue)");
+  located(frac, "", [&] {
+    c.fracture_enabled = frac.get_bool("enabled", false);
+    auto& st = c.strength;
+    st.tensile_strength = c.physics.parameters.tensile_strength;
+    st.compressive_strength = c.physics.parameters.compressive_strength;
+    st.friction = c.physics.parameters.friction;
+    st.distribution = lt::strength_distribution_from_string(frac.get_string("distribution", lt::to_string(st.distribution)));
+    st.width = frac.get_double("width", st.width);
+    st.weibull_modulus = frac.get_double("weibull_modulus", st.weibull_modulus);
+    st.correlated = frac.get_bool("correlated", st.correlated);
+    const long long seed = frac.get_int("seed", static_cast<long long>(st.seed));
+    if (seed < 0) throw InputError("seed = " + std::to_string(seed) + ", allowed: >= 0");
+    st.seed = static_cast<std::uint64_t>(seed);
+    auto& tip = c.break_loop.crack_tip;
+    tip.enabled = frac.get_bool("crack_tip", tip.enabled);
+    tip.material_length = frac.get_double("crack_tip_length", tip.material_length);
+    frac.reject_unknown();
+    st.validate();
+    analytic::require_positive(tip.material_length, "crack_tip_length");
+  });
 
   // [numerics]
   CaseTable num = root.table("numerics");
@@ -176,7 +194,11 @@ std::string run_case_to_toml(const RunCase& c, const std::string& provenance_tom
      << "\"\ninitial_relaxation = " << v(o.initial_relaxation) << "\n\n"
      << "[numerics]\ndt_initial = " << v(s.dt_initial) << "\ndt_growth = " << v(s.dt_growth) << "\ndt_max = "
      << v(s.dt_max) << "\nt_end = " << v(s.t_end) << "\n\n"
-     << "[fracture]\nenabled = " << b(c.fracture_enabled) << "\n\n"
+     << "[fracture]\nenabled = " << b(c.fracture_enabled) << "\ndistribution = \"" << lt::to_string(c.strength.distribution)
+     << "\"\nwidth = " << v(c.strength.width) << "\nweibull_modulus = " << v(c.strength.weibull_modulus)
+     << "\ncorrelated = " << b(c.strength.correlated) << "\nseed = " << c.strength.seed
+     << "\ncrack_tip = " << b(c.break_loop.crack_tip.enabled)
+     << "\ncrack_tip_length = " << v(c.break_loop.crack_tip.material_length) << "\n\n"
      << "[output]\ntimes = " << list(c.output.times) << "\nvtk = " << b(c.output.vtk)
      << "\nradial_bins = " << c.output.radial_bins << "\nradial_max = " << v(c.output.radial_max) << "\n\n"
      << provenance_toml;

@@ -43,6 +43,8 @@ RadialFields radial_fields(const lt::CoupledModel& model, const std::vector<doub
 RunRecorder::RunRecorder(const std::filesystem::path& dir, const RunCase& c)
     : output_(c.output),
       r_min_(c.lattice.domain == lt::DomainShape::annulus ? c.lattice.inner_radius : 0.0),
+      dir_(dir),
+      fracture_(c.fracture_enabled),
       series_file_(dir / "series.csv"),
       radial_file_(dir / "radial.csv") {
   if (!series_file_ || !radial_file_) throw std::runtime_error("cannot write into " + dir.string());
@@ -60,6 +62,24 @@ void RunRecorder::record(const lt::CoupledModel& model, const lt::CoupledStepSum
   series_->row({model.time(), step.dt, injection_pressure(model), t.injected, t.storage, t.deformation, t.outflow,
                 step.flow.balance_error, static_cast<double>(model.n_broken()), static_cast<double>(step.iterations),
                 step.pressure_residual, step.displacement_residual});
+  const double p_h = injection_pressure(model);
+  if (p_h > p_peak_) {
+    p_peak_ = p_h;
+    t_peak_ = model.time();
+  }
+  if (fracture_) {
+    const auto& log = model.break_log();
+    if (breaks_.empty() && !log.empty()) {
+      t_first_ = model.time();
+      p_before_ = last_p_h_;
+      p_first_ = p_h;
+      x_first_ = log.front().position.x();
+      y_first_ = log.front().position.y();
+    }
+    breaks_.insert(breaks_.end(), log.begin() + static_cast<std::ptrdiff_t>(breaks_.size()), log.end());
+    n_broken_ = model.n_broken();
+  }
+  last_p_h_ = p_h;
   if (!is_output) return;
   const RadialFields f = radial_fields(model, lt::uniform_shell_edges(r_min_, output_.radial_max, output_.radial_bins));
   for (std::size_t k = 0; k < f.r_mid.size(); ++k)
@@ -69,6 +89,7 @@ void RunRecorder::record(const lt::CoupledModel& model, const lt::CoupledStepSum
     snapshot.time = model.time();
     snapshot.displacement = model.displacement();
     snapshot.pressure = model.pressure().head(model.lattice().n_triangles());
+    snapshot.beam_states = model.mechanics().states();
     vtk_->write(model.lattice(), model.current_dual(), snapshot);
   }
 }
@@ -81,6 +102,14 @@ void RunRecorder::finish() {
   series_file_.close();
   radial_file_.close();
   if (!series_file_ || !radial_file_) throw std::runtime_error("writing series.csv or radial.csv failed");
+  if (!fracture_) return;
+  lt::write_break_log(dir_ / "breaks.csv", breaks_, "time");
+  std::ofstream file(dir_ / "breakdown.csv");
+  CsvWriter breakdown(file, {"t_first_break", "p_h_before", "p_h_first_break", "x_first_break", "y_first_break",
+                             "t_peak", "p_h_peak", "n_broken"});
+  breakdown.row({t_first_, p_before_, p_first_, x_first_, y_first_, t_peak_, p_peak_, static_cast<double>(n_broken_)});
+  file.close();
+  if (!file) throw std::runtime_error("writing breakdown.csv failed");
 }
 
 }  // namespace hm::verification

@@ -17,9 +17,12 @@
 #include "hm/lattice2d/beam_stiffness.hpp"
 #include "hm/lattice2d/coupling.hpp"
 #include "hm/lattice2d/dual_graph.hpp"
+#include "hm/lattice2d/failure.hpp"
 #include "hm/lattice2d/flow_network.hpp"
+#include "hm/lattice2d/fracture.hpp"
 #include "hm/lattice2d/lattice.hpp"
 #include "hm/lattice2d/mechanics.hpp"
+#include "hm/lattice2d/strength.hpp"
 
 namespace hm::lattice2d {
 
@@ -69,8 +72,6 @@ struct CouplingOptions {
   /// Accept a step that hit max_iterations (the paper's "one iteration of both systems" with
   /// max_iterations = 1). Default false: such a step is a numerical failure (status not_converged).
   bool accept_unconverged = false;
-  /// Fracture inside the coupling loop (Fig. 5's grey boxes). Allowed: false (the next issue).
-  bool fracture = false;
   /// The borehole wall carries the full borehole pressure (CouplingParameters::borehole_wall_traction).
   bool borehole_wall_traction = true;
 
@@ -116,9 +117,11 @@ struct CoupledStepSummary {
   /// The pressure residual after each pass (for the Psi study, Fig. 8).
   std::vector<double> pressure_history;
   FlowStepSummary flow;                ///< the last flow solve (volumes of this step, balance)
-  int n_broken = 0;
+  int n_breaks = 0;                    ///< beams broken in this step (all passes)
+  int n_broken = 0;                    ///< beams broken since t = 0, after this step
   double seconds = 0.0;             ///< wall time of the step, of which:
-  double mechanics_seconds = 0.0;   ///< BeamMechanics::solve (back-substitutions)
+  double mechanics_seconds = 0.0;   ///< BeamMechanics::solve (back-substitutions), without the break loop
+  double fracture_seconds = 0.0;    ///< break loops: stresses, downdates and their re-solves
   double geometry_seconds = 0.0;    ///< deformed dual graph and FlowNetwork::update_geometry
   double flow_seconds = 0.0;        ///< FlowNetwork::solve (refactorisation and solve)
   std::string message;  ///< empty when converged
@@ -144,13 +147,26 @@ struct CoupledRunSummary {
 ///   3. the flow step of Eqs. 15-16 with b (V^{n+1} - V^n);
 ///   4. repeat until both residuals are below tolerance (or max_iterations).
 /// At convergence the spring term vanishes, so every Psi converges to the drained split's fixed point.
-/// Limits: geometrically linear mechanics, fracture off (CouplingOptions::fracture), no re-meshing.
+/// With fracture enabled (enable_fracture), step 1 is the break loop of Section 2.1 (fracture.hpp):
+/// solve, break the one beam most over its strength, re-solve, until none fails; the broken beams' flow
+/// segments get iota before step 3, and a pass that broke a beam never ends the iteration (Fig. 5: "if
+/// the system is changed during the solver steps, a new iteration is necessary"). Broken beams stay
+/// broken, also when a later pass or a failed step would not have broken them.
+/// Limits: geometrically linear mechanics, no re-meshing.
 class CoupledModel {
  public:
   /// Validates everything (hm::InputError), builds mechanics and flow. b and E/M are the flow's.
   CoupledModel(Lattice lattice, const BeamParameters& beams, const BoundaryConditions& conditions,
                const MechanicsOptions& mechanics_options, const FlowParameters& flow, const CouplingOptions& options);
   ~CoupledModel();
+
+  /// Turns fracture on (Fig. 5's grey boxes) with one strength per beam and the break loop's options
+  /// (crack-tip factor, cap per call). Throws hm::InputError for strengths not sized n_beams or invalid
+  /// options. Call before the first step.
+  void enable_fracture(BeamStrengths strengths, const BreakLoopOptions& options = {});
+  bool fracture_enabled() const { return fracture_ != nullptr; }
+  /// Every break so far, in order; BreakEvent::load is the time t^{n+1} of the step that broke it.
+  const std::vector<BreakEvent>& break_log() const { return break_log_; }
 
   /// One coupled step of length dt > 0. On failure (status not_converged or solver_failure) the state
   /// is left at t^n; the summary says why.
@@ -199,6 +215,12 @@ class CoupledModel {
   Eigen::VectorXd displacement_;
   Eigen::VectorXd volume_;  // V^n per unknown
   PassObserver pass_observer_;
+  struct FractureSetup {
+    BeamStrengths strengths;
+    BreakLoopOptions options;
+  };
+  std::unique_ptr<FractureSetup> fracture_;
+  std::vector<BreakEvent> break_log_;
 };
 
 }  // namespace hm::lattice2d

@@ -130,7 +130,7 @@ struct MechanicsSummary {
 ///    is subtracted from the reported displacement (the gauge: zero mean translation and rotation).
 ///    Exact when the loads are self-equilibrated, as boundary pressures are; pin_reaction reports
 ///    what the pin carries otherwise.
-///  - Detachment: a particle or cluster whose intact beams no longer connect it to held degrees of
+///  - Detachment: a particle or cluster whose intact (or sprung, set_normal_springs) beams no longer connect it to held degrees of
 ///    freedom that stop all three rigid motions (a particle with only contacts left has a free
 ///    rotation) is frozen at the least-squares rigid motion of its last displacement (so it carries no
 ///    force), all its broken beams are forced open, and the system is re-assembled and refactorised.

@@ -93,6 +93,7 @@ struct SpdSolveReport {
   bool refactorized = false;       ///< the last solve rebuilt the factor (residual too large)
   int n_factorizations = 0;        ///< numeric factorisations since compute()
   int n_modifications = 0;         ///< modify() calls since the last factorisation
+  int n_update_failures = 0;       ///< modify() calls whose factor update failed and fell back to refactorize()
   std::string message;             ///< human-readable reason when info != Success
 };
 

@@ -8,7 +8,9 @@
 ///   [coupling]   split ("undrained" | "drained"), psi, xi, pressure_tolerance, displacement_tolerance,
 ///                max_iterations, accept_unconverged, relaxation ("none" | "aitken"), initial_relaxation
 ///   [numerics]   dt_initial, dt_growth, dt_max, t_end
-///   [fracture]   enabled (must be false for now: reserved for the fracture issue)
+///   [fracture]   enabled, distribution ("none" | "uniform" | "weibull"), width, weibull_modulus,
+///                correlated, seed (of the strengths), crack_tip, crack_tip_length (L_m over R);
+///                the mean strengths and mu_i are [physics] tensile_strength, compressive_strength, friction
 ///   [output]     times, vtk, radial_bins, radial_max
 /// Every key is optional except where said; every default is the library struct's. Unknown keys are errors.
 #include <filesystem>
@@ -46,6 +48,9 @@ struct RunCase {
   hm::lattice2d::CouplingOptions coupling;
   hm::lattice2d::TimeStepping stepping;         ///< output times from [output] times
   bool fracture_enabled = false;
+  /// Beam strengths (means from [physics]) and the break loop's crack-tip rule; used when enabled.
+  hm::lattice2d::StrengthSpec strength;
+  hm::lattice2d::BreakLoopOptions break_loop;
   RunOutput output;
 
   /// The flow parameters of the physics (Q, b, iota, E/M) with this case's borehole node.

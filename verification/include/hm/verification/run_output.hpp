@@ -10,9 +10,17 @@
 ///   radial.csv  t, r, r_mean, n_triangles, u_r, p at each output time: shell averages over triangles
 ///               binned by their undeformed centroid radius (radial_average.hpp); u_r of a triangle is
 ///               the mean radial displacement of its three particles.
-///   vtk/lattice_NNNN.vtu + vtk/lattice.pvd  snapshots at the output times (pressure per triangle).
+///   vtk/lattice_NNNN.vtu + vtk/lattice.pvd  snapshots at the output times (pressure per triangle,
+///               beam states).
+/// With fracture enabled, also:
+///   breaks.csv     the break log (failure.hpp's columns, load column "time"), in the order of breaking;
+///   breakdown.csv  one row: t_first_break, p_h_before (p_h^n of the step that broke the first beam),
+///                  p_h_first_break (its converged p_h^{n+1}), x_first_break, y_first_break,
+///                  t_peak, p_h_peak (largest p_h of the run), n_broken (at the end); NaN where nothing
+///                  broke. The breakdown pressure of Section 3.5 is p_h_first_break (and the peak if later).
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -29,12 +37,21 @@ class RunRecorder {
  public:
   RunRecorder(const std::filesystem::path& dir, const RunCase& c);
   void record(const hm::lattice2d::CoupledModel& model, const hm::lattice2d::CoupledStepSummary& step, bool is_output);
-  /// Closes the CSV files; throws std::runtime_error if a write failed.
+  /// Closes the CSV files and writes the fracture files; throws std::runtime_error if a write failed.
   void finish();
 
  private:
   RunOutput output_;
   double r_min_ = 0.0;
+  std::filesystem::path dir_;
+  bool fracture_ = false;
+  // Breakdown (Section 3.5): first break and peak borehole pressure.
+  double last_p_h_ = 0.0;
+  double t_first_ = std::numeric_limits<double>::quiet_NaN(), p_before_ = t_first_, p_first_ = t_first_;
+  double x_first_ = t_first_, y_first_ = t_first_;
+  double t_peak_ = 0.0, p_peak_ = -std::numeric_limits<double>::infinity();
+  int n_broken_ = 0;
+  std::vector<hm::lattice2d::BreakEvent> breaks_;
   std::ofstream series_file_, radial_file_;
   std::unique_ptr<CsvWriter> series_, radial_;
   std::unique_ptr<hm::lattice2d::VtkSeries> vtk_;
