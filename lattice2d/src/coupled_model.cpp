@@ -65,6 +65,8 @@ void TimeStepping::validate() const {
   require_finite(dt_growth, "numerics.dt_growth");
   if (!(dt_growth >= 1.0))
     throw hm::InputError("numerics.dt_growth = " + format_value(dt_growth) + ", allowed: >= 1");
+  if (max_step_halvings < 0 || max_step_halvings > 50)
+    throw hm::InputError("numerics.max_step_halvings = " + std::to_string(max_step_halvings) + ", allowed: 0 ... 50");
   if (!(dt_max >= dt_initial))
     throw hm::InputError("numerics.dt_max = " + format_value(dt_max) + ", allowed: >= dt_initial = " + format_value(dt_initial));
   for (std::size_t k = 0; k < output_times.size(); ++k) {
@@ -285,9 +287,18 @@ CoupledRunSummary CoupledModel::run(const TimeStepping& stepping, const Observer
     const double t_out = outputs[next_output];
     double dt = std::min(dt_nominal, t_out - time());
     if (t_out - (time() + dt) < snap) dt = t_out - time();
-    const CoupledStepSummary s = step(dt);
-    run.status = s.status;
+    CoupledStepSummary s = step(dt);
     run.total_iterations += s.iterations;
+    // A coupling loop that did not converge is retried with half the step (fewer breaks per step,
+    // a milder change of the contact set), up to max_step_halvings times.
+    for (int h = 0; s.status == CoupledStatus::not_converged && h < stepping.max_step_halvings; ++h) {
+      dt *= 0.5;
+      dt_nominal = dt;
+      ++run.n_step_halvings;
+      s = step(dt);
+      run.total_iterations += s.iterations;
+    }
+    run.status = s.status;
     if (!s.is_ok()) {
       run.message = s.message;
       break;

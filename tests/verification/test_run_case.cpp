@@ -94,10 +94,15 @@ TEST_CASE("hmlattice run writes series, radial profiles, VTK and a resolved conf
 
 TEST_CASE("A coupled run that does not converge exits 1 with the reason and writes nothing", "[verification][cli]") {
   TempDir dir("cli-run-fail");
-  dir.write("case.toml", small_case + "[coupling]\nmax_iterations = 1\n");
+  dir.write("case.toml", small_case + "max_step_halvings = 0\n[coupling]\nmax_iterations = 1\n");
   const auto r = run_hmlattice("run case.toml --out run", dir.path);
   CHECK(r.exit_code == 1);
   CHECK_THAT(r.err, Catch::Contains("numerical failure: coupling at t = 5e-06: not converged after 1 passes"));
+  // With retries, the step is halved max_step_halvings times before the run gives up.
+  dir.write("case2.toml", small_case + "max_step_halvings = 2\n[coupling]\nmax_iterations = 1\n");
+  const auto retried = run_hmlattice("run case2.toml --out run2", dir.path);
+  CHECK(retried.exit_code == 1);
+  CHECK_THAT(retried.err, Catch::Contains("coupling at t = 1.25e-06: not converged after 1 passes"));
   CHECK_FALSE(std::filesystem::exists(dir.path / "run"));
 }
 

@@ -141,6 +141,10 @@ RunCase read_run_case(const std::filesystem::path& file) {
   s.dt_growth = num.get_double("dt_growth", s.dt_growth);
   s.t_end = num.get_double("t_end", s.t_end);
   s.dt_max = num.get_double("dt_max", s.t_end);  // default: no cap below t_end
+  const long long halvings = num.get_int("max_step_halvings", s.max_step_halvings);
+  if (halvings < 0 || halvings > 50)
+    num.fail("max_step_halvings = " + std::to_string(halvings) + ", allowed: 0 ... 50");
+  s.max_step_halvings = static_cast<int>(halvings);
   num.reject_unknown();
 
   // [output]
@@ -193,7 +197,7 @@ std::string run_case_to_toml(const RunCase& c, const std::string& provenance_tom
      << "\naccept_unconverged = " << b(o.accept_unconverged) << "\nrelaxation = \"" << lt::to_string(o.relaxation)
      << "\"\ninitial_relaxation = " << v(o.initial_relaxation) << "\n\n"
      << "[numerics]\ndt_initial = " << v(s.dt_initial) << "\ndt_growth = " << v(s.dt_growth) << "\ndt_max = "
-     << v(s.dt_max) << "\nt_end = " << v(s.t_end) << "\n\n"
+     << v(s.dt_max) << "\nt_end = " << v(s.t_end) << "\nmax_step_halvings = " << s.max_step_halvings << "\n\n"
      << "[fracture]\nenabled = " << b(c.fracture_enabled) << "\ndistribution = \"" << lt::to_string(c.strength.distribution)
      << "\"\nwidth = " << v(c.strength.width) << "\nweibull_modulus = " << v(c.strength.weibull_modulus)
      << "\ncorrelated = " << b(c.strength.correlated) << "\nseed = " << c.strength.seed

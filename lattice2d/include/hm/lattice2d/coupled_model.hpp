@@ -89,6 +89,11 @@ struct TimeStepping {
   double dt_max = std::numeric_limits<double>::max();
   /// End time t*. Allowed: > 0, finite.
   double t_end = 1e-4;
+  /// A step whose coupling loop does not converge (status not_converged) is retried with half the
+  /// step, at most this many times, before run() stops; the nominal dt then grows again from there.
+  /// Our choice 8 (dt / 256). Breaks made by a failed attempt stay (broken beams never heal).
+  /// Allowed: 0 ... 50.
+  int max_step_halvings = 8;
   /// Times at which run() calls its observer besides t = 0 (steps are shortened to land on them).
   /// Allowed: strictly increasing, in (0, t_end]; t_end is always an output.
   std::vector<double> output_times;
@@ -133,6 +138,7 @@ struct CoupledRunSummary {
   CoupledStatus status = CoupledStatus::converged;  ///< of the last step
   int n_steps = 0;
   int total_iterations = 0;
+  int n_step_halvings = 0;  ///< retries with half the step after a coupling loop did not converge
   double time = 0.0;
   double seconds = 0.0;
   double max_balance_error = 0.0;
