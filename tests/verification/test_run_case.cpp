@@ -59,7 +59,10 @@ TEST_CASE("Bad 2D cases are rejected with one line naming table, key, value and 
   rejected(physics + "[coupling]\nxi = 0\n", "case.toml: [coupling] xi = 0, allowed: ");
   rejected(physics + "[coupling]\npressure_tolerance = 2\n", "case.toml: [coupling] pressure_tolerance = 2, allowed: ");
   rejected(physics + "[coupling]\nmax_iterations = 0\n", "case.toml: [coupling] max_iterations = 0, allowed: ");
-  rejected(physics + "[fracture]\nenabled = true\n", "case.toml: [fracture] enabled = true, allowed: false");
+  rejected(physics + "[fracture]\nwidth = 1.5\n", "case.toml: [fracture] width = 1.5, allowed: ");
+  rejected(physics + "[fracture]\ndistribution = \"normal\"\n", "case.toml: [fracture] distribution = 'normal', allowed: ");
+  rejected(physics + "[fracture]\ncrack_tip_length = 0\n", "case.toml: [fracture] crack_tip_length = 0, allowed: ");
+  rejected("[physics]\nQ = 0.1\nR_i = 0\ntensile_strength = -1\n", "case.toml: [physics] tensile_strength = -1, allowed: ");
   rejected(physics + "[numerics]\ndt_initial = -1\n", "case.toml: [numerics] dt_initial = -1, allowed: ");
   rejected(physics + "[numerics]\ndt_growth = 0.9\n", "case.toml: [numerics] dt_growth = 0.9, allowed: >= 1");
   rejected(physics + "[numerics]\nt_end = 1e-4\ndt_initial = 1e-3\n",
@@ -144,4 +147,41 @@ TEST_CASE("A 2D case in SI units gives the same dimensionless results as its dim
     INFO(file);
     CHECK(diff < 1e-8);
   }
+}
+
+TEST_CASE("A fracturing borehole run writes the break log, breakdown and fracture statistics that agree with the series",
+          "[verification][cli]") {
+  // Fig. 12's setting (b = 0.2, Eq. 16's borehole) at 3x the rate on a coarse annulus: breaks within ~1e-3.
+  TempDir dir("cli-run-fracture");
+  dir.write("case.toml",
+            "model = \"lattice2d\"\n[physics]\nQ = 0.03\nb = 0.2\nR_i = 0.138\n[lattice]\ndomain = \"annulus\"\n"
+            "n_particles = 2000\n[coupling]\nrelaxation = \"aitken\"\n[numerics]\ndt_initial = 1e-4\nt_end = 1.2e-3\n"
+            "[fracture]\nenabled = true\n[output]\ntimes = [6e-4]\nvtk = false\n");
+  const auto r = run_hmlattice("run case.toml --out run", dir.path);
+  INFO("stderr: " << r.err);
+  REQUIRE(r.exit_code == 0);
+  const std::string series = hm::test::slurp(dir.path / "run" / "series.csv");
+  const std::string breaks = hm::test::slurp(dir.path / "run" / "breaks.csv");
+  const std::string breakdown = hm::test::slurp(dir.path / "run" / "breakdown.csv");
+  const std::string fractures = hm::test::slurp(dir.path / "run" / "fractures.csv");
+  const std::string summary = hm::test::slurp(dir.path / "run" / "fracture_summary.csv");
+  CHECK_THAT(breaks, Catch::StartsWith("sequence,beam,particle_i,particle_j,x,y,time,"));
+  CHECK_THAT(breakdown, Catch::StartsWith("t_first_break,p_h_before,p_h_first_break,"));
+  CHECK(count_lines(summary) == 1 + 3);  // t = 0, 6e-4, 1.2e-3
+  // The last series row's n_broken (9th column) equals the break log's length, and is > 0.
+  const std::string last = series.substr(series.rfind('\n', series.size() - 2) + 1);
+  std::vector<std::string> cells;
+  for (std::size_t a = 0, b; a <= last.size(); a = b + 1) {
+    b = last.find(',', a);
+    if (b == std::string::npos) b = last.size();
+    cells.push_back(last.substr(a, b - a));
+  }
+  REQUIRE(cells.size() >= 9);
+  const int n_broken = std::stoi(cells[8]);
+  CHECK(n_broken > 0);
+  CHECK(count_lines(breaks) == 1 + n_broken);
+  // At least one radial fracture from the borehole at the end (the tensile hoop stress peaks at the wall).
+  CHECK_THAT(fractures, Catch::Contains(",radial,"));
+  const auto config = hm::test::slurp(dir.path / "run" / "config.toml");
+  CHECK_THAT(config, Catch::Contains("[fracture]\nenabled = true\ndistribution = \"uniform\""));
 }

@@ -114,7 +114,7 @@ void add_run_command(CLI::App& app, int& exit_code, const std::string& command_l
     std::ofstream(staged.path() / "config.toml")
         << verification::run_case_to_toml(c, verification::to_toml(verification::make_provenance(command_line)));
     staged.commit();
-    std::cout << "Results: " << out.string() << (c.fracture_enabled ? "/{series,radial,breaks,breakdown}.csv, " : "/{series,radial}.csv, ") << (c.output.vtk ? "vtk/lattice.pvd, " : "")
+    std::cout << "Results: " << out.string() << (c.fracture_enabled ? "/{series,radial,breaks,breakdown,fractures,fracture_summary}.csv, " : "/{series,radial}.csv, ") << (c.output.vtk ? "vtk/lattice.pvd, " : "")
               << "config.toml\n";
   });
 }

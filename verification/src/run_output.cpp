@@ -84,6 +84,9 @@ void RunRecorder::record(const lt::CoupledModel& model, const lt::CoupledStepSum
   const RadialFields f = radial_fields(model, lt::uniform_shell_edges(r_min_, output_.radial_max, output_.radial_bins));
   for (std::size_t k = 0; k < f.r_mid.size(); ++k)
     radial_->row({model.time(), f.r_mid[k], f.r_mean[k], static_cast<double>(f.n_triangles[k]), f.u_r[k], f.p[k]});
+  if (fracture_)
+    fractures_.push_back({model.time(), lt::compute_fracture_statistics(model.lattice(), model.mechanics().states(),
+                                                                         model.break_log())});
   if (vtk_) {
     lt::LatticeSnapshot snapshot;
     snapshot.time = model.time();
@@ -104,6 +107,8 @@ void RunRecorder::finish() {
   if (!series_file_ || !radial_file_) throw std::runtime_error("writing series.csv or radial.csv failed");
   if (!fracture_) return;
   lt::write_break_log(dir_ / "breaks.csv", breaks_, "time");
+  lt::write_fracture_table(dir_ / "fractures.csv", fractures_);
+  lt::write_fracture_summary(dir_ / "fracture_summary.csv", fractures_);
   std::ofstream file(dir_ / "breakdown.csv");
   CsvWriter breakdown(file, {"t_first_break", "p_h_before", "p_h_first_break", "x_first_break", "y_first_break",
                              "t_peak", "p_h_peak", "n_broken"});

@@ -17,7 +17,11 @@
 ///   breakdown.csv  one row: t_first_break, p_h_before (p_h^n of the step that broke the first beam),
 ///                  p_h_first_break (its converged p_h^{n+1}), x_first_break, y_first_break,
 ///                  t_peak, p_h_peak (largest p_h of the run), n_broken (at the end); NaN where nothing
-///                  broke. The breakdown pressure of Section 3.5 is p_h_first_break (and the peak if later).
+///                  broke. The breakdown pressure of Section 3.5 is p_h_first_break (and the peak if later);
+///   fractures.csv  per output time, one row per fracture (clusters of broken beams through shared
+///                  triangles, fracture_statistics.hpp): kind radial|secondary, extent, angle, modes;
+///   fracture_summary.csv  per output time: counts of fractures, radial ones, those reaching the outer
+///                  boundary, secondary ones, arms crossing r = R_i + (1 - R_i)/4, tensile/shear breaks.
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -25,6 +29,7 @@
 #include <vector>
 
 #include "hm/lattice2d/coupled_model.hpp"
+#include "hm/lattice2d/fracture_statistics.hpp"
 #include "hm/lattice2d/vtk_writer.hpp"
 #include "hm/verification/csv_writer.hpp"
 #include "hm/verification/run_case.hpp"
@@ -52,6 +57,7 @@ class RunRecorder {
   double t_peak_ = 0.0, p_peak_ = -std::numeric_limits<double>::infinity();
   int n_broken_ = 0;
   std::vector<hm::lattice2d::BreakEvent> breaks_;
+  std::vector<hm::lattice2d::FractureSnapshot> fractures_;
   std::ofstream series_file_, radial_file_;
   std::unique_ptr<CsvWriter> series_, radial_;
   std::unique_ptr<hm::lattice2d::VtkSeries> vtk_;
