@@ -7,6 +7,7 @@
 
 #include "hm/analytic/input_error.hpp"
 #include "hm/analytic/validation.hpp"
+#include "hm/lattice2d/anderson_acceleration.hpp"
 #include "hm/lattice2d/fracture_statistics.hpp"
 
 namespace hm::lattice2d {
@@ -20,13 +21,19 @@ CouplingSplit coupling_split_from_string(std::string_view name) {
 }
 
 std::string to_string(CouplingRelaxation relaxation) {
-  return relaxation == CouplingRelaxation::none ? "none" : "aitken";
+  switch (relaxation) {
+    case CouplingRelaxation::none: return "none";
+    case CouplingRelaxation::aitken: return "aitken";
+    case CouplingRelaxation::anderson: return "anderson";
+  }
+  return "?";
 }
 
 CouplingRelaxation coupling_relaxation_from_string(std::string_view name) {
   if (name == "none") return CouplingRelaxation::none;
   if (name == "aitken") return CouplingRelaxation::aitken;
-  throw hm::InputError("coupling.relaxation = '" + std::string(name) + "', allowed: none, aitken");
+  if (name == "anderson") return CouplingRelaxation::anderson;
+  throw hm::InputError("coupling.relaxation = '" + std::string(name) + "', allowed: none, aitken, anderson");
 }
 
 std::string to_string(CoupledStatus status) {
@@ -50,6 +57,8 @@ void CouplingOptions::validate() const {
   require_open(pressure_tolerance, "coupling.pressure_tolerance", 0.0, 1.0);
   require_open(displacement_tolerance, "coupling.displacement_tolerance", 0.0, 1.0);
   require_at_least(max_iterations, "coupling.max_iterations", 1);
+  if (anderson_depth < 1 || anderson_depth > 50)
+    throw hm::InputError("coupling.anderson_depth = " + std::to_string(anderson_depth) + ", allowed: 1 ... 50");
   if (!(initial_relaxation > 0.0 && initial_relaxation <= 1.0))
     throw hm::InputError("coupling.initial_relaxation = " + format_value(initial_relaxation) + ", allowed: 0 < initial_relaxation <= 1");
 }
@@ -163,6 +172,9 @@ CoupledStepSummary CoupledModel::step(double dt) {
   bool converged = false;
   double omega = 1.0;     // Aitken relaxation factor
   Eigen::VectorXd r_prev;  // last pressure residual (Aitken)
+  AndersonAcceleration anderson(options_.anderson_depth, options_.initial_relaxation);
+  double u_scale = 1.0;
+  bool u_scaled = false;
   for (int k = 1; k <= options_.max_iterations; ++k) {
     summary.iterations = k;
     // 1. Mechanics with the current pressure guess (Eq. 17) and the undrained predictor (Eq. 20).
@@ -233,10 +245,27 @@ CoupledStepSummary CoupledModel::step(double dt) {
       }
       r_prev = r;
       p_guess += omega * r;
+    } else if (options_.relaxation == CouplingRelaxation::anderson) {
+      // The pass maps (p_guess, u_prev) -> (p, u) (u_prev through the springs), so both are the state;
+      // u is scaled to the pressure's magnitude, fixed for the step so that secants stay consistent.
+      if (breaks_this_pass > 0) anderson.reset();  // the map changed: old differences mislead
+      const double u_max = u.cwiseAbs().maxCoeff(), p_max = p.cwiseAbs().maxCoeff();
+      if (!u_scaled && u_max > 0.0 && p_max > 0.0) {  // first pass with a non-zero u (from rest: pass 2)
+        u_scale = p_max / u_max;
+        u_scaled = true;
+        anderson.reset();
+      }
+      const Eigen::Index np = p.size(), nu = u.size();
+      Eigen::VectorXd x(np + nu), g(np + nu);
+      x << p_guess, u_scale * u_prev;
+      g << p, u_scale * u;
+      const Eigen::VectorXd next = anderson.next(x, g);
+      p_guess = next.head(np);
+      u_prev = next.tail(nu) / u_scale;
     } else {
       p_guess = p;
     }
-    u_prev = u;
+    if (options_.relaxation != CouplingRelaxation::anderson) u_prev = u;
     if (breaks_this_pass == 0 && summary.pressure_residual <= options_.pressure_tolerance &&
         summary.displacement_residual <= options_.displacement_tolerance) {
       converged = true;
@@ -258,7 +287,7 @@ CoupledStepSummary CoupledModel::step(double dt) {
   }
   if (summary.is_ok()) {
     flow_->accept();
-    displacement_ = u_prev;
+    displacement_ = mechanics_->displacement();  // the last pass's u, which the accepted flow saw
     current_dual_ = std::move(dual);
     volume_ = unknown_volumes(current_dual_);
   } else {

@@ -40,10 +40,11 @@ CouplingSplit coupling_split_from_string(std::string_view name);
 enum class CouplingRelaxation {
   none,    ///< the flow's pressure as it is (the paper's Fig. 5)
   aitken,  ///< Aitken's dynamic relaxation of the pressure update (same fixed point; our addition)
+  anderson,  ///< Anderson acceleration of the pressure update (same fixed point; our addition)
 };
-/// "none" or "aitken".
+/// "none", "aitken" or "anderson".
 std::string to_string(CouplingRelaxation relaxation);
-/// Inverse of to_string; throws hm::InputError "coupling.relaxation = 'x', allowed: none, aitken".
+/// Inverse of to_string; throws hm::InputError "coupling.relaxation = 'x', allowed: none, aitken, anderson".
 CouplingRelaxation coupling_relaxation_from_string(std::string_view name);
 
 /// Options of the coupling iteration (Fig. 5). Every default is set here.
@@ -67,8 +68,11 @@ struct CouplingOptions {
   /// Relaxation of the pressure guess between passes. Default none (the paper's loop). Our addition for
   /// the borehole, whose stiff feedback makes the plain loop diverge (docs/coupling.md, section 3).
   CouplingRelaxation relaxation = CouplingRelaxation::none;
-  /// First relaxation factor of the aitken variant. Our choice 0.5. Allowed: 0 < initial_relaxation <= 1.
+  /// First relaxation factor of the aitken variant, mixing factor of the anderson one. Our choice 0.5.
+  /// Allowed: 0 < initial_relaxation <= 1.
   double initial_relaxation = 0.5;
+  /// Number of past residual differences the anderson variant combines. Our choice 5. Allowed: 1 ... 50.
+  int anderson_depth = 5;
   /// Accept a step that hit max_iterations (the paper's "one iteration of both systems" with
   /// max_iterations = 1). Default false: such a step is a numerical failure (status not_converged).
   bool accept_unconverged = false;

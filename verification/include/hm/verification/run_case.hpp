@@ -6,7 +6,8 @@
 ///   [mechanics]  outer ("free" | "fixed"), solver ("cholmod" | "pcg")
 ///   [flow]       borehole_storage ("biot-modulus" | "none"), borehole_deformation ("biot" | "none")
 ///   [coupling]   split ("undrained" | "drained"), psi, xi, pressure_tolerance, displacement_tolerance,
-///                max_iterations, accept_unconverged, relaxation ("none" | "aitken"), initial_relaxation
+///                max_iterations, accept_unconverged, relaxation ("none" | "aitken" | "anderson"), initial_relaxation,
+///                anderson_depth
 ///   [numerics]   dt_initial, dt_growth, dt_max, t_end, max_step_halvings
 ///   [fracture]   enabled, distribution ("none" | "uniform" | "weibull"), width, weibull_modulus,
 ///                correlated, seed (of the strengths), crack_tip, crack_tip_length (L_m over R);
