@@ -187,7 +187,11 @@ CoupledStepSummary CoupledModel::step(double dt) {
       // beam, forces; V_i of the undeformed dual like the rest of the linear mechanics).
       const BreakLoopSummary bs = break_until_stable(*mechanics_, reference_dual_, fracture_->strengths,
                                                      fracture_->options, summary.time, break_log_);
-      summary.fracture_seconds += bs.seconds;
+      summary.mechanics_seconds += bs.solve_seconds;
+      summary.stress_seconds += bs.stress_seconds;
+      summary.break_seconds += bs.break_seconds;
+      summary.fracture_seconds += bs.stress_seconds + bs.break_seconds;
+      summary.n_mechanics_solves += bs.n_solves;
       breaks_this_pass = bs.n_breaks;
       summary.n_breaks += bs.n_breaks;
       if (!bs.is_stable()) {
@@ -200,6 +204,7 @@ CoupledStepSummary CoupledModel::step(double dt) {
     } else {
       const MechanicsSummary ms = mechanics_->solve();
       summary.mechanics_seconds += ms.solve_seconds;
+      ++summary.n_mechanics_solves;
       if (!ms.is_converged()) {
         summary.status = CoupledStatus::solver_failure;
         summary.message = "mechanics at t = " + hm::analytic::format_value(summary.time) + ", pass " +

@@ -128,6 +128,7 @@ BreakLoopSummary break_until_stable(BeamMechanics& mechanics, const DualGraph& d
   BreakLoopSummary summary;
   while (true) {
     const MechanicsSummary solved = mechanics.solve();
+    summary.solve_seconds += solved.solve_seconds;
     ++summary.n_solves;
     summary.n_contact_iterations += solved.contact_iterations;
     if (!solved.is_converged()) {
@@ -136,11 +137,13 @@ BreakLoopSummary break_until_stable(BeamMechanics& mechanics, const DualGraph& d
                         std::to_string(summary.n_breaks) + " breaks: " + solved.message;
       break;
     }
+    const auto stress_start = std::chrono::steady_clock::now();
     const BeamStress reference = current_beam_stress(mechanics, dual, options.crack_tip, 1.0);
     summary.max_reference_ratio = std::max(0.0, select_beam_to_break(reference, strengths, mechanics.states()).max_ratio);
     const BeamStress judged = stress_scale == 1.0 ? reference : scaled(reference, stress_scale);
     const BreakCandidate candidate = select_beam_to_break(judged, strengths, mechanics.states());
     summary.max_ratio = std::max(0.0, candidate.max_ratio);
+    summary.stress_seconds += seconds_since(stress_start);
     if (!candidate.found()) break;  // stable
     if (summary.n_breaks >= options.max_breaks) {
       summary.status = BreakLoopStatus::break_cap;
@@ -149,7 +152,9 @@ BreakLoopSummary break_until_stable(BeamMechanics& mechanics, const DualGraph& d
       break;
     }
     log.push_back(make_break_event(mechanics.lattice(), judged, candidate, load, static_cast<int>(log.size())));
+    const auto break_start = std::chrono::steady_clock::now();
     mechanics.break_beam(candidate.beam);
+    summary.break_seconds += seconds_since(break_start);
     ++summary.n_breaks;
   }
   summary.seconds = seconds_since(start);
