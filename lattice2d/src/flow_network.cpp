@@ -53,6 +53,9 @@ void FlowParameters::validate() const {
   require_closed(b, "b", 0.0, 1.0);
   require_positive(iota, "iota");
   require_positive(time_step, "time_step");
+  if (!(refinement_tolerance > 0.0 && refinement_tolerance < 1e-6))
+    throw InputError("refinement_tolerance = " + format_value(refinement_tolerance) + ", allowed: 0 < value < 1e-6");
+  if (max_refinements < 1) throw InputError("max_refinements = " + std::to_string(max_refinements) + ", allowed: >= 1");
   if (borehole_storage != BoreholeStorage::biot_modulus && borehole_storage != BoreholeStorage::none)
     throw InputError("borehole_storage = " + std::to_string(static_cast<int>(borehole_storage)) +
                      ", allowed: biot-modulus, none");
@@ -195,14 +198,14 @@ void FlowNetwork::update_geometry(const DualGraph& dual, const Eigen::Matrix2Xd&
   borehole_volume_ = 0.0;
   for (const auto& [i, j] : wall_beams_)
     borehole_volume_ += 0.5 * (positions(0, j) * positions(1, i) - positions(1, j) * positions(0, i));
-  factorised_dt_ = -1.0;
+  factor_stale_ = true;
 }
 
 void FlowNetwork::set_broken(const std::vector<bool>& broken) {
   assert(broken.size() == connections_.size() && "one flag per beam");
   if (broken == broken_) return;
   broken_ = broken;
-  factorised_dt_ = -1.0;
+  factor_stale_ = true;
 }
 
 void FlowNetwork::set_pressure(const Eigen::VectorXd& pressure) {
@@ -235,13 +238,25 @@ void FlowNetwork::assemble_values(double dt, double storage_scale, Eigen::Vector
   }
 }
 
-std::string FlowNetwork::factorise_if_needed(double dt) {
-  if (factorised_dt_ == dt) return {};
+std::string FlowNetwork::factorise(double dt) {
   Eigen::VectorXd values;
   assemble_values(dt, 1.0, values);
   const std::string error = solver_->factorise(solver_->factorisation, solver_->matrix, values);
   factorised_dt_ = error.empty() ? dt : -1.0;
+  factor_stale_ = false;
   return error;
+}
+
+std::string FlowNetwork::factorise_if_needed(double dt) {
+  if (factorised_dt_ == dt && (!factor_stale_ || parameters_.reuse_factorisation)) {
+    if (factor_stale_) {  // the current matrix for the refinement's residuals; the factor stays
+      Eigen::VectorXd values;
+      assemble_values(dt, 1.0, values);
+      std::copy(values.data(), values.data() + values.size(), solver_->matrix.valuePtr());
+    }
+    return {};
+  }
+  return factorise(dt);
 }
 
 FlowStepSummary FlowNetwork::solve(double dt, const Eigen::VectorXd& volume_change) {
@@ -268,7 +283,24 @@ FlowStepSummary FlowNetwork::solve(double dt, const Eigen::VectorXd& volume_chan
   Eigen::VectorXd rhs = storage_coefficient.cwiseProduct(pressure_) - deformation;
   rhs[has_borehole_ ? n_triangles_ : source_triangle_] += summary.injected;
 
+  summary.factorised = !factor_stale_;
   trial_pressure_ = solver_->factorisation.solve(rhs);
+  if (factor_stale_) {
+    // Iterative refinement with the last factor against the current matrix (reuse_factorisation).
+    const double target = parameters_.refinement_tolerance * rhs.norm();
+    Eigen::VectorXd residual = rhs - solver_->matrix * trial_pressure_;
+    while (residual.norm() > target && summary.refinements < parameters_.max_refinements) {
+      trial_pressure_ += solver_->factorisation.solve(residual);
+      residual = rhs - solver_->matrix * trial_pressure_;
+      ++summary.refinements;
+    }
+    if (!(residual.norm() <= target)) {  // too far from the factor: a fresh one
+      summary.message = factorise(dt);
+      if (!summary.message.empty()) return summary;
+      summary.factorised = true;
+      trial_pressure_ = solver_->factorisation.solve(rhs);
+    }
+  }
   if (solver_->factorisation.info() != Eigen::Success || !trial_pressure_.allFinite()) {
     summary.message = "flow solve failed";
     return summary;

@@ -37,6 +37,7 @@ lt::FlowParameters RunCase::flow_parameters() const {
   lt::FlowParameters flow = lt::flow_parameters_of(physics.parameters, stepping.dt_initial);
   flow.borehole_storage = borehole_storage;
   flow.borehole_deformation = borehole_deformation;
+  flow.reuse_factorisation = reuse_flow_factorisation;
   return flow;
 }
 
@@ -86,6 +87,7 @@ RunCase read_run_case(const std::filesystem::path& file) {
   located(flow, "", [&] {
     c.borehole_storage = lt::borehole_storage_from_string(flow.get_string("borehole_storage", "biot-modulus"));
     c.borehole_deformation = lt::borehole_deformation_from_string(flow.get_string("borehole_deformation", "biot"));
+    c.reuse_flow_factorisation = flow.get_bool("reuse_factorisation", c.reuse_flow_factorisation);
     flow.reject_unknown();
   });
 
@@ -193,7 +195,7 @@ std::string run_case_to_toml(const RunCase& c, const std::string& provenance_tom
      << "[mechanics]\nouter = \"" << lt::to_string(c.boundary.outer) << "\"\nsolver = \""
      << lt::to_string(c.mechanics.solver) << "\"\n\n"
      << "[flow]\nborehole_storage = \"" << lt::to_string(c.borehole_storage) << "\"\nborehole_deformation = \""
-     << lt::to_string(c.borehole_deformation) << "\"\n\n"
+     << lt::to_string(c.borehole_deformation) << "\"\nreuse_factorisation = " << b(c.reuse_flow_factorisation) << "\n\n"
      << "[coupling]\nsplit = \"" << lt::to_string(o.split) << "\"\npsi = " << v(o.psi) << "\nxi = " << v(o.xi)
      << "\npressure_tolerance = " << v(o.pressure_tolerance) << "\ndisplacement_tolerance = "
      << v(o.displacement_tolerance) << "\nmax_iterations = " << o.max_iterations

@@ -57,6 +57,16 @@ struct FlowParameters {
   double time_step = 1e-5;
   /// Borehole storage (Eq. 16). Default: the paper's Eq. 16; see docs/flow.md.
   BoreholeStorage borehole_storage = BoreholeStorage::biot_modulus;
+  /// After a geometry or iota change with the same dt (every pass of the coupling loop), solve with the
+  /// last factorisation and iterative refinement against the current matrix instead of refactorising;
+  /// the matrix changes by ~strain, so a few refinements reach the tolerance. A refactorisation
+  /// follows when max_refinements do not. Our choice true; false refactorises on every change.
+  bool reuse_factorisation = true;
+  /// Stop refining at ||rhs - A p|| <= refinement_tolerance ||rhs||. Our choice 1e-13 (the volume
+  /// balance then closes to ~1e-12). Allowed: 0 < refinement_tolerance < 1e-6.
+  double refinement_tolerance = 1e-13;
+  /// Refinements before falling back to a refactorisation. Our choice 20. Allowed: >= 1.
+  int max_refinements = 20;
   /// Borehole deformation term (Eq. 16). Default: the paper's Eq. 16. With borehole_storage = none
   /// and this = none the borehole node is the 1D model's flux boundary; see docs/flow.md.
   BoreholeDeformation borehole_deformation = BoreholeDeformation::biot;
@@ -86,6 +96,8 @@ struct FlowStepSummary {
   /// 0 when all four vanish.
   double balance_error = 0.0;
   bool solved = false;  ///< the factorisation and solve succeeded
+  bool factorised = false;  ///< this solve factorised the matrix (else it reused the last factor)
+  int refinements = 0;      ///< iterative-refinement corrections with a reused factor
   std::string message;  ///< empty when solved, else what went wrong (numerical trouble, not thrown)
   bool is_ok() const { return solved; }
 };
@@ -213,6 +225,7 @@ class FlowNetwork {
   double conductance(int beam) const;  // A/d times iota if broken
   void assemble_values(double dt, double storage_scale, Eigen::VectorXd& values) const;
   std::string factorise_if_needed(double dt);  // empty on success
+  std::string factorise(double dt);            // assemble and factorise for dt; empty on success
 
   FlowParameters parameters_;
   int n_triangles_ = 0;
@@ -232,7 +245,8 @@ class FlowNetwork {
   FlowTotals totals_;
 
   std::unique_ptr<Solver> solver_;
-  double factorised_dt_ = -1.0;  // dt of the current numeric factorisation; < 0: none or stale
+  double factorised_dt_ = -1.0;  // dt of the current numeric factorisation; < 0: none
+  bool factor_stale_ = false;    // geometry or iota changed since: refine with the old factor
 };
 
 }  // namespace hm::lattice2d

@@ -4,7 +4,8 @@
 ///   [physics] or [physics_si]  material, Q, b, iota, R_i (read_physics; R_i = 0 for domain = "disk")
 ///   [lattice]    domain ("disk" | "annulus"), n_particles, seed
 ///   [mechanics]  outer ("free" | "fixed"), solver ("cholmod" | "pcg")
-///   [flow]       borehole_storage ("biot-modulus" | "none"), borehole_deformation ("biot" | "none")
+///   [flow]       borehole_storage ("biot-modulus" | "none"), borehole_deformation ("biot" | "none"),
+///                reuse_factorisation
 ///   [coupling]   split ("undrained" | "drained"), psi, xi, pressure_tolerance, displacement_tolerance,
 ///                max_iterations, accept_unconverged, relaxation ("none" | "aitken" | "anderson"), initial_relaxation,
 ///                anderson_depth
@@ -46,6 +47,7 @@ struct RunCase {
   hm::lattice2d::MechanicsOptions mechanics;    ///< only `solver` is read from the case
   hm::lattice2d::BoreholeStorage borehole_storage = hm::lattice2d::BoreholeStorage::biot_modulus;
   hm::lattice2d::BoreholeDeformation borehole_deformation = hm::lattice2d::BoreholeDeformation::biot;
+  bool reuse_flow_factorisation = hm::lattice2d::FlowParameters{}.reuse_factorisation;
   hm::lattice2d::CouplingOptions coupling;
   hm::lattice2d::TimeStepping stepping;         ///< output times from [output] times
   bool fracture_enabled = false;
