@@ -1,0 +1,119 @@
+"""Fig. 13 of Ulven & Sun (2017): radially averaged radial displacement of the fracturing lattice against
+the 1D model without fracture, Q = 0.01, iota = 1, b = 0.2 (left) and b = 0.8 (right); below, the
+borehole pressure history of both with the first break marked.
+
+Reads a folder with runs.csv written by the lattice2d.fig12 benchmarks (run folders as `hmlattice run`
+writes them: radial.csv, series.csv, breakdown.csv; 1D folders as `hmlattice fdm1d` writes them:
+profiles.csv, borehole.csv), or a single run folder (then without the 1D curves):
+
+    /usr/bin/python3 figures/fig13_displacement_vs_1d.py --data verify/data/fig12_quick --out fig
+
+Solid lines with markers: the lattice's shell means u_r (radial.csv, shells binned by undeformed centroid
+radius) at the run's output times (the paper's times). Dashed: fdm1d's nodal u_r at the same times.
+Dotted (when the benchmark wrote it): the same lattice without fracture and with fdm1d's flux-boundary
+borehole (no Eq. 16 storage), up to the first output time: what separates the 2D curves from the 1D
+ones before the first break is the borehole node (docs/borehole_fracture.md).
+"""
+import csv
+import os
+import tomllib
+
+import numpy as np
+
+import hmplot
+from hmplot import plt
+
+
+def runs_to_draw(data):
+    """[(label, run folder, 1D folder or None, flux-borehole twin folder or None)]."""
+    index = os.path.join(data, "runs.csv")
+    if os.path.exists(index):
+        with open(index, newline="") as f:
+            rows = [r for r in csv.DictReader(f) if r["figure"] == "1"]
+        rows.sort(key=lambda r: float(r["b"]))
+        return [(r["run"], os.path.join(data, r["run"]), os.path.join(data, r["fdm1d"]),
+                 os.path.join(data, r["flux_twin"]) if r.get("flux_twin") else None) for r in rows]
+    return [(os.path.basename(os.path.normpath(data)), data, None, None)]
+
+
+def b_of(folder):
+    path = os.path.join(folder, "config.toml")
+    if not os.path.exists(path):
+        return None
+    with open(path, "rb") as f:
+        return tomllib.load(f).get("physics", {}).get("b")
+
+
+def main():
+    args = hmplot.arguments(__doc__.splitlines()[0])
+    runs = runs_to_draw(args.data)
+    fig, axes = plt.subplots(2, len(runs), figsize=(5.2 * len(runs), 7.4), squeeze=False)
+    for col, (label, folder, folder_1d, folder_twin) in enumerate(runs):
+        b = b_of(folder)
+        title = f"b = {b:g}" if b is not None else label
+        radial = hmplot.group_by(hmplot.read_csv(os.path.join(folder, "radial.csv")), "t")
+        times = [t for t in radial if t > 0.0]
+        profiles_1d = None
+        if folder_1d and os.path.exists(os.path.join(folder_1d, "profiles.csv")):
+            profiles_1d = hmplot.group_by(hmplot.read_csv(os.path.join(folder_1d, "profiles.csv")), "t")
+        bd = hmplot.read_csv(os.path.join(folder, "breakdown.csv"))
+        t_first, p_first = bd["t_first_break"][0], bd["p_h_first_break"][0]
+
+        # Top: u_r(r) at the output times.
+        ax = axes[0][col]
+        colors = plt.cm.viridis(np.linspace(0.0, 0.85, len(times)))
+        markers = "osD^v<>"
+        for k, t in enumerate(times):
+            d = radial[t]
+            state = "unbroken" if not (t >= t_first) else "fractured"
+            ax.plot(d["r_mean"], d["u_r"], "-", marker=markers[k % len(markers)], ms=3.5, markevery=2,
+                    color=colors[k], label=f"2D, t* = {t:.3g} ({state})")
+            if profiles_1d is not None:
+                match = [t1 for t1 in profiles_1d if abs(t1 - t) <= 1e-6 * t]
+                if match:
+                    d1 = profiles_1d[match[0]]
+                    ax.plot(d1["r"], d1["u_r"], "--", color=colors[k], lw=1.2)
+        if profiles_1d is not None:
+            ax.plot([], [], "k--", lw=1.2, label="1D (fdm1d), no fracture")
+        twin = folder_twin if folder_twin and os.path.exists(os.path.join(folder_twin, "radial.csv")) else None
+        if twin:
+            tr = hmplot.group_by(hmplot.read_csv(os.path.join(twin, "radial.csv")), "t")
+            t_tw = max(tr)
+            ax.plot(tr[t_tw]["r_mean"], tr[t_tw]["u_r"], ":", color="C1", lw=1.4,
+                    label=f"2D, flux borehole, no fracture, t* = {t_tw:.3g}")
+        ax.set_xlabel("r*")
+        ax.set_ylabel("radially averaged u_r*")
+        ax.set_xlim(0.0, 1.0)
+        ax.set_title(f"{title}: u_r, lattice (solid) vs 1D without fracture (dashed)", fontsize=9)
+        ax.legend(loc="best", fontsize=7)
+
+        # Bottom: p_h(t), 2D and 1D, first break marked.
+        ax = axes[1][col]
+        s = hmplot.read_csv(os.path.join(folder, "series.csv"))
+        keep = s["t"] > 0.0
+        ax.plot(s["t"][keep], s["p_h"][keep], "-", color="C0", label="2D lattice (fracture)")
+        if folder_1d and os.path.exists(os.path.join(folder_1d, "borehole.csv")):
+            h = hmplot.read_csv(os.path.join(folder_1d, "borehole.csv"))
+            keep1 = h["t"] > 0.0
+            ax.plot(h["t"][keep1], h["p_h"][keep1], "--", color="k", lw=1.2, label="1D (fdm1d), no fracture")
+        if twin:
+            st = hmplot.read_csv(os.path.join(twin, "series.csv"))
+            kt = st["t"] > 0.0
+            ax.plot(st["t"][kt], st["p_h"][kt], ":", color="C1", lw=1.4,
+                    label="2D, flux-boundary borehole, no fracture")
+        if np.isfinite(t_first):
+            ax.axvline(t_first, color="C3", lw=0.8, ls=":")
+            ax.plot([t_first], [p_first], "o", color="C3", ms=6, mfc="none",
+                    label=f"first break: t* = {t_first:.3g}, p_h* = {p_first:.3g}")
+        for t in times:
+            ax.axvline(t, color="0.6", lw=0.6, ls="-", zorder=0)
+        ax.set_xscale("log")
+        ax.set_xlabel("t* (grey: output times)")
+        ax.set_ylabel("borehole pressure p_h*")
+        ax.set_title(f"{title}: borehole pressure", fontsize=9)
+        ax.legend(loc="upper left", fontsize=7)
+    hmplot.save(fig, args.out, "fig13_displacement_vs_1d")
+
+
+if __name__ == "__main__":
+    main()
