@@ -9,6 +9,7 @@ packages=(
   libeigen3-dev libgsl-dev libboost-dev libcgal-dev libsuitesparse-dev
   libtoml11-dev libcli11-dev nlohmann-json3-dev catch2 libbenchmark-dev
   python3-matplotlib python3-numpy python3-meshio
+  libopenblas0-pthread  # BLAS/LAPACK behind CHOLMOD's supernodal factorisation: ~1.4-3x faster at N = 1e5
 )
 
 missing=()

@@ -4,6 +4,7 @@
 
 #include "hm/analytic/input_error.hpp"
 #include "hm/analytic/validation.hpp"
+#include "hm/lattice2d/calibration.hpp"
 
 namespace hm::verification {
 
@@ -180,6 +181,21 @@ RunCase read_run_case(const std::filesystem::path& file) {
   return c;
 }
 
+namespace {
+
+// The beams every run uses and the continuum they were measured to represent (not inputs: comments).
+std::string calibration_comment() {
+  const lt::BeamParameters beams = lt::calibrated_beam_parameters();
+  const lt::ElasticConstants continuum = lt::calibrated_continuum();
+  return "# beams: calibrated_beam_parameters() k_n = " + analytic::format_value(beams.normal_stiffness) +
+         ", a = " + analytic::format_value(beams.aspect) + ", nu0 = " + analytic::format_value(beams.beam_poisson) +
+         ", stiffness scaling " + (beams.stiffness_scaling == lt::StiffnessScaling::uniform ? "uniform" : "voronoi-facet") + ";\n# measured continuum (calibration, " +
+         "docs/lattice.md): E = " + analytic::format_value(continuum.youngs_modulus) +
+         ", nu = " + analytic::format_value(continuum.poisson_ratio) + " (plane strain)\n";
+}
+
+}  // namespace
+
 std::string run_case_to_toml(const RunCase& c, const std::string& provenance_toml) {
   auto v = [](double x) { return analytic::format_value(x); };
   auto b = [](bool x) { return x ? "true" : "false"; };
@@ -191,7 +207,7 @@ std::string run_case_to_toml(const RunCase& c, const std::string& provenance_tom
      << "model = \"lattice2d\"\n\n"
      << physics_to_toml(c.physics) << "\n"
      << "[lattice]\ndomain = \"" << lt::to_string(c.lattice.domain) << "\"\nn_particles = " << c.lattice.n_particles
-     << "\nseed = " << c.lattice.seed << "\n\n"
+     << "\nseed = " << c.lattice.seed << "\n" << calibration_comment() << "\n"
      << "[mechanics]\nouter = \"" << lt::to_string(c.boundary.outer) << "\"\nsolver = \""
      << lt::to_string(c.mechanics.solver) << "\"\n\n"
      << "[flow]\nborehole_storage = \"" << lt::to_string(c.borehole_storage) << "\"\nborehole_deformation = \""
