@@ -261,10 +261,10 @@ CoupledStepSummary CoupledModel::step(double dt) {
         anderson.reset();
       }
       const Eigen::Index np = p.size(), nu = u.size();
-      Eigen::VectorXd x(np + nu), g(np + nu);
-      x << p_guess, u_scale * u_prev;
-      g << p, u_scale * u;
-      const Eigen::VectorXd next = anderson.next(x, g);
+      Eigen::VectorXd state(np + nu), mapped(np + nu);
+      state << p_guess, u_scale * u_prev;
+      mapped << p, u_scale * u;
+      const Eigen::VectorXd next = anderson.next(state, mapped);
       p_guess = next.head(np);
       u_prev = next.tail(nu) / u_scale;
     } else {
