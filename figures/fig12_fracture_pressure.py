@@ -14,7 +14,6 @@ from particle i to j, so a crack shows as a chain of short segments across it), 
 """
 import csv
 import os
-import tomllib
 import xml.etree.ElementTree as ET
 
 import matplotlib.colors as mcolors
@@ -76,15 +75,6 @@ def summary_at(folder, t):
     return {name: col[k] for name, col in s.items()} if abs(s["t"][k] - t) <= 1e-6 * t else None
 
 
-def b_of(folder):
-    """b from the run's config.toml ([physics] b, as `hmlattice run` writes it), or None."""
-    path = os.path.join(folder, "config.toml")
-    if not os.path.exists(path):
-        return None
-    with open(path, "rb") as f:
-        return tomllib.load(f).get("physics", {}).get("b")
-
-
 def main():
     args = hmplot.arguments(__doc__.splitlines()[0])
     runs = [(label, folder, snapshots(folder)) for label, folder in runs_to_draw(args.data)]
@@ -92,7 +82,7 @@ def main():
     fig, axes = plt.subplots(len(runs), n_cols, figsize=(3.0 * n_cols, 3.0 * len(runs)), squeeze=False)
     panel = iter("ABCDEFGHIJKLMNOP")
     for row, (label, folder, snaps) in enumerate(runs):
-        b = b_of(folder)
+        b = hmplot.run_physics(folder, "b")
         for col in range(n_cols):
             ax = axes[row][col]
             if col >= len(snaps):

@@ -16,7 +16,6 @@ ones before the first break is the borehole node (docs/borehole_fracture.md).
 """
 import csv
 import os
-import tomllib
 
 import numpy as np
 
@@ -36,20 +35,12 @@ def runs_to_draw(data):
     return [(os.path.basename(os.path.normpath(data)), data, None, None)]
 
 
-def b_of(folder):
-    path = os.path.join(folder, "config.toml")
-    if not os.path.exists(path):
-        return None
-    with open(path, "rb") as f:
-        return tomllib.load(f).get("physics", {}).get("b")
-
-
 def main():
     args = hmplot.arguments(__doc__.splitlines()[0])
     runs = runs_to_draw(args.data)
     fig, axes = plt.subplots(2, len(runs), figsize=(5.2 * len(runs), 7.4), squeeze=False)
     for col, (label, folder, folder_1d, folder_twin) in enumerate(runs):
-        b = b_of(folder)
+        b = hmplot.run_physics(folder, "b")
         title = f"b = {b:g}" if b is not None else label
         radial = hmplot.group_by(hmplot.read_csv(os.path.join(folder, "radial.csv")), "t")
         times = [t for t in radial if t > 0.0]

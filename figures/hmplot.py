@@ -11,6 +11,7 @@ toolkit did not compute: scripts select, label and draw.
 import argparse
 import csv
 import os
+import tomllib
 from collections import defaultdict
 
 import matplotlib
@@ -50,6 +51,15 @@ def read_csv(path):
         raise SystemExit(f"{path}: no data rows")
     data = np.array(body, dtype=float)
     return {name: data[:, i] for i, name in enumerate(header)}
+
+
+def run_physics(folder, key):
+    """[physics] <key> of a run folder's config.toml (as `hmlattice run` writes it), or None."""
+    path = os.path.join(folder, "config.toml")
+    if not os.path.exists(path):
+        return None
+    with open(path, "rb") as f:
+        return tomllib.load(f).get("physics", {}).get(key)
 
 
 def read_break_log(path):

@@ -40,6 +40,7 @@
 #include "hm/verification/run_case.hpp"
 #include "hm/verification/run_output.hpp"
 #include "report_writer.hpp"
+#include "fdm1d_sampling.hpp"
 
 namespace hm::verification {
 
@@ -167,39 +168,6 @@ fdm1d::Fdm1dResult run_reference(const RunCase& c) {
   return r;
 }
 
-/// The 1D borehole pressure at time t (linear between its steps).
-double p_h_at(const fdm1d::Fdm1dResult& r, double t) {
-  const auto& h = r.borehole;
-  if (t <= h.front().t) return h.front().p_h;
-  if (t >= h.back().t) return h.back().p_h;
-  const auto it = std::lower_bound(h.begin(), h.end(), t, [](const fdm1d::BoreholeSample& s, double x) { return s.t < x; });
-  const std::size_t i = static_cast<std::size_t>(it - h.begin());
-  const double w = (t - h[i - 1].t) / (h[i].t - h[i - 1].t);
-  return (1.0 - w) * h[i - 1].p_h + w * h[i].p_h;
-}
-
-/// Linear interpolation of nodal values f on the increasing grid r.
-double interpolate(const std::vector<double>& r, const std::vector<double>& f, double x) {
-  if (x <= r.front()) return f.front();
-  if (x >= r.back()) return f.back();
-  const std::size_t i = static_cast<std::size_t>(std::upper_bound(r.begin(), r.end(), x) - r.begin());
-  const double w = (x - r[i - 1]) / (r[i] - r[i - 1]);
-  return (1.0 - w) * f[i - 1] + w * f[i];
-}
-
-/// Area-weighted mean int f r dr / int r dr of the 1D nodal profile over one shell (as the vs_fdm1d benchmark).
-double shell_mean(const std::vector<double>& r, const std::vector<double>& f, double r0, double r1) {
-  constexpr int m = 200;
-  double num = 0.0, den = 0.0;
-  for (int k = 0; k <= m; ++k) {
-    const double x = r0 + (r1 - r0) * k / m, w = (k == 0 || k == m) ? 0.5 : 1.0;
-    num += w * interpolate(r, f, x) * x;
-    den += w * x;
-  }
-  return num / den;
-}
-
-/// Runs one case into root/label (as `hmlattice run` writes it) and collects the outcome.
 RunOutcome run_case(const RunCase& c, const std::string& label, const fs::path& root, const fdm1d::Fdm1dResult& ref) {
   RunOutcome o;
   o.label = label;
@@ -250,7 +218,7 @@ RunOutcome run_case(const RunCase& c, const std::string& label, const fs::path& 
       o.pre_last = std::abs(pre_last_ratio), o.pre_last_t = pre_last_t, o.pre_signed_last = pre_last_ratio;
     }
     if (std::isnan(o.t_first) && t > 0.0) {
-      const double ratio = p_h / p_h_at(ref, t) - 1.0;
+      const double ratio = p_h / borehole_pressure_at(ref, t) - 1.0;
       pre_last_ratio = ratio, pre_last_t = t;
       if (t >= kWindow * (1 - 1e-12) && (std::isnan(o.pre_max) || std::abs(ratio) > o.pre_max))
         o.pre_max = std::abs(ratio), o.pre_max_t = t;
@@ -310,11 +278,11 @@ TwinOutcome run_flux_twin(const RunCase& c, const std::string& label, const fs::
     recorder.record(m, s, out);
     const double t = m.time();
     if (t >= kWindow * (1 - 1e-12)) {
-      const double e = std::abs(injection_pressure(m) / p_h_at(ref, t) - 1.0);
+      const double e = std::abs(injection_pressure(m) / borehole_pressure_at(ref, t) - 1.0);
       if (std::isnan(o.max_error) || e > o.max_error) o.max_error = e, o.max_error_t = t;
     }
     if (!out || t < o.t_end * (1 - 1e-12)) return;
-    o.end_error = std::abs(injection_pressure(m) / p_h_at(ref, t) - 1.0);
+    o.end_error = std::abs(injection_pressure(m) / borehole_pressure_at(ref, t) - 1.0);
     for (const auto& s1 : ref.snapshots) {
       if (std::abs(s1.t - t) > 1e-9 * t) continue;
       const RadialFields f = radial_fields(m, edges);

@@ -42,6 +42,7 @@
 #include "hm/verification/run_case.hpp"
 #include "hm/verification/run_output.hpp"
 #include "report_writer.hpp"
+#include "fdm1d_sampling.hpp"
 
 namespace hm::verification {
 
@@ -125,41 +126,6 @@ fdm1d::Fdm1dResult run_reference(double b, const Stepping& s, double nu, bool fi
   return fdm1d::run_fdm1d(p, n);
 }
 
-/// Linear interpolation of nodal values f on the increasing grid r.
-double interpolate(const std::vector<double>& r, const std::vector<double>& f, double x) {
-  if (x <= r.front()) return f.front();
-  if (x >= r.back()) return f.back();
-  const auto it = std::upper_bound(r.begin(), r.end(), x);
-  const std::size_t i = static_cast<std::size_t>(it - r.begin());
-  const double w = (x - r[i - 1]) / (r[i] - r[i - 1]);
-  return (1.0 - w) * f[i - 1] + w * f[i];
-}
-
-/// Area-weighted mean of the piecewise-linear nodal profile over r0 <= r <= r1: int f r dr / int r dr
-/// (trapezoid on 400 sub-intervals, far finer than the 1D grid's 400 over [R_i, 1]).
-double shell_mean(const std::vector<double>& r, const std::vector<double>& f, double r0, double r1) {
-  constexpr int m = 400;
-  double num = 0.0, den = 0.0;
-  for (int k = 0; k <= m; ++k) {
-    const double x = r0 + (r1 - r0) * k / m, w = (k == 0 || k == m) ? 0.5 : 1.0;
-    num += w * interpolate(r, f, x) * x;
-    den += w * x;
-  }
-  return num / den;
-}
-
-/// The 1D borehole pressure at time t (linear between steps; exact where the step times coincide).
-double p_h_at(const fdm1d::Fdm1dResult& r, double t) {
-  const auto& h = r.borehole;
-  if (t <= h.front().t) return h.front().p_h;
-  if (t >= h.back().t) return h.back().p_h;
-  const auto it = std::lower_bound(h.begin(), h.end(), t, [](const fdm1d::BoreholeSample& s, double x) { return s.t < x; });
-  const std::size_t i = static_cast<std::size_t>(it - h.begin());
-  if (std::abs(h[i].t - t) <= 1e-12 * t) return h[i].p_h;
-  const double w = (t - h[i - 1].t) / (h[i].t - h[i - 1].t);
-  return (1.0 - w) * h[i - 1].p_h + w * h[i].p_h;
-}
-
 const fdm1d::Fdm1dSnapshot& snapshot_at(const fdm1d::Fdm1dResult& r, double t) {
   for (const auto& s : r.snapshots)
     if (std::abs(s.t - t) <= 1e-9 * t) return s;
@@ -230,7 +196,7 @@ Outcome compare(const Comparison1d& v, const fs::path& root, CsvWriter& ph_csv,
     const double t = m.time();
     if (t <= 0.0) return;
     o.max_passes = std::max(o.max_passes, s.iterations);
-    const double p2 = injection_pressure(m), p1 = p_h_at(ref, t), p25 = p_h_at(ref25, t);
+    const double p2 = injection_pressure(m), p1 = borehole_pressure_at(ref, t), p25 = borehole_pressure_at(ref25, t);
     ph_csv.row({v.b, static_cast<double>(v.n_particles), t, p2, p1, p25});
     o.p_h_error.emplace_back(t, p2 / p1 - 1.0);
     if (!out) return;
@@ -254,7 +220,7 @@ Outcome compare(const Comparison1d& v, const fs::path& root, CsvWriter& ph_csv,
       const double u25 = shell_mean(ref25.r, s25.u_r, edges[k], edges[k + 1]);
       const double q25 = shell_mean(ref25.r, s25.p, edges[k], edges[k + 1]);
       pe.u_local25 = std::max(pe.u_local25, std::abs(f.u_r[k] / u25 - 1.0));
-      pe.p25 = std::max(pe.p25, std::abs(f.p[k] - q25) / p_h_at(ref25, t));
+      pe.p25 = std::max(pe.p25, std::abs(f.p[k] - q25) / borehole_pressure_at(ref25, t));
     }
     for (std::size_t k = 0; k < f.r_mean.size(); ++k) {
       const double eu = std::abs(f.u_r[k] - u1[k]) / std::abs(u1[k]), ep = std::abs(f.p[k] - q1[k]) / p_h1;
@@ -298,8 +264,8 @@ Outcome compare(const Comparison1d& v, const fs::path& root, CsvWriter& ph_csv,
   }
   for (const auto& h : ref.borehole)
     if (h.t >= kWindow * (1 - 1e-12)) {
-      o.nu_p_h = std::max(o.nu_p_h, std::abs(p_h_at(ref25, h.t) / h.p_h - 1.0));
-      o.dt_p_h = std::max(o.dt_p_h, std::abs(p_h_at(ref_fine, h.t) / h.p_h - 1.0));
+      o.nu_p_h = std::max(o.nu_p_h, std::abs(borehole_pressure_at(ref25, h.t) / h.p_h - 1.0));
+      o.dt_p_h = std::max(o.dt_p_h, std::abs(borehole_pressure_at(ref_fine, h.t) / h.p_h - 1.0));
     }
   return o;
 }
