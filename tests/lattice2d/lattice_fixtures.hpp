@@ -3,6 +3,9 @@
 // domain, size and seed, everything else at LatticeSpec's defaults.
 #include <cstddef>
 #include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -35,6 +38,14 @@ inline double ring_area(const hm::lattice2d::Lattice& lattice, hm::lattice2d::Bo
     twice += a.x() * b.y() - a.y() * b.x();
   }
   return 0.5 * twice;
+}
+
+/// The lines of a text file (e.g. a CSV the code under test wrote).
+inline std::vector<std::string> lines_of(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
 }
 
 }  // namespace hm::test

@@ -11,6 +11,7 @@
 #include "approx.hpp"
 #include "hm/lattice2d/failure.hpp"
 #include "hm/lattice2d/lattice.hpp"
+#include "lattice2d/lattice_fixtures.hpp"
 
 using namespace hm::lattice2d;
 
@@ -35,12 +36,6 @@ constexpr double T = 2e-4, C = 3.33e-3;  // Table 1 over E
 // Eq. 11 with mu_i = 0.9: K = [(1 + 0.81)^(1/2) + 0.9]^2 = 5.0417.
 const double K09 = std::pow(std::sqrt(1.81) + 0.9, 2);
 
-std::vector<std::string> lines_of(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::vector<std::string> lines;
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
 
 }  // namespace
 
@@ -146,7 +141,7 @@ TEST_CASE("Break events are logged with position and written as CSV", "[lattice2
   second.sequence = 4;
   second.mode = FailureMode::shear;
   write_break_log(dir / "breaks.csv", {event, second}, "time");
-  const std::vector<std::string> lines = lines_of(dir / "breaks.csv");
+  const std::vector<std::string> lines = hm::test::lines_of(dir / "breaks.csv");
   REQUIRE(lines.size() == 3);
   CHECK(lines[0] == "sequence,beam,particle_i,particle_j,x,y,time,sigma_1,sigma_3,ratio,crack_tip_factor,mode");
   std::stringstream row(lines[1]);

@@ -74,12 +74,6 @@ std::vector<bool> four_cracks(const Lattice& lattice) {
   return broken;
 }
 
-std::vector<std::string> lines_of(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::vector<std::string> lines;
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
 
 }  // namespace
 
@@ -306,7 +300,7 @@ TEST_CASE("Fracture tables are written as CSV and bad options are rejected", "[l
   std::filesystem::create_directories(dir);
 
   write_fracture_table(dir / "fractures.csv", snaps);
-  const auto table = lines_of(dir / "fractures.csv");
+  const auto table = hm::test::lines_of(dir / "fractures.csv");
   REQUIRE(table.size() == 1 + 4);  // the empty snapshot has no rows
   CHECK(table[0] ==
         "t,fracture,kind,n_beams,connected_to_borehole,reaches_outer,r_min,r_max,length,angle_deg,n_tensile,n_shear");
@@ -315,7 +309,7 @@ TEST_CASE("Fracture tables are written as CSV and bad options are rejected", "[l
   CHECK(table[1].substr(table[1].size() - 4) == ",0,0");
 
   write_fracture_summary(dir / "summary.csv", snaps);
-  const auto summary = lines_of(dir / "summary.csv");
+  const auto summary = hm::test::lines_of(dir / "summary.csv");
   REQUIRE(summary.size() == 1 + 2);
   CHECK(summary[0] ==
         "t,n_broken,n_fractures,n_radial,n_radial_reaching_outer,n_secondary,n_arms,n_tensile,n_shear,"
