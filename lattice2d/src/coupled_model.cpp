@@ -190,7 +190,6 @@ CoupledStepSummary CoupledModel::step(double dt) {
       summary.mechanics_seconds += bs.solve_seconds;
       summary.stress_seconds += bs.stress_seconds;
       summary.break_seconds += bs.break_seconds;
-      summary.fracture_seconds += bs.stress_seconds + bs.break_seconds;
       summary.n_mechanics_solves += bs.n_solves;
       breaks_this_pass = bs.n_breaks;
       summary.n_breaks += bs.n_breaks;

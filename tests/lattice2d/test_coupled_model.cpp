@@ -30,6 +30,23 @@ CoupledModel make_model(const Lattice& lattice, CouplingOptions options, Boundar
 
 double max_abs(const Eigen::VectorXd& v) { return v.cwiseAbs().maxCoeff(); }
 
+// One step on the disk iterated to 1e-10 with `relaxation` and with the plain loop: the same solution.
+void check_same_step_as_plain_loop(CouplingOptions options, CouplingRelaxation relaxation) {
+  const Lattice disk = make_lattice(DomainShape::disk, 2000);
+  options.pressure_tolerance = options.displacement_tolerance = 1e-10;
+  options.relaxation = CouplingRelaxation::none;
+  CoupledModel plain = make_model(disk, options);
+  options.relaxation = relaxation;
+  CoupledModel relaxed = make_model(disk, options);
+  const CoupledStepSummary a = plain.step(2e-5), b = relaxed.step(2e-5);
+  REQUIRE(a.status == CoupledStatus::converged);
+  REQUIRE(b.status == CoupledStatus::converged);
+  INFO("disk, one step: plain " << a.iterations << " passes, " << to_string(relaxation) << " " << b.iterations);
+  // Both stop at a relative change of 1e-10 per pass (see the drained/undrained test).
+  CHECK(max_abs(plain.pressure() - relaxed.pressure()) < 1e-8 * max_abs(plain.pressure()));
+  CHECK(max_abs(plain.displacement() - relaxed.displacement()) < 1e-8 * max_abs(plain.displacement()));
+}
+
 }  // namespace
 
 TEST_CASE("Coupling options and time stepping: defaults are valid, bad values are rejected", "[lattice2d]") {
@@ -219,18 +236,7 @@ TEST_CASE("In a borehole the plain loop diverges and is reported; Aitken relaxat
     CHECK(model.flow().borehole_pressure() > 0.0);
   }
   SECTION("Aitken on the disk reaches the plain loop's solution") {
-    const Lattice disk = make_lattice(DomainShape::disk, 2000);
-    options.pressure_tolerance = options.displacement_tolerance = 1e-10;
-    CoupledModel plain = make_model(disk, options);
-    options.relaxation = CouplingRelaxation::aitken;
-    CoupledModel relaxed = make_model(disk, options);
-    const CoupledStepSummary a = plain.step(2e-5), b = relaxed.step(2e-5);
-    REQUIRE(a.status == CoupledStatus::converged);
-    REQUIRE(b.status == CoupledStatus::converged);
-    std::printf("disk, one step: plain %d passes, Aitken %d passes\n", a.iterations, b.iterations);
-    // Both stop at a relative change of 1e-10 per pass (see the drained/undrained test).
-    CHECK(max_abs(plain.pressure() - relaxed.pressure()) < 1e-8 * max_abs(plain.pressure()));
-    CHECK(max_abs(plain.displacement() - relaxed.displacement()) < 1e-8 * max_abs(plain.displacement()));
+    check_same_step_as_plain_loop(options, CouplingRelaxation::aitken);
   }
   SECTION("a bad relaxation factor is rejected") {
     options.initial_relaxation = 1.5;
@@ -245,18 +251,8 @@ TEST_CASE("In a borehole the plain loop diverges and is reported; Aitken relaxat
     options.relaxation = CouplingRelaxation::anderson;
     CoupledModel model(annulus, BeamParameters{}, BoundaryConditions{}, MechanicsOptions{}, flow, options);
     for (int n = 0; n < 3; ++n) REQUIRE(model.step(1e-5 * (n + 1)).status == CoupledStatus::converged);
-    const Lattice disk = make_lattice(DomainShape::disk, 2000);
-    options.pressure_tolerance = options.displacement_tolerance = 1e-10;
-    CoupledModel accelerated = make_model(disk, options);
-    options.relaxation = CouplingRelaxation::none;
-    CoupledModel plain = make_model(disk, options);
-    const CoupledStepSummary a = plain.step(2e-5), b = accelerated.step(2e-5);
-    REQUIRE(a.status == CoupledStatus::converged);
-    REQUIRE(b.status == CoupledStatus::converged);
-    // Measured 15 and 18 passes: on the disk's fast loop the mixing costs a few passes; Anderson's gain is
-    // on the fractured borehole's slow crack modes (docs/coupling.md: 2865 -> 772 passes at N = 3000).
-    INFO("disk, one step: plain " << a.iterations << " passes, Anderson " << b.iterations);
-    CHECK(max_abs(plain.pressure() - accelerated.pressure()) < 1e-8 * max_abs(plain.pressure()));
-    CHECK(max_abs(plain.displacement() - accelerated.displacement()) < 1e-8 * max_abs(plain.displacement()));
+    // Measured 15 and 18 passes on the disk: on its fast loop the mixing costs a few passes; Anderson's gain
+    // is on the fractured borehole's slow crack modes (docs/coupling.md: 2865 -> 772 passes at N = 3000).
+    check_same_step_as_plain_loop(options, CouplingRelaxation::anderson);
   }
 }

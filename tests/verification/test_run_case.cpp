@@ -59,6 +59,13 @@ TEST_CASE("Bad 2D cases are rejected with one line naming table, key, value and 
   rejected(physics + "[coupling]\nxi = 0\n", "case.toml: [coupling] xi = 0, allowed: ");
   rejected(physics + "[coupling]\npressure_tolerance = 2\n", "case.toml: [coupling] pressure_tolerance = 2, allowed: ");
   rejected(physics + "[coupling]\nmax_iterations = 0\n", "case.toml: [coupling] max_iterations = 0, allowed: ");
+  rejected(physics + "[flow]\nborehole_deformation = \"full\"\n",
+           "case.toml: [flow] borehole_deformation = 'full', allowed: biot, none");
+  rejected(physics + "[flow]\nreuse_factorisation = 1\n", "case.toml: [flow] reuse_factorisation = ");
+  rejected(physics + "[coupling]\nrelaxation = \"secant\"\n", "case.toml: [coupling] relaxation = 'secant', allowed: ");
+  rejected(physics + "[coupling]\nanderson_depth = 0\n", "case.toml: [coupling] anderson_depth = 0, allowed: 1 ... 50");
+  rejected(physics + "[numerics]\nmax_step_halvings = -1\n", "case.toml: [numerics] max_step_halvings = -1, allowed: 0 ... 50");
+  rejected(physics + "[fracture]\nseed = -2\n", "case.toml: [fracture] seed = -2, allowed: >= 0");
   rejected(physics + "[fracture]\nwidth = 1.5\n", "case.toml: [fracture] width = 1.5, allowed: ");
   rejected(physics + "[fracture]\ndistribution = \"normal\"\n", "case.toml: [fracture] distribution = 'normal', allowed: ");
   rejected(physics + "[fracture]\ncrack_tip_length = 0\n", "case.toml: [fracture] crack_tip_length = 0, allowed: ");

@@ -132,7 +132,6 @@ struct CoupledStepSummary {
   double mechanics_seconds = 0.0;   ///< BeamMechanics::solve (back-substitutions), also inside break loops
   double stress_seconds = 0.0;      ///< break loops: beam stresses and failure checks
   double break_seconds = 0.0;       ///< break loops: BeamMechanics::break_beam (factor downdates)
-  double fracture_seconds = 0.0;    ///< stress_seconds + break_seconds: what fracture adds besides solves
   int n_mechanics_solves = 0;       ///< mechanical solves (one per pass plus one per break)
   double geometry_seconds = 0.0;    ///< deformed dual graph and FlowNetwork::update_geometry
   double flow_seconds = 0.0;        ///< FlowNetwork::solve (refactorisation and solve)
