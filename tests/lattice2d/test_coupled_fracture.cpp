@@ -87,6 +87,7 @@ TEST_CASE("Coupled fracture: radial cracks from the wall, never healed, logged i
 
   // The first break is tensile, at the borehole wall (the hoop stress peaks there: Section 3.2).
   CHECK(log.front().mode == FailureMode::tensile);
+  // Beams with an end on the wall have their midpoint within L/2 of R_i (a wall chord's inside it by L^2/(8 R_i)).
   CHECK(log.front().position.norm() == Approx(0.138).margin(0.5 * lattice.length.maxCoeff()));
 
   // Never healed: the broken set only grows, step after step.
