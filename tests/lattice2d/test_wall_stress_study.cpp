@@ -1,6 +1,6 @@
 // Hidden study (not CI): where the borehole wall's ~1.4x over-stress of the dry lattice comes from
 // (annulus R_i = 0.138, internal pressure, free outer boundary; Lame). Run:
-//   build/tests/test_lattice2d "[wall_study]"   (env HM_WALL_N, HM_WALL_SEEDS; ~5 s per option and seed)
+//   build/tests/test_lattice2d "[wall_study]"   (env HM_WALL_N, HM_WALL_SEEDS, HM_WALL_ELL; ~1.6 s for all at N = 1e4)
 // Per option and seed it prints: (a) wall-beam axial strain vs Lame's hoop strain u_r(R_i)/R_i;
 // (b) wall particles' polar stress vs Lame at the clipped cell's centroid radius and averaged over the
 // cell, split into wall-beam / inward-beam and normal-force / shear-force parts; (c) sigma_tt with other
