@@ -1,4 +1,5 @@
 #pragma once
+#include <cmath>
 // Lattices the lattice2d tests build over and over: a spec or a generated lattice of a given
 // domain, size and seed, everything else at LatticeSpec's defaults.
 #include <cstddef>
@@ -20,6 +21,14 @@ inline hm::lattice2d::LatticeSpec spec_of(hm::lattice2d::DomainShape shape, long
   spec.n_particles = n;
   spec.seed = seed;
   return spec;
+}
+
+/// Lower bound of d_su / L for a boundary beam: the boundary spacing is <= 1.01 h, h = factor r_min,
+/// and the third vertex is >= r_min from both ends, so the angle opposite the beam is
+/// <= a = 2 asin(1.01 factor / 2) and d_su = (L/2) cot(a') >= (L/2) cot(a) (0.28 at factor 1, 0.070 at
+/// the default 1.3, 0.035 at 1.35; lattice.hpp).
+inline double min_boundary_dual_ratio(double boundary_spacing_factor) {
+  return 0.5 / std::tan(2.0 * std::asin(1.01 * boundary_spacing_factor / 2.0));
 }
 
 inline hm::lattice2d::Lattice make_lattice(hm::lattice2d::DomainShape shape, long long n, std::uint64_t seed = 1) {

@@ -208,7 +208,7 @@ TEST_CASE("The pass observer sees every pass of a step, the last one being the a
   CHECK((last_p - model.pressure()).cwiseAbs().maxCoeff() == 0.0);
 }
 
-TEST_CASE("In a borehole the plain loop diverges and is reported; Aitken relaxation converges to the same kind of "
+TEST_CASE("In a borehole the plain loop diverges and is reported: Aitken relaxation converges to the same kind of "
           "fixed point as the plain loop on the disk",
           "[lattice2d]") {
   // The borehole node's feedback: the wall traction p_h moves the wall, b dV_h changes p_h by

@@ -71,9 +71,9 @@ TEST_CASE("Dual lengths and conductances are strictly positive and bounded", "[l
           // Bound 1/min_dual_ratio by construction of the floor (+ round-off of L / (ratio L)).
           CHECK(dual.conductance[e] <= (1.0 / ratio) * (1.0 + 1e-12));
           if (lattice.is_boundary_beam(e)) {
-            // d_su = L/2 cot(a) with the opposite angle a <= ~61 deg (boundary spacing <= 1.01 r_min,
-            // third vertex >= r_min away): d_su >= 0.28 L; 0.25 L leaves margin. The floor never acts.
-            CHECK(dual.dual_length[e] >= 0.25 * length);
+            // d_su = L/2 cot(a), the opposite angle a bounded by the boundary spacing (lattice_fixtures.hpp):
+            // 0.070 L at the default spacing factor 1.3; 0.9 of it leaves margin. The floor never acts.
+            CHECK(dual.dual_length[e] >= 0.9 * hm::test::min_boundary_dual_ratio(lattice.spec.boundary_spacing_factor) * length);
             CHECK_FALSE(dual.is_floored[static_cast<std::size_t>(e)]);
           }
         }

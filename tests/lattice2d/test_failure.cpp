@@ -90,7 +90,7 @@ TEST_CASE("Break selection picks the beam most over its threshold, with its mode
   }
 }
 
-TEST_CASE("Exactly at the threshold a beam fails; ties go to the lowest index; none when all are safe",
+TEST_CASE("Exactly at the threshold a beam fails, ties go to the lowest index, none when all are safe",
           "[lattice2d]") {
   const BeamStrengths strengths = constant_strengths(5, T, C);
   // Uniaxial compression at C_u (ratio 1 exactly: sigma_CC = -sigma_3) and two equal tensile ratios 1.2.

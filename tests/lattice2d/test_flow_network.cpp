@@ -394,7 +394,7 @@ TEST_CASE("Borehole storage delays the borehole pressure but not the steady stat
   CHECK(storing.borehole_pressure() == Approx(passing.borehole_pressure()).epsilon(1e-10));
 }
 
-TEST_CASE("A flux-boundary borehole ignores its own area change; Eq. 16 turns it into a pressure drop", "[lattice2d]") {
+TEST_CASE("A flux-boundary borehole ignores its own area change: Eq. 16 turns it into a pressure drop", "[lattice2d]") {
   const Lattice lattice = make_lattice(DomainShape::annulus, 2500);
   const DualGraph dual = build_dual_graph(lattice);
   FlowParameters parameters;

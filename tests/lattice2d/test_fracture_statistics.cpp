@@ -179,11 +179,18 @@ TEST_CASE("No broken beam gives empty statistics", "[lattice2d][fracture_statist
 
 TEST_CASE("Two cracks from one wall point are one fracture with two arms away from the wall",
           "[lattice2d][fracture_statistics]") {
-  // Both rays start at the same point inside the borehole, so they cut the same wall chord and the
-  // same first triangle: one cluster. Away from the wall they are 28 deg apart, two arms.
+  // Both rays start at the same point just inside the midpoint of the wall chord nearest angle 0, so
+  // they cut that chord and its triangle: one cluster. Away from the wall they are 28 deg apart, two arms.
   const Lattice& lattice = annulus();
   std::vector<bool> broken(static_cast<std::size_t>(lattice.n_beams()), false);
-  const Eigen::Vector2d wall = polar(0.9 * R_i, 0.0);
+  Eigen::Vector2d chord_midpoint(0.0, 0.0);
+  for (int e = 0; e < lattice.n_beams(); ++e) {
+    if (lattice.beam_boundary[static_cast<std::size_t>(e)] != BoundaryTag::inner) continue;
+    const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
+    const Eigen::Vector2d m = 0.5 * (lattice.points.col(i) + lattice.points.col(j));
+    if (m.x() > 0 && (chord_midpoint.isZero() || std::abs(m.y()) < std::abs(chord_midpoint.y()))) chord_midpoint = m;
+  }
+  const Eigen::Vector2d wall = 0.995 * chord_midpoint;
   break_segment(lattice, broken, wall, polar(1.1, 14.0));
   break_segment(lattice, broken, wall, polar(1.1, -14.0));
 

@@ -128,8 +128,8 @@ TEST_CASE("Boundary particles lie on the domain boundary, interior ones strictly
         const double gap = std::min(0.5 * spec.width - std::abs(p.x()), 0.5 * spec.height - std::abs(p.y()));
         if (tag == BoundaryTag::outer)
           CHECK(std::abs(gap) < 1e-15);  // round-off of w k / n
-        else
-          CHECK(gap > 0.8 * lattice.min_spacing);  // >= sqrt(1 - 1.2^2/4) r_min given the side spacing
+        else  // >= sqrt(1 - s^2/4) r_min for a side spacing s <= 1.2 factor r_min (0.63 at the default 1.3)
+          CHECK(gap > std::sqrt(1.0 - std::pow(0.6 * spec.boundary_spacing_factor, 2)) * lattice.min_spacing);
         continue;
       }
       if (tag == BoundaryTag::outer) CHECK(r == hm::test::roundoff(1.0));

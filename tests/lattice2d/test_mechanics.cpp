@@ -207,7 +207,7 @@ TEST_CASE("Pressure on the borehole wall moves the wall radially outward", "[lat
   }
 }
 
-TEST_CASE("A broken beam pushed together is a compression-only contact; pulled apart it carries nothing", "[lattice2d]") {
+TEST_CASE("A broken beam pushed together is a compression-only contact: pulled apart it carries nothing", "[lattice2d]") {
   const Lattice l = rectangle();
   BoundaryConditions bc;
   bc.outer_pressure = 1e-3;  // pure traction, compression (pinned automatically)

@@ -30,7 +30,7 @@ TEST_CASE("The mesh-quality report is consistent with the lattice", "[lattice2d]
   CHECK(q.sum_particle_area == hm::test::roundoff(q.sum_triangle_area));
   CHECK(q.conductance.max <= 1.0 / dual.options.min_dual_ratio * (1.0 + 1e-12));
   CHECK(q.dual_ratio.min > -1e-12);   // Delaunay, round-off
-  CHECK(q.surface_ratio.min > 0.25);  // boundary spacing, see test_dual_graph
+  CHECK(q.surface_ratio.min > 0.9 * hm::test::min_boundary_dual_ratio(lattice.spec.boundary_spacing_factor));  // lattice_fixtures.hpp
   std::ostringstream out;
   out << q;
   CHECK_THAT(out.str(), Catch::Contains("conductance A/d"));

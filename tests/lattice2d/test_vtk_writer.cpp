@@ -101,7 +101,7 @@ for k, d in enumerate(sets):
 
 }  // namespace
 
-TEST_CASE("A snapshot written as .vtu reads back with meshio; the .pvd lists the series", "[lattice2d]") {
+TEST_CASE("A snapshot written as .vtu reads back with meshio: the .pvd lists the series", "[lattice2d]") {
   LatticeSpec spec;
   spec.domain = DomainShape::rectangle;
   spec.n_particles = 500;

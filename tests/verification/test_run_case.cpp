@@ -48,6 +48,9 @@ TEST_CASE("Bad 2D cases are rejected with one line naming table, key, value and 
   rejected(physics + "[lattice]\nn_particles = 10\n", "case.toml: [lattice] n_particles = 10, allowed: ");
   rejected(physics + "[lattice]\nseed = -3\n", "case.toml: [lattice] seed = -3, allowed: >= 0");
   rejected(physics + "[lattice]\nN = 1000\n", "case.toml: [lattice] unknown key 'N', allowed: ");
+  rejected(physics + "[lattice]\nstiffness_scaling = \"facet\"\n",
+           "case.toml: [lattice] stiffness_scaling = 'facet', allowed: uniform, voronoi_facet");
+  rejected(physics + "[lattice]\nboundary_spacing_factor = 2\n", "case.toml: [lattice] boundary_spacing_factor = 2, allowed: ");
   rejected(physics + "[mechanics]\nouter = \"clamped\"\n", "case.toml: [mechanics] outer = 'clamped', allowed: free, fixed");
   rejected(physics + "[mechanics]\nsolver = \"lu\"\n", "case.toml: [mechanics] solver = 'lu', allowed: cholmod, pcg");
   rejected(physics + "[flow]\nborehole_storage = \"tank\"\n", "case.toml: [flow] borehole_storage = 'tank', allowed: ");
@@ -100,6 +103,19 @@ TEST_CASE("hmlattice run writes series, radial profiles, VTK and a resolved conf
   const std::string config = hm::test::slurp(dir.path / "run1" / "config.toml");
   CHECK_THAT(config, Catch::Contains("split = \"undrained\""));
   CHECK_THAT(config, Catch::Contains("[provenance]"));
+  // The lattice's defaults are written out (facet-scaled beams, boundary row at 1.3 r_min) ...
+  CHECK_THAT(config, Catch::Contains("stiffness_scaling = \"voronoi_facet\""));
+  CHECK_THAT(config, Catch::Contains("boundary_spacing_factor = 1.3"));
+  // ... and the paper's uniform lattice is a different, repeatable model.
+  const std::string uniform_case = "model = \"lattice2d\"\n[physics]\nQ = 0.1\nR_i = 0\n[lattice]\nn_particles = 600\n"
+                                   "stiffness_scaling = \"uniform\"\nboundary_spacing_factor = 1.0\n"
+                                   "[numerics]\ndt_initial = 5e-6\nt_end = 1e-5\n[output]\ntimes = [5e-6]\nradial_bins = 5\n";
+  dir.write("uniform.toml", uniform_case);
+  REQUIRE(run_hmlattice("run uniform.toml --out run3", dir.path).exit_code == 0);
+  REQUIRE(run_hmlattice("run run3/config.toml --out run4", dir.path).exit_code == 0);
+  CHECK(hm::test::slurp(dir.path / "run3" / "radial.csv") == hm::test::slurp(dir.path / "run4" / "radial.csv"));
+  CHECK(hm::test::slurp(dir.path / "run3" / "radial.csv") != hm::test::slurp(dir.path / "run1" / "radial.csv"));
+  CHECK_THAT(hm::test::slurp(dir.path / "run3" / "config.toml"), Catch::Contains("stiffness_scaling = \"uniform\""));
 }
 
 TEST_CASE("A coupled run that does not converge exits 1 with the reason and writes nothing", "[verification][cli]") {

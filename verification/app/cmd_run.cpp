@@ -70,7 +70,7 @@ void add_run_command(CLI::App& app, int& exit_code, const std::string& command_l
     //    calibrated_continuum().poisson_ratio, docs/lattice.md), whatever [physics] nu says: nu there
     //    enters E/M (Eq. 22) only.
     const auto setup_start = std::chrono::steady_clock::now();
-    lattice2d::CoupledModel model(lattice2d::generate_lattice(c.lattice), lattice2d::calibrated_beam_parameters(),
+    lattice2d::CoupledModel model(lattice2d::generate_lattice(c.lattice), c.beams(),
                                   c.boundary, c.mechanics, c.flow_parameters(), c.coupling);
     if (c.fracture_enabled)
       model.enable_fracture(lattice2d::draw_beam_strengths(c.strength, model.lattice().n_beams()), c.break_loop);

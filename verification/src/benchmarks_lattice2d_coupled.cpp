@@ -5,7 +5,7 @@
 //
 // Which continuum: the lattice's triangle areas are plane-strain volumetric strains (eps_xx + eps_yy),
 // so the analytic solution is taken with vol_strain = plane-strain; its nu is the calibrated lattice's
-// (calibrated_continuum(), 0.2236, not Table 1's 0.25), its E/M the model's own (Eq. 22 at nu = 0.25, as
+// (calibrated_continuum(): 0.25 as Table 1, 0.2236 with uniform beams), its E/M the model's own (Eq. 22 at nu = 0.25, as
 // in the case file). Rudnicki is for an unbounded plane: the disk's outer boundary (free or fixed)
 // shifts u_r by an amount that grows with r (the paper's Fig. 7 shows it), so the comparison is
 // restricted to r* in [0.01, 0.05], where the pressure plume has not reached r = 1.
@@ -87,7 +87,7 @@ struct RudnickiOutcome {
 
 RudnickiOutcome run_variant(const RudnickiVariant& v, const BenchmarkContext& ctx, Table& table) {
   const RunCase c = rudnicki_case(v);
-  lt::CoupledModel model(lt::generate_lattice(c.lattice), lt::calibrated_beam_parameters(), c.boundary, c.mechanics,
+  lt::CoupledModel model(lt::generate_lattice(c.lattice), c.beams(), c.boundary, c.mechanics,
                          c.flow_parameters(), c.coupling);
   const std::filesystem::path dir = ctx.data_dir / ("rudnicki_" + v.label);
   std::filesystem::create_directories(dir);
@@ -292,7 +292,7 @@ BenchmarkResult psi_study(const BenchmarkContext& ctx) {
                             .split = psi == 0.0 ? lt::CouplingSplit::drained : lt::CouplingSplit::undrained, .psi = psi};
     const RunCase c = rudnicki_case(v);
     {  // the whole run
-      lt::CoupledModel model(lattice, lt::calibrated_beam_parameters(), c.boundary, c.mechanics, c.flow_parameters(),
+      lt::CoupledModel model(lattice, c.beams(), c.boundary, c.mechanics, c.flow_parameters(),
                              c.coupling);
       const auto run = model.run(c.stepping);
       run_passes.push_back(run.is_ok() ? run.total_iterations : -1);
@@ -301,7 +301,7 @@ BenchmarkResult psi_study(const BenchmarkContext& ctx) {
     {  // one step from rest: the shell pressure against the pass number (Fig. 8)
       lt::CouplingOptions options = c.coupling;
       options.max_iterations = 500;
-      lt::CoupledModel model(lattice, lt::calibrated_beam_parameters(), c.boundary, c.mechanics, c.flow_parameters(),
+      lt::CoupledModel model(lattice, c.beams(), c.boundary, c.mechanics, c.flow_parameters(),
                              options);
       std::vector<double> history;
       model.set_pass_observer([&](int pass, const Eigen::VectorXd& p, const Eigen::VectorXd&) {

@@ -34,6 +34,8 @@ void located(CaseTable& table, const std::string& prefix, F&& read) {
 
 }  // namespace
 
+lt::BeamParameters RunCase::beams() const { return lt::calibrated_beam_parameters(stiffness_scaling); }
+
 lt::FlowParameters RunCase::flow_parameters() const {
   lt::FlowParameters flow = lt::flow_parameters_of(physics.parameters, stepping.dt_initial);
   flow.borehole_storage = borehole_storage;
@@ -62,6 +64,8 @@ RunCase read_run_case(const std::filesystem::path& file) {
     const long long seed = lat.get_int("seed", static_cast<long long>(c.lattice.seed));
     if (seed < 0) throw InputError("seed = " + std::to_string(seed) + ", allowed: >= 0");
     c.lattice.seed = static_cast<std::uint64_t>(seed);
+    c.lattice.boundary_spacing_factor = lat.get_double("boundary_spacing_factor", c.lattice.boundary_spacing_factor);
+    c.stiffness_scaling = lt::stiffness_scaling_from_string(lat.get_string("stiffness_scaling", lt::to_string(c.stiffness_scaling)));
     lat.reject_unknown();
     if (c.lattice.domain == lt::DomainShape::rectangle)
       throw InputError("domain = \"rectangle\", allowed: \"disk\" or \"annulus\" (the flow needs a circular outer boundary)");
@@ -184,12 +188,12 @@ RunCase read_run_case(const std::filesystem::path& file) {
 namespace {
 
 // The beams every run uses and the continuum they were measured to represent (not inputs: comments).
-std::string calibration_comment() {
-  const lt::BeamParameters beams = lt::calibrated_beam_parameters();
-  const lt::ElasticConstants continuum = lt::calibrated_continuum();
-  return "# beams: calibrated_beam_parameters() k_n = " + analytic::format_value(beams.normal_stiffness) +
-         ", a = " + analytic::format_value(beams.aspect) + ", nu0 = " + analytic::format_value(beams.beam_poisson) +
-         ", stiffness scaling " + (beams.stiffness_scaling == lt::StiffnessScaling::uniform ? "uniform" : "voronoi-facet") + ";\n# measured continuum (calibration, " +
+std::string calibration_comment(const RunCase& c) {
+  const lt::BeamParameters beams = c.beams();
+  const lt::ElasticConstants continuum = lt::calibrated_continuum(c.stiffness_scaling);
+  return "# beams: calibrated_beam_parameters(" + lt::to_string(c.stiffness_scaling) +
+         ") k_n = " + analytic::format_value(beams.normal_stiffness) + ", a = " + analytic::format_value(beams.aspect) +
+         ", nu0 = " + analytic::format_value(beams.beam_poisson) + ";\n# measured continuum (calibration, " +
          "docs/lattice.md): E = " + analytic::format_value(continuum.youngs_modulus) +
          ", nu = " + analytic::format_value(continuum.poisson_ratio) + " (plane strain)\n";
 }
@@ -207,7 +211,8 @@ std::string run_case_to_toml(const RunCase& c, const std::string& provenance_tom
      << "model = \"lattice2d\"\n\n"
      << physics_to_toml(c.physics) << "\n"
      << "[lattice]\ndomain = \"" << lt::to_string(c.lattice.domain) << "\"\nn_particles = " << c.lattice.n_particles
-     << "\nseed = " << c.lattice.seed << "\n" << calibration_comment() << "\n"
+     << "\nseed = " << c.lattice.seed << "\nboundary_spacing_factor = " << v(c.lattice.boundary_spacing_factor)
+     << "\nstiffness_scaling = \"" << lt::to_string(c.stiffness_scaling) << "\"\n" << calibration_comment(c) << "\n"
      << "[mechanics]\nouter = \"" << lt::to_string(c.boundary.outer) << "\"\nsolver = \""
      << lt::to_string(c.mechanics.solver) << "\"\n\n"
      << "[flow]\nborehole_storage = \"" << lt::to_string(c.borehole_storage) << "\"\nborehole_deformation = \""

@@ -14,6 +14,8 @@
 /// L^2) on the rotation terms; the L^2 of Eq. 4 is the consistent one (docs/lattice.md).
 /// Limits: small displacements and rotations (geometrically linear); no pressure terms (Eq. 17-20).
 #include <cstdint>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include <Eigen/Core>
@@ -24,6 +26,7 @@
 namespace hm::lattice2d {
 
 /// How k_n (and with it k_omega, which Eq. 4 makes proportional to k_n) varies from beam to beam.
+/// The toolkit's calibrated default is voronoi_facet (calibrated_beam_parameters(), docs/lattice.md).
 enum class StiffnessScaling : std::uint8_t {
   /// The paper's: every beam has the same k_n.
   uniform,
@@ -34,6 +37,11 @@ enum class StiffnessScaling : std::uint8_t {
   /// normalises to the regular triangular lattice (d/L = 1/sqrt(3) -> factor 1).
   voronoi_facet,
 };
+
+/// "uniform" or "voronoi_facet".
+std::string to_string(StiffnessScaling scaling);
+/// Inverse of to_string; throws hm::InputError "stiffness_scaling = 'x', allowed: uniform, voronoi_facet".
+StiffnessScaling stiffness_scaling_from_string(std::string_view name);
 
 /// Beam constants of Eqs. 3-4. The defaults are generic unit values; the calibrated constants
 /// (E = 1, nu = 0.2236 measured on the lattice, docs/lattice.md "Calibration") come from

@@ -102,10 +102,10 @@ struct CalibrationSpec {
   double aspect_min = 0.05;
   double aspect_max = 2.0;
   /// Per-beam stiffness variation of the calibrated beams (BeamParameters::stiffness_scaling and
-  /// facet_floor). Default uniform (the paper's, and the stored constants'); with voronoi_facet the
-  /// central-force limit of nu is ~0.32, so nu = 0.25 lies inside the bracket (docs/lattice.md,
-  /// "Stiffness scaling and boundary spacing: measurements").
-  StiffnessScaling stiffness_scaling = StiffnessScaling::uniform;
+  /// facet_floor). Default voronoi_facet (the toolkit's default lattice): its central-force limit of nu
+  /// is ~0.32, so nu = 0.25 lies inside the bracket; with the paper's uniform beams nu tops out at
+  /// ~0.224 (docs/lattice.md, "Calibration" and "Stiffness scaling and boundary spacing").
+  StiffnessScaling stiffness_scaling = StiffnessScaling::voronoi_facet;
   double facet_floor = 0.0;
   /// Stop when the seed-mean nu is within this of the target. Allowed: > 0.
   double poisson_tolerance = 2e-4;
@@ -143,11 +143,13 @@ struct Calibration {
 /// measurements, ~15 s (nu = 0.25 lies outside the bracket, so no iterations run).
 Calibration calibrate_beams(const CalibrationSpec& spec);
 
-/// The toolkit's default beam constants: the result of calibrate_beams(CalibrationSpec{}) stored as
-/// constants (the measurement, date and commit are in the comment at the definition and in
-/// docs/lattice.md; `test_lattice2d "[slow]"` re-measures them). Use these for any lattice of about the
-/// calibrated density; E does not depend on the density, nu only weakly (docs/lattice.md).
-BeamParameters calibrated_beam_parameters();
+/// The toolkit's beam constants for a stiffness scaling: the result of calibrate_beams with that
+/// scaling (otherwise CalibrationSpec{}) stored as constants (the measurement, date and commit are in
+/// the comment at the definition and in docs/lattice.md; `test_lattice2d "[slow]"` re-measures them).
+/// Default voronoi_facet (E = 1, nu = 0.25, the paper's Table 1); uniform is the paper's lattice, whose
+/// nu cannot exceed ~0.224. Use these for any lattice of about the calibrated density (and
+/// LatticeSpec's default boundary spacing); E does not depend on the density, nu only weakly.
+BeamParameters calibrated_beam_parameters(StiffnessScaling scaling = StiffnessScaling::voronoi_facet);
 
 /// Plane-strain isotropic constants of a continuum.
 struct ElasticConstants {
@@ -155,10 +157,11 @@ struct ElasticConstants {
   double poisson_ratio = 0.25;  ///< nu, plane strain
 };
 
-/// The continuum the lattice with calibrated_beam_parameters() represents, as measured by the
-/// calibration (mean over seeds 1-3 at N = 1e4): E = 1.0000, nu = 0.2236 (not the target 0.25, which
-/// is not reachable; docs/lattice.md, "Calibration"). Use these, not (1, 0.25), when comparing the
-/// lattice with a continuum solution (Lame, Sneddon, first-break predictions).
-ElasticConstants calibrated_continuum();
+/// The continuum the lattice with calibrated_beam_parameters(scaling) represents, as measured by the
+/// calibration (mean over seeds 1-3 at N = 1e4): voronoi_facet E = 1.000, nu = 0.250; uniform
+/// E = 1.000, nu = 0.2236 (the target 0.25 is not reachable with uniform beams; docs/lattice.md,
+/// "Calibration"). Compare the lattice with a continuum solution (Lame, Sneddon, first-break
+/// predictions) at these constants.
+ElasticConstants calibrated_continuum(StiffnessScaling scaling = StiffnessScaling::voronoi_facet);
 
 }  // namespace hm::lattice2d

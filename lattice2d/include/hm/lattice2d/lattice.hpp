@@ -54,12 +54,12 @@ struct LatticeSpec {
   /// Allowed: 5 <= bridson_attempts <= 1000.
   int bridson_attempts = 30;
   /// Spacing of the evenly spaced boundary particles over r_min: h = factor * r_min (chord spacing in
-  /// [h, ~1.01 h]). 1 (default, the measured tables) makes the boundary row denser than the
-  /// Poisson-disk interior (mean beam ~1.3 r_min), a stiff skin (docs/lattice.md "Stiffness scaling and
-  /// boundary spacing"); larger values space it like the interior. Allowed: 1 <= factor <= 1.35 (the
-  /// angle opposite a boundary beam stays <= 2 asin(1.35 * 1.01 / 2) = 86 deg, so d_su > 0: every
-  /// boundary circumcentre stays inside the domain).
-  double boundary_spacing_factor = 1.0;
+  /// [h, ~1.01 h]). Our default 1.3 spaces the boundary row like the Poisson-disk interior (mean beam
+  /// ~1.3 r_min); 1 makes it denser, a stiff skin along every boundary (worse wall stresses and Lame
+  /// error with facet-scaled beams; docs/lattice.md "Stiffness scaling and boundary spacing").
+  /// Allowed: 1 <= factor <= 1.35 (the angle opposite a boundary beam stays <= 2 asin(1.35 * 1.01 / 2)
+  /// = 86 deg, so d_su > 0: every boundary circumcentre stays inside the domain).
+  double boundary_spacing_factor = 1.3;
 
   /// Throws hm::InputError "field = value, allowed: rule" on the first violated rule.
   void validate() const;

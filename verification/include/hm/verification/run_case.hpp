@@ -2,7 +2,8 @@
 /// \file
 /// A 2D lattice case file (model = "lattice2d"), the one format of every `hmlattice run`:
 ///   [physics] or [physics_si]  material, Q, b, iota, R_i (read_physics; R_i = 0 for domain = "disk")
-///   [lattice]    domain ("disk" | "annulus"), n_particles, seed
+///   [lattice]    domain ("disk" | "annulus"), n_particles, seed, boundary_spacing_factor,
+///                stiffness_scaling ("voronoi_facet" | "uniform": the calibrated beams of that scaling)
 ///   [mechanics]  outer ("free" | "fixed"), solver ("cholmod" | "pcg")
 ///   [flow]       borehole_storage ("biot-modulus" | "none"), borehole_deformation ("biot" | "none"),
 ///                reuse_factorisation
@@ -19,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "hm/lattice2d/beam_stiffness.hpp"
 #include "hm/lattice2d/coupled_model.hpp"
 #include "hm/lattice2d/flow_network.hpp"
 #include "hm/lattice2d/lattice.hpp"
@@ -43,6 +45,8 @@ struct RunOutput {
 struct RunCase {
   CasePhysics physics;
   hm::lattice2d::LatticeSpec lattice;
+  /// Which calibrated beams (calibrated_beam_parameters(stiffness_scaling)); default the toolkit's.
+  hm::lattice2d::StiffnessScaling stiffness_scaling = hm::lattice2d::StiffnessScaling::voronoi_facet;
   hm::lattice2d::BoundaryConditions boundary;   ///< only `outer` is read from the case
   hm::lattice2d::MechanicsOptions mechanics;    ///< only `solver` is read from the case
   hm::lattice2d::BoreholeStorage borehole_storage = hm::lattice2d::BoreholeStorage::biot_modulus;
@@ -56,6 +60,8 @@ struct RunCase {
   hm::lattice2d::BreakLoopOptions break_loop;
   RunOutput output;
 
+  /// The calibrated beam constants of this case's stiffness scaling.
+  hm::lattice2d::BeamParameters beams() const;
   /// The flow parameters of the physics (Q, b, iota, E/M) with this case's borehole node.
   hm::lattice2d::FlowParameters flow_parameters() const;
 };
