@@ -31,10 +31,10 @@ FailureField evaluate_failure(const BeamStress& stress, const BeamStrengths& str
   assert(strengths.n_beams() == n_beams && "one strength per beam");
   assert((states.empty() || static_cast<int>(states.size()) == n_beams) && "one state per beam");
   FailureField out{Eigen::VectorXd::Zero(n_beams), std::vector<FailureMode>(static_cast<std::size_t>(n_beams))};
+  const FailureCriterion criterion(strengths.friction);
   for (int e = 0; e < n_beams; ++e) {
     if (!is_intact(states, e)) continue;
-    const auto check = hm::analytic::check_failure(stress.sigma_1[e], stress.sigma_3[e], strengths.tensile[e],
-                                                   strengths.compressive[e], strengths.friction);
+    const auto check = criterion.check(stress.sigma_1[e], stress.sigma_3[e], strengths.tensile[e], strengths.compressive[e]);
     assert(!std::isnan(check.ratio) && "failure ratio is NaN: non-finite stress");
     out.ratio[e] = check.ratio;
     out.mode[static_cast<std::size_t>(e)] = check.mode;
@@ -44,19 +44,25 @@ FailureField evaluate_failure(const BeamStress& stress, const BeamStrengths& str
 
 BreakCandidate select_beam_to_break(const BeamStress& stress, const BeamStrengths& strengths,
                                     const std::vector<BeamState>& states) {
-  const FailureField field = evaluate_failure(stress, strengths, states);
+  // evaluate_failure's check, beam by beam, without its two per-beam arrays.
+  const int n_beams = static_cast<int>(stress.sigma_1.size());
+  assert(strengths.n_beams() == n_beams && "one strength per beam");
+  assert((states.empty() || static_cast<int>(states.size()) == n_beams) && "one state per beam");
+  const FailureCriterion criterion(strengths.friction);
   BreakCandidate best;
   bool any_intact = false;
-  for (int e = 0; e < static_cast<int>(field.ratio.size()); ++e) {
+  for (int e = 0; e < n_beams; ++e) {
     if (!is_intact(states, e)) continue;
-    const double r = field.ratio[e];
+    const auto check = criterion.check(stress.sigma_1[e], stress.sigma_3[e], strengths.tensile[e], strengths.compressive[e]);
+    assert(!std::isnan(check.ratio) && "failure ratio is NaN: non-finite stress");
+    const double r = check.ratio;
     if (!any_intact || r > best.max_ratio) best.max_ratio = r;
     any_intact = true;
     // Strictly greater: on equal ratios the lowest index, visited first, stays.
     if (r >= 1.0 && (!best.found() || r > best.ratio)) {
       best.beam = e;
       best.ratio = r;
-      best.mode = field.mode[static_cast<std::size_t>(e)];
+      best.mode = check.mode;
     }
   }
   return best;
@@ -64,6 +70,14 @@ BreakCandidate select_beam_to_break(const BeamStress& stress, const BeamStrength
 
 BreakEvent make_break_event(const Lattice& lattice, const BeamStress& stress, const BreakCandidate& candidate,
                             double load, int sequence) {
+  assert(candidate.found() && "make_break_event: no beam selected");
+  const int e = candidate.beam;
+  return make_break_event(lattice, candidate, stress.sigma_1[e], stress.sigma_3[e], stress.crack_tip_factor[e], load,
+                          sequence);
+}
+
+BreakEvent make_break_event(const Lattice& lattice, const BreakCandidate& candidate, double sigma_1, double sigma_3,
+                            double crack_tip_factor, double load, int sequence) {
   assert(candidate.found() && "make_break_event: no beam selected");
   const int e = candidate.beam;
   const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
@@ -74,10 +88,10 @@ BreakEvent make_break_event(const Lattice& lattice, const BeamStress& stress, co
   event.particle_j = j;
   event.position = 0.5 * (lattice.points.col(i) + lattice.points.col(j));
   event.load = load;
-  event.sigma_1 = stress.sigma_1[e];
-  event.sigma_3 = stress.sigma_3[e];
+  event.sigma_1 = sigma_1;
+  event.sigma_3 = sigma_3;
   event.ratio = candidate.ratio;
-  event.crack_tip_factor = stress.crack_tip_factor[e];
+  event.crack_tip_factor = crack_tip_factor;
   event.mode = candidate.mode;
   return event;
 }

@@ -5,6 +5,7 @@
 #include <cassert>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include <Eigen/Eigenvalues>
@@ -107,11 +108,11 @@ namespace {
 // Internal force K_e u_e of one beam in global components (x_i, y_i, w_i, x_j, y_j, w_j), evaluated in
 // the beam's local frame from n_ij (no 6 x 6 products, no trigonometry): the same numbers as
 // beam_element_stiffness(...) * u_e up to round-off, about ten times cheaper.
-Eigen::Matrix<double, 6, 1> internal_force(const Lattice& l, const BeamParameters& uniform_p, BeamState state, int e,
+// `p` is this beam's own parameters (beam_parameters_for: its k_n under stiffness_scaling).
+Eigen::Matrix<double, 6, 1> internal_force(const Lattice& l, const BeamParameters& p, BeamState state, int e,
                                            const Eigen::VectorXd& u) {
   Eigen::Matrix<double, 6, 1> f = Eigen::Matrix<double, 6, 1>::Zero();
   if (state == BeamState::open) return f;
-  const BeamParameters p = beam_parameters_for(l, uniform_p, e);  // this beam's k_n (stiffness_scaling)
   const auto [i, j] = l.beams[static_cast<std::size_t>(e)];
   const double c = l.direction(0, e), s = l.direction(1, e), L = l.length[e];
   const double uxi = u[dof_index(i, 0)], uyi = u[dof_index(i, 1)], uxj = u[dof_index(j, 0)], uyj = u[dof_index(j, 1)];
@@ -130,19 +131,23 @@ Eigen::Matrix<double, 6, 1> internal_force(const Lattice& l, const BeamParameter
   return f;
 }
 
-}  // namespace
-
-std::vector<BeamForce> connection_forces(const Lattice& lattice, const BeamParameters& parameters,
-                                           const std::vector<BeamState>& states, const Eigen::VectorXd& u) {
+// connection_forces into `forces` (resized; every entry overwritten), with beam e's parameters from
+// parameters_of(e).
+template <class ParametersOf>
+void fill_connection_forces(const Lattice& lattice, const ParametersOf& parameters_of, const std::vector<BeamState>& states,
+                            const Eigen::VectorXd& u, std::vector<BeamForce>& forces) {
   assert(u.size() == 3 * lattice.n_particles() && "connection_forces: u has 3 entries per particle");
   assert(static_cast<int>(states.size()) == lattice.n_beams() && "connection_forces: one state per beam");
-  std::vector<BeamForce> forces(static_cast<std::size_t>(lattice.n_beams()));
+  forces.resize(static_cast<std::size_t>(lattice.n_beams()));
   for (int e = 0; e < lattice.n_beams(); ++e) {
     const BeamState state = states[static_cast<std::size_t>(e)];
-    if (state == BeamState::open) continue;
-    // The force the beam exerts on its particles is minus its internal force K_e u_e.
-    const Eigen::Matrix<double, 6, 1> f = -internal_force(lattice, parameters, state, e, u);
     BeamForce& F = forces[static_cast<std::size_t>(e)];
+    if (state == BeamState::open) {
+      F = BeamForce{};
+      continue;
+    }
+    // The force the beam exerts on its particles is minus its internal force K_e u_e.
+    const Eigen::Matrix<double, 6, 1> f = -internal_force(lattice, parameters_of(e), state, e, u);
     F.force_on_i = f.head<2>();
     const Eigen::Vector2d n = lattice.direction.col(e), s(-n.y(), n.x());
     F.normal = F.force_on_i.dot(n);
@@ -150,6 +155,15 @@ std::vector<BeamForce> connection_forces(const Lattice& lattice, const BeamParam
     F.moment_i = f[2];
     F.moment_j = f[5];
   }
+}
+
+}  // namespace
+
+std::vector<BeamForce> connection_forces(const Lattice& lattice, const BeamParameters& parameters,
+                                           const std::vector<BeamState>& states, const Eigen::VectorXd& u) {
+  std::vector<BeamForce> forces;
+  fill_connection_forces(
+      lattice, [&](int e) { return beam_parameters_for(lattice, parameters, e); }, states, u, forces);
   return forces;
 }
 
@@ -163,6 +177,9 @@ BeamMechanics::BeamMechanics(Lattice lattice, const BeamParameters& parameters, 
   options_.validate();
   const int n_p = lattice_.n_particles(), n_dof = 3 * n_p;
   states_.assign(static_cast<std::size_t>(lattice_.n_beams()), BeamState::intact);
+  normal_stiffness_.resize(static_cast<std::size_t>(lattice_.n_beams()));
+  for (int e = 0; e < lattice_.n_beams(); ++e)
+    normal_stiffness_[static_cast<std::size_t>(e)] = beam_parameters_for(lattice_, parameters_, e).normal_stiffness;
   detached_.assign(static_cast<std::size_t>(n_p), false);
 
   // 1. Held degrees of freedom: supports, boundary strain, explicit list (later overrides earlier).
@@ -268,8 +285,7 @@ void BeamMechanics::setup_system() {
   triplets.reserve(36 * static_cast<std::size_t>(lattice_.n_beams()));
   for (int e = 0; e < lattice_.n_beams(); ++e) {
     const auto d = beam_dofs(lattice_, e);
-    const Matrix6d k = beam_element_stiffness(lattice_.length[e], lattice_.angle[e],
-                                              beam_parameters_for(lattice_, parameters_, e),
+    const Matrix6d k = beam_element_stiffness(lattice_.length[e], lattice_.angle[e], beam_parameters(e),
                                               states_[static_cast<std::size_t>(e)]);
     Eigen::Matrix<double, 6, 1> uh;
     for (int a = 0; a < 6; ++a) uh[a] = held_value_[d[static_cast<std::size_t>(a)]];
@@ -323,8 +339,8 @@ void BeamMechanics::change_state(int beam, BeamState to) {
   const BeamState from = states_[static_cast<std::size_t>(beam)];
   if (from == to) return;
   // K_e(from) - K_e(to) (or the reverse) is a subset of the columns of beam_element_factor.
-  const Matrix63d V = beam_element_factor(lattice_.length[beam], lattice_.angle[beam],
-                                            beam_parameters_for(lattice_, parameters_, beam), BeamState::intact);
+  const Matrix63d V = beam_element_factor(lattice_.length[beam], lattice_.angle[beam], beam_parameters(beam),
+                                          BeamState::intact);
   std::vector<int> columns;
   int sigma = -1;
   if (from == BeamState::intact) columns = to == BeamState::contact ? std::vector<int>{1, 2} : std::vector<int>{0, 1, 2};
@@ -471,7 +487,15 @@ void BeamMechanics::set_external_forces(const Eigen::VectorXd& forces) {
   extra_loads_ = forces;
 }
 
-MechanicsSummary BeamMechanics::solve() {
+BeamParameters BeamMechanics::beam_parameters(int beam) const {
+  BeamParameters p = parameters_;
+  p.normal_stiffness = normal_stiffness_[static_cast<std::size_t>(beam)];
+  return p;
+}
+
+MechanicsSummary BeamMechanics::solve() { return solve(true); }
+
+MechanicsSummary BeamMechanics::solve(bool equilibrium_check) {
   const auto start = std::chrono::steady_clock::now();
   MechanicsSummary summary;
   summary.n_detached_particles = n_detached_;
@@ -525,7 +549,8 @@ MechanicsSummary BeamMechanics::solve() {
     const auto fit = rigid_fit(lattice_, raw_, attached);
     for (int p = 0; p < lattice_.n_particles(); ++p) displacement_.segment<3>(dof_index(p, 0)) -= rigid_motion(lattice_, fit, p);
   }
-  if (summary.info == Eigen::Success) {
+  if (summary.info == Eigen::Success && !equilibrium_check) summary.equilibrium_residual = std::numeric_limits<double>::quiet_NaN();
+  if (summary.info == Eigen::Success && equilibrium_check) {
     // Independent of the solver's stored matrix: re-evaluates every beam from the states.
     const Eigen::VectorXd f = loads(), r = reactions();
     double r_max = 0.0;
@@ -538,7 +563,13 @@ MechanicsSummary BeamMechanics::solve() {
 }
 
 std::vector<BeamForce> BeamMechanics::beam_forces() const {
-  return connection_forces(lattice_, parameters_, states_, raw_);
+  std::vector<BeamForce> forces;
+  beam_forces(forces);
+  return forces;
+}
+
+void BeamMechanics::beam_forces(std::vector<BeamForce>& forces) const {
+  fill_connection_forces(lattice_, [this](int e) { return beam_parameters(e); }, states_, raw_, forces);
 }
 
 Eigen::VectorXd BeamMechanics::reactions() const {
@@ -547,7 +578,7 @@ Eigen::VectorXd BeamMechanics::reactions() const {
     const BeamState s = states_[static_cast<std::size_t>(e)];
     if (s == BeamState::open) continue;
     const auto d = beam_dofs(lattice_, e);
-    const Eigen::Matrix<double, 6, 1> f = internal_force(lattice_, parameters_, s, e, raw_);
+    const Eigen::Matrix<double, 6, 1> f = internal_force(lattice_, beam_parameters(e), s, e, raw_);
     for (int a = 0; a < 6; ++a) r[d[static_cast<std::size_t>(a)]] += f[a];
   }
   for (int e = 0; e < springs_.size(); ++e) {

@@ -3,7 +3,6 @@
 #include <cassert>
 #include <cmath>
 
-#include "hm/analytic/failure_criteria.hpp"
 #include "hm/analytic/input_error.hpp"
 #include "hm/analytic/validation.hpp"
 
@@ -101,15 +100,15 @@ BeamStress compute_beam_stress(const Lattice& lattice, const ParticleStress& par
     const std::vector<bool> tip = find_crack_tip_beams(lattice, states);
     for (int e = 0; e < n_beams; ++e)
       if (tip[static_cast<std::size_t>(e)])
-        out.crack_tip_factor[e] = std::sqrt(lattice.length[e] / (2.0 * options.material_length));
+        out.crack_tip_factor[e] = options.factor(lattice.length[e]);
   }
   for (int e = 0; e < n_beams; ++e) {
     const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
     out.stress.col(e) =
         out.crack_tip_factor[e] * 0.5 * (particle_stress.stress.col(i) + particle_stress.stress.col(j));
-    const auto p = hm::analytic::principal_stresses(out.stress(0, e), out.stress(1, e), out.stress(2, e));
+    const PrincipalPair p = principal_pair(out.stress(0, e), out.stress(1, e), out.stress(2, e));
     out.sigma_1[e] = p.sigma_1;
-    out.sigma_3[e] = p.sigma_2;
+    out.sigma_3[e] = p.sigma_3;
   }
   return out;
 }

@@ -12,6 +12,8 @@
 ///   if (!candidate.found()) break;
 ///   log.push_back(make_break_event(lattice, stress, candidate, load, log.size()));
 ///   states[candidate.beam] = BeamState::open;  // or contact, per the active-set rule; then re-solve
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -30,6 +32,29 @@ using hm::analytic::FailureMode;
 
 /// "none", "tensile" or "shear".
 std::string to_string(FailureMode mode);
+
+/// hm::analytic::check_failure with Eq. 11's friction factor [(1 + mu_i^2)^(1/2) + mu_i]^2 formed once
+/// instead of per call: bitwise the same ratio and mode (the same operations in the same order), for
+/// loops over every beam (evaluate_failure, the break loop of fracture.hpp).
+class FailureCriterion {
+ public:
+  explicit FailureCriterion(double friction) {
+    const double k = std::sqrt(1.0 + friction * friction) + friction;  // as hm::analytic::coulomb_stress
+    k_squared_ = k * k;
+  }
+  /// max(sigma_1 / T_u, sigma_CC / C_u); mode none below 1, else the larger criterion (tensile on a tie).
+  hm::analytic::FailureCheck check(double sigma_1, double sigma_3, double tensile_strength,
+                                   double compressive_strength) const {
+    const double tensile = sigma_1 / tensile_strength;
+    const double shear = (k_squared_ * sigma_1 - sigma_3) / compressive_strength;
+    const double ratio = std::max(tensile, shear);
+    if (ratio < 1.0) return {FailureMode::none, ratio};
+    return {tensile >= shear ? FailureMode::tensile : FailureMode::shear, ratio};
+  }
+
+ private:
+  double k_squared_ = 0.0;
+};
 
 /// Failure check of every beam: ratio = max(sigma_1 / T_u, sigma_CC / C_u) with sigma_CC of Eq. 11
 /// (hm::analytic::check_failure), mode tensile or shear where ratio >= 1 (the larger of the two
@@ -74,6 +99,10 @@ struct BreakEvent {
 /// The log record for a found candidate (precondition: candidate.found()).
 BreakEvent make_break_event(const Lattice& lattice, const BeamStress& stress, const BreakCandidate& candidate,
                             double load, int sequence);
+/// The same record from the candidate beam's own stresses and crack-tip factor (for callers that do
+/// not keep a BeamStress of every beam, e.g. the break loop).
+BreakEvent make_break_event(const Lattice& lattice, const BreakCandidate& candidate, double sigma_1, double sigma_3,
+                            double crack_tip_factor, double load, int sequence);
 
 /// Writes the break log as CSV, one header row and one row per event, via a temporary file renamed
 /// into place (a crash leaves the previous file or none, never half of one). Columns:

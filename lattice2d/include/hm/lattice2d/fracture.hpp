@@ -87,6 +87,10 @@ BeamStress current_beam_stress(const BeamMechanics& mechanics, const DualGraph& 
 /// BeamMechanics::break_beam (a downdate of the kept factor), append a BreakEvent (stresses at the
 /// judged scale, `load` as its load/time) to `log`, re-solve, and repeat until none fails, the cap
 /// is reached or a solve fails. Deterministic: equal inputs give an identical sequence.
+/// Cost per iteration (re-solve + check): the re-solves use BeamMechanics::solve(false) (no
+/// equilibrium residual; nothing here reads it), and the check is select_beam_to_break(
+/// current_beam_stress(...)) computed bit for bit the same in one pass over buffers kept for the loop,
+/// with the crack-tip set updated around each broken beam (asserted against the public path in debug).
 /// Use stress_scale = 1 when the mechanics holds the actual load (time-driven runs), = lambda under
 /// the load-factor convention of run_load_stepping. Throws hm::InputError for invalid options, a
 /// negative or non-finite stress_scale, or strengths not sized one per beam.

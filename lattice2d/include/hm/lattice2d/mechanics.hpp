@@ -146,6 +146,11 @@ class BeamMechanics {
 
   /// Solve for the current loads and beam states, with the contact active-set loop.
   MechanicsSummary solve();
+  /// The same; equilibrium_check = false skips the O(n_beams) re-evaluation of every beam behind
+  /// summary.equilibrium_residual (then NaN), for callers that do not read it (the break loop, which
+  /// re-solves after every broken beam; the linear solver still checks its own residual). The
+  /// displacement and everything else are the same as solve()'s.
+  MechanicsSummary solve(bool equilibrium_check);
   /// Break an intact beam (no-op for a broken one); returns its new state. Throws hm::InputError
   /// "beam = b, allowed: 0 <= beam < n_beams" for a bad index.
   BeamState break_beam(int beam);
@@ -166,6 +171,8 @@ class BeamMechanics {
   /// Forces of every beam at the current displacement (connection_forces). For particle stresses use
   /// compute_beam_forces(lattice(), parameters(), displacement(), states()) of particle_stress.hpp.
   std::vector<BeamForce> beam_forces() const;
+  /// The same into `forces` (resized to n_beams), reusing its storage across calls.
+  void beam_forces(std::vector<BeamForce>& forces) const;
   /// Nodal loads: boundary pressures plus set_external_forces (3 n_particles).
   Eigen::VectorXd loads() const { return pressure_loads_ + extra_loads_; }
   /// K u - loads (3 n_particles): ~0 at free degrees of freedom, the reactions at held ones.
@@ -185,6 +192,7 @@ class BeamMechanics {
 
  private:
   void setup_system();  // free-DOF map, reduced matrix, held-term vector, factorisation
+  BeamParameters beam_parameters(int beam) const;  // = beam_parameters_for(lattice_, parameters_, beam), cached k_n
   void change_state(int beam, BeamState to);
   void check_detachment(int i, int j);
   Eigen::VectorXd full_vector(const Eigen::VectorXd& x_free) const;
@@ -194,6 +202,7 @@ class BeamMechanics {
   BoundaryConditions conditions_;
   MechanicsOptions options_;
   std::vector<BeamState> states_;
+  std::vector<double> normal_stiffness_;  // per beam: beam_parameters_for(...).normal_stiffness (facet scaling)
   std::vector<bool> held_;       // per dof
   Eigen::VectorXd held_value_;   // per dof (0 where free)
   std::vector<bool> detached_;   // per particle

@@ -11,6 +11,7 @@
 /// Limits: geometrically linear (forces from the linearised Eqs. 5-7 and 9-10, L_ij of the undeformed
 /// lattice); in-plane stresses only (the plane-strain sigma_zz is not formed; principal stresses are the
 /// in-plane ones, as in Fig. 3); no fluid-pressure forces (Eqs. 17-20): pass the mechanical beam forces.
+#include <cmath>
 #include <vector>
 
 #include <Eigen/Core>
@@ -73,6 +74,8 @@ struct CrackTipOptions {
   double material_length = 3.13e-3;
 
   void validate() const;
+  /// (L / (2 L_m))^(1/2) for a crack-tip beam of length L (whether it applies is `enabled`'s business).
+  double factor(double length) const { return std::sqrt(length / (2.0 * material_length)); }
 };
 
 /// true for every intact beam that lies in at least one triangle of exactly 2 intact and 1 broken
@@ -87,6 +90,19 @@ struct BeamStress {
   Eigen::VectorXd sigma_3;           ///< minor in-plane principal stress (most compressive)
   Eigen::VectorXd crack_tip_factor;  ///< (L/2L_m)^(1/2) at a crack tip, else 1
 };
+
+/// In-plane principal stresses of (s_xx, s_yy, s_xy), sigma_1 >= sigma_3: hm::analytic::principal_stresses'
+/// sigma_1 and sigma_2 bit for bit (the same operations), without its angle (an atan2 per call), for
+/// the loops over every beam.
+struct PrincipalPair {
+  double sigma_1;
+  double sigma_3;
+};
+inline PrincipalPair principal_pair(double s_xx, double s_yy, double s_xy) {
+  const double mean = 0.5 * (s_xx + s_yy);
+  const double radius = std::hypot(0.5 * (s_xx - s_yy), s_xy);
+  return {mean + radius, mean - radius};
+}
 
 /// Beam stresses from particle stresses (Section 2.1: "the mean value of the stress in the particles
 /// that it connects", times the crack-tip factor). Computed for every beam, broken ones included
