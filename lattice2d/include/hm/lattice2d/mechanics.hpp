@@ -114,6 +114,7 @@ struct MechanicsSummary {
   int n_detached_particles = 0;     ///< particles held because they lost their anchoring (all so far)
   double solver_residual = 0.0;     ///< ||A x - b|| / ||b|| of the last linear solve
   /// max |K u - f| over free degrees of freedom, over max |f| (f the loads incl. held-DOF terms).
+  /// NaN after solve(false), which skips it.
   double equilibrium_residual = 0.0;
   double solve_seconds = 0.0;       ///< wall time of this solve()
   std::string message;              ///< why, when not converged
