@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "hm/lattice2d/calibration.hpp"
 #include "hm/lattice2d/mechanics.hpp"
 
 using namespace hm::lattice2d;
@@ -60,7 +61,7 @@ void run(long long n, bool variants, bool with_pcg) {
   bc.outer = BoundarySupport::fixed;
   bc.inner_pressure = 1e-3;
   t0 = now();
-  BeamMechanics mech(lattice, BeamParameters{}, bc);
+  BeamMechanics mech(lattice, calibrated_beam_parameters(), bc);  // the toolkit's default beams
   const double t_setup = now() - t0;
   const SpdSolver::Matrix A = mech.solver().matrix();
   std::vector<int> free_index(mech.held_dofs().size(), -1);

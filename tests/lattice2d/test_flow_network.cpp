@@ -470,11 +470,12 @@ TEST_CASE("Steady annulus converges at second order in h = N^-1/2", "[lattice2d]
 TEST_CASE("Point injection into the disk matches Rudnicki's line source with b = 0 at N = 1e4", "[lattice2d]") {
   const auto errors = rudnicki_errors(10000, 1e-6);
   INFO("t = 3e-4: " << errors[0] << ", t = 1e-3: " << errors[1]);
-  // Discretisation error at N = 1e4 (h = 0.016; measured 4.6e-2 and 3.7e-2, in the innermost shell,
-  // 0.02 < r < 0.03, which holds 6 triangles one spacing from the source triangle); it drops to
-  // <~ 4e-3 at N = 4e4 and 1e5 ([slow] test). dt = 1e-6 contributes ~5e-4 (first order: 2e-6 moves
-  // the errors by that much). Bound: measured + 30%.
-  CHECK(errors[0] <= 6e-2);
+  // Discretisation error at N = 1e4 (h = 0.016, in the innermost shell, 0.02 < r < 0.03, which holds
+  // ~6 triangles one spacing from the source triangle). Measured (default lattice, boundary row at
+  // 1.3 r_min, 2026-11-22): seed 1 5.8e-2 and 1.2e-2; seeds 2, 3: 4.2e-2 / 1.7e-2, 4.7e-2 / 3.9e-2 (the
+  // source triangle's placement varies with the realisation). It drops to ~7e-3 at N = 4e4 ([slow]
+  // test). dt = 1e-6 contributes ~5e-4. Bound: the largest of the three seeds + 30%.
+  CHECK(errors[0] <= 7.5e-2);
   CHECK(errors[1] <= 5e-2);
 }
 
@@ -500,16 +501,28 @@ TEST_CASE("Implicit Euler converges at first order in dt", "[lattice2d]") {
 }
 
 TEST_CASE("Point injection: the error against Rudnicki shrinks from N = 1e4 to 4e4 and 1e5", "[lattice2d][slow]") {
-  const auto coarse = rudnicki_errors(10000, 1e-6);
-  const auto medium = rudnicki_errors(40000, 1e-6);
-  const auto fine = rudnicki_errors(100000, 1e-6);
+  // One random lattice per N does not order the errors: the source triangle's placement moves them by
+  // a factor of ~10 at N = 4e4 (measured, default lattice, 2026-11-22: seeds 1, 2, 3 at t = 3e-4:
+  // 1.5e-2, 8e-4, 5e-3; at N = 1e4: 5.8e-2, 4.2e-2, 4.7e-2). So the means over seeds 1-3 are compared.
+  auto seed_mean = [](long long n) {
+    std::array<double, 2> mean{};
+    for (std::uint64_t seed : {1, 2, 3}) {
+      const auto e = rudnicki_errors(n, 1e-6, seed);
+      for (std::size_t k = 0; k < 2; ++k) mean[k] += e[k] / 3.0;
+    }
+    return mean;
+  };
+  const auto coarse = seed_mean(10000);
+  const auto medium = seed_mean(40000);
+  const auto fine = rudnicki_errors(100000, 1e-6);  // one seed: ~4 min
   for (std::size_t k = 0; k < 2; ++k) {
-    INFO("t index " << k << ": N = 1e4 " << coarse[k] << ", 4e4 " << medium[k] << ", 1e5 " << fine[k]);
+    INFO("t index " << k << ": N = 1e4 " << coarse[k] << ", 4e4 " << medium[k] << ", 1e5 (seed 1) " << fine[k]);
     CHECK(medium[k] < coarse[k]);
     CHECK(fine[k] < coarse[k]);
-    // Discretisation at N >= 4e4 (measured <= 4e-3; one random lattice per N, so the N = 4e4 and
-    // 1e5 errors are of the same size rather than ordered) plus the dt = 1e-6 error ~5e-4.
+    // Seed means measured 4.9e-2 / 2.3e-2 (1e4) and 7.2e-3 / 4.2e-3 (4e4), plus the dt = 1e-6 error
+    // ~5e-4; 1e-2 bounds the discretisation at N >= 4e4 (a single seed at 1e5 with the same margin as
+    // the worst single seed at 4e4, 1.5e-2: 2e-2).
     CHECK(medium[k] <= 1e-2);
-    CHECK(fine[k] <= 1e-2);
+    CHECK(fine[k] <= 2e-2);
   }
 }
