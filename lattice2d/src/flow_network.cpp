@@ -284,6 +284,7 @@ FlowStepSummary FlowNetwork::solve(double dt, const Eigen::VectorXd& volume_chan
   summary.dt = dt;
   summary.injected = parameters_.Q * dt;
   has_trial_ = false;
+  const bool factor_current = factorised_dt_ == dt && !factor_stale_;  // reused as it is, no factorisation
   summary.message = factorise_if_needed(dt);
   if (!summary.message.empty()) return summary;
 
@@ -299,7 +300,7 @@ FlowStepSummary FlowNetwork::solve(double dt, const Eigen::VectorXd& volume_chan
   Eigen::VectorXd rhs = storage_coefficient.cwiseProduct(pressure_) - deformation;
   rhs[has_borehole_ ? n_triangles_ : source_triangle_] += summary.injected;
 
-  summary.factorised = !factor_stale_;
+  summary.factorised = !factor_current && !factor_stale_;
   trial_pressure_ = solver_->factorisation.solve(rhs);
   if (factor_stale_) {
     // Conjugate gradients on the current matrix, preconditioned by the last factor
