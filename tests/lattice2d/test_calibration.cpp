@@ -10,68 +10,10 @@
 #include "approx.hpp"
 #include "hm/analytic/input_error.hpp"
 #include "hm/lattice2d/calibration.hpp"
+#include "lattice2d/lattice_fixtures.hpp"
 
 using namespace hm::lattice2d;
-
-namespace {
-
-// A regular triangular lattice on a 60-degree rhombus of n x n particles, spacing l, centred at the
-// origin: every triangle equilateral, every interior particle a centre of inversion symmetry.
-Lattice regular_triangular_lattice(int n, double l) {
-  Lattice lat;
-  lat.spec.domain = DomainShape::rectangle;
-  lat.spec.n_particles = static_cast<long long>(n) * n;
-  const double h = l * std::sqrt(3.0) / 2.0;
-  // The rhombus's inscribed circle has radius (n - 1) h / 2; the measurement's region is a fraction of
-  // min(width, height) / 2, so width = height = (n - 1) h keeps it inside.
-  lat.spec.width = lat.spec.height = (n - 1) * h;
-  lat.min_spacing = l;
-  auto id = [n](int i, int j) { return j * n + i; };
-  lat.points.resize(2, n * n);
-  lat.boundary.assign(static_cast<std::size_t>(n) * n, BoundaryTag::interior);
-  const Eigen::Vector2d centre((n - 1) * l * 0.75, (n - 1) * h * 0.5);
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      lat.points.col(id(i, j)) = Eigen::Vector2d(i * l + j * l / 2.0, j * h) - centre;
-      if (i == 0 || j == 0 || i == n - 1 || j == n - 1) lat.boundary[id(i, j)] = BoundaryTag::outer;
-    }
-  for (int j = 0; j + 1 < n; ++j)
-    for (int i = 0; i + 1 < n; ++i) {
-      lat.triangles.push_back({id(i, j), id(i + 1, j), id(i, j + 1)});          // counter-clockwise
-      lat.triangles.push_back({id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});  // counter-clockwise
-    }
-  std::map<std::pair<int, int>, int> beam_of;
-  for (int t = 0; t < lat.n_triangles(); ++t) {
-    std::array<int, 3> tb{};
-    for (int k = 0; k < 3; ++k) {
-      int a = lat.triangles[t][(k + 1) % 3], b = lat.triangles[t][(k + 2) % 3];
-      if (a > b) std::swap(a, b);
-      auto [it, added] = beam_of.try_emplace({a, b}, lat.n_beams());
-      if (added) {
-        lat.beams.push_back({a, b});
-        lat.beam_triangles.push_back({t, -1});
-      } else {
-        lat.beam_triangles[it->second][1] = t;
-      }
-      tb[k] = it->second;
-    }
-    lat.triangle_beams.push_back(tb);
-  }
-  const int nb = lat.n_beams();
-  lat.length.resize(nb);
-  lat.direction.resize(2, nb);
-  lat.angle.resize(nb);
-  for (int e = 0; e < nb; ++e) {
-    const Eigen::Vector2d d = lat.points.col(lat.beams[e][1]) - lat.points.col(lat.beams[e][0]);
-    lat.length[e] = d.norm();
-    lat.direction.col(e) = d / d.norm();
-    lat.angle[e] = std::atan2(d.y(), d.x());
-    lat.beam_boundary.push_back(lat.beam_triangles[e][1] < 0 ? BoundaryTag::outer : BoundaryTag::interior);
-  }
-  return lat;
-}
-
-}  // namespace
+using hm::test::regular_triangular_lattice;
 
 TEST_CASE("A regular triangular lattice of nearly central beams measures the exact nu = 1/4 and E = 5 sqrt(3)/8 k_n",
           "[lattice2d]") {
