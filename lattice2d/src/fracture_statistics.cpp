@@ -7,6 +7,8 @@
 #include <numeric>
 #include <string>
 
+#include <Eigen/Geometry>
+
 #include "hm/analytic/input_error.hpp"
 #include "hm/analytic/validation.hpp"
 #include "hm/lattice2d/vtk_writer.hpp"
@@ -16,6 +18,7 @@ namespace hm::lattice2d {
 void FractureStatisticsOptions::validate() const {
   hm::analytic::require_open(arm_radius_fraction, "fracture_statistics.arm_radius_fraction", 0.0, 1.0);
   hm::analytic::require_positive(arm_gap_beams, "fracture_statistics.arm_gap_beams");
+  hm::analytic::require_non_negative(sizable_extent, "fracture_statistics.sizable_extent");
 }
 
 std::string to_string(FractureKind kind) {
@@ -24,6 +27,20 @@ std::string to_string(FractureKind kind) {
     case FractureKind::secondary: return "secondary";
   }
   return "?";
+}
+
+std::string to_string(FractureLink link) {
+  switch (link) {
+    case FractureLink::shared_particle: return "particle";
+    case FractureLink::shared_triangle: return "triangle";
+  }
+  return "?";
+}
+
+FractureLink fracture_link_from_string(const std::string& text, const std::string& key) {
+  for (FractureLink link : {FractureLink::shared_particle, FractureLink::shared_triangle})
+    if (text == to_string(link)) return link;
+  throw hm::InputError(key + " = '" + text + "', allowed: particle, triangle");
 }
 
 namespace {
@@ -137,18 +154,30 @@ FractureStatistics compute_fracture_statistics(const Lattice& lattice, const std
   const std::vector<FailureMode> mode = logged_modes(lattice, log);
   const auto is_broken = [&](int e) { return broken[static_cast<std::size_t>(e)]; };
 
-  // Two broken edges of one triangle are one crack path through it (their Voronoi segments meet at
-  // its dual point). Not "shared particle": that would merge distinct cracks that only touch at a
-  // particle, e.g. two radial cracks from neighbouring wall particles.
   DisjointSets sets(lattice.n_beams());
-  for (const auto& edges : lattice.triangle_beams)
-    for (int k = 0; k < 3; ++k)
-      for (int m = k + 1; m < 3; ++m)
-        if (is_broken(edges[k]) && is_broken(edges[m])) sets.unite(edges[k], edges[m]);
+  if (options.link == FractureLink::shared_triangle) {
+    // Two broken edges of one triangle: their Voronoi segments meet at its dual point.
+    for (const auto& edges : lattice.triangle_beams)
+      for (int k = 0; k < 3; ++k)
+        for (int m = k + 1; m < 3; ++m)
+          if (is_broken(edges[k]) && is_broken(edges[m])) sets.unite(edges[k], edges[m]);
+  } else {
+    // Every broken beam joins the first broken beam seen at each of its particles.
+    std::vector<int> first_at(static_cast<std::size_t>(lattice.n_particles()), -1);
+    for (int e = 0; e < lattice.n_beams(); ++e) {
+      if (!is_broken(e)) continue;
+      for (int i : lattice.beams[static_cast<std::size_t>(e)]) {
+        int& first = first_at[static_cast<std::size_t>(i)];
+        if (first < 0) first = e;
+        else sets.unite(e, first);
+      }
+    }
+  }
 
   FractureStatistics stats;
   std::vector<int> fracture_of_root(static_cast<std::size_t>(lattice.n_beams()), -1);
   std::vector<Eigen::Vector2d> direction_sum;
+  std::vector<Eigen::AlignedBox2d> box;
   for (int e = 0; e < lattice.n_beams(); ++e) {
     if (!is_broken(e)) continue;
     int& id = fracture_of_root[static_cast<std::size_t>(sets.find(e))];
@@ -160,6 +189,7 @@ FractureStatistics compute_fracture_statistics(const Lattice& lattice, const std
       f.r_max = -std::numeric_limits<double>::infinity();
       stats.fractures.push_back(f);
       direction_sum.push_back(Eigen::Vector2d::Zero());
+      box.emplace_back();
     }
     Fracture& f = stats.fractures[static_cast<std::size_t>(id)];
     f.beams.push_back(e);
@@ -171,6 +201,7 @@ FractureStatistics compute_fracture_statistics(const Lattice& lattice, const std
     f.r_min = std::min(f.r_min, r);
     f.r_max = std::max(f.r_max, r);
     if (r > 0.0) direction_sum[static_cast<std::size_t>(id)] += m / r;
+    box[static_cast<std::size_t>(id)].extend(m);
     const FailureMode how = mode[static_cast<std::size_t>(e)];
     f.n_tensile += how == FailureMode::tensile ? 1 : 0;
     f.n_shear += how == FailureMode::shear ? 1 : 0;
@@ -179,6 +210,7 @@ FractureStatistics compute_fracture_statistics(const Lattice& lattice, const std
   for (Fracture& f : stats.fractures) {
     f.kind = f.connected_to_borehole ? FractureKind::radial : FractureKind::secondary;
     f.length = f.r_max - f.r_min;
+    f.extent = box[static_cast<std::size_t>(f.id)].diagonal().norm();
     const Eigen::Vector2d& dir = direction_sum[static_cast<std::size_t>(f.id)];
     double deg = std::atan2(dir.y(), dir.x()) * 180.0 / pi;
     if (deg < 0.0) deg += 360.0;
@@ -193,6 +225,7 @@ FractureStatistics compute_fracture_statistics(const Lattice& lattice, const std
       stats.max_radial_extent = std::max(stats.max_radial_extent, f.r_max);
     } else {
       ++stats.n_secondary;
+      stats.n_secondary_sizable += f.extent >= options.sizable_extent ? 1 : 0;
     }
   }
   stats.n_fractures = static_cast<int>(stats.fractures.size());
@@ -210,25 +243,25 @@ FractureStatistics compute_fracture_statistics(const Lattice& lattice, const std
 void write_fracture_table(const std::filesystem::path& path, const std::vector<FractureSnapshot>& snapshots) {
   write_file_atomically(path, [&](std::ostream& out) {
     out << "t,fracture,kind,n_beams,connected_to_borehole,reaches_outer,r_min,r_max,length,angle_deg,n_tensile,"
-           "n_shear\n";
+           "n_shear,extent\n";
     for (const FractureSnapshot& snap : snapshots)
       for (const Fracture& f : snap.stats.fractures)
         out << number(snap.t) << ',' << f.id << ',' << to_string(f.kind) << ',' << f.n_beams() << ','
             << (f.connected_to_borehole ? 1 : 0) << ',' << (f.reaches_outer ? 1 : 0) << ',' << number(f.r_min) << ','
             << number(f.r_max) << ',' << number(f.length) << ',' << number(f.angle_deg) << ',' << f.n_tensile << ','
-            << f.n_shear << '\n';
+            << f.n_shear << ',' << number(f.extent) << '\n';
   });
 }
 
 void write_fracture_summary(const std::filesystem::path& path, const std::vector<FractureSnapshot>& snapshots) {
   write_file_atomically(path, [&](std::ostream& out) {
     out << "t,n_broken,n_fractures,n_radial,n_radial_reaching_outer,n_secondary,n_arms,n_tensile,n_shear,"
-           "max_radial_extent\n";
+           "max_radial_extent,n_secondary_sizable\n";
     for (const FractureSnapshot& snap : snapshots) {
       const FractureStatistics& s = snap.stats;
       out << number(snap.t) << ',' << s.n_broken << ',' << s.n_fractures << ',' << s.n_radial << ','
           << s.n_radial_reaching_outer << ',' << s.n_secondary << ',' << s.n_arms << ',' << s.n_tensile << ','
-          << s.n_shear << ',' << number(s.max_radial_extent) << '\n';
+          << s.n_shear << ',' << number(s.max_radial_extent) << ',' << s.n_secondary_sizable << '\n';
     }
   });
 }

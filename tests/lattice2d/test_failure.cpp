@@ -157,6 +157,30 @@ TEST_CASE("Break events are logged with position and written as CSV", "[lattice2
   CHECK(lines[2].substr(lines[2].rfind(',') + 1) == "shear");
   CHECK_FALSE(std::filesystem::exists(dir / "breaks.csv.partial"));
 
+  // Read back: the same events to the 10 written digits.
+  const std::vector<BreakEvent> back = read_break_log(dir / "breaks.csv");
+  REQUIRE(back.size() == 2);
+  CHECK(back[0].sequence == 3);
+  CHECK(back[0].beam == 42);
+  CHECK(back[0].particle_i == i);
+  CHECK(back[0].particle_j == j);
+  CHECK((back[0].position - event.position).norm() <= 1e-9 * event.position.norm());
+  CHECK(back[0].load == 0.75);
+  CHECK(back[0].sigma_1 == Approx(2.0 * T).epsilon(1e-9));
+  CHECK(back[0].crack_tip_factor == 1.25);
+  CHECK(back[0].mode == FailureMode::tensile);
+  CHECK(back[1].mode == FailureMode::shear);
+  // A damaged log names the file and line.
+  {
+    std::ofstream(dir / "bad.csv") << lines[0] << "\n" << lines[1] << "\n3,42,1,2,0.5,x,0.1,1,1,1,1,tensile\n";
+    CHECK_THROWS_WITH(read_break_log(dir / "bad.csv"), Catch::Contains("bad.csv:3: not a number"));
+    std::ofstream(dir / "bad.csv") << "beam,mode\n";
+    CHECK_THROWS_WITH(read_break_log(dir / "bad.csv"), Catch::Contains("bad.csv:1: header"));
+    std::ofstream(dir / "bad.csv") << lines[0] << "\n" << lines[1].substr(0, lines[1].rfind(',')) << ",bent\n";
+    CHECK_THROWS_WITH(read_break_log(dir / "bad.csv"), Catch::Contains("mode 'bent'"));
+    CHECK_THROWS_WITH(read_break_log(dir / "none.csv"), Catch::Contains("none.csv"));
+  }
+
   // A folder that does not exist: an error naming the path, no file left behind.
   CHECK_THROWS_WITH(write_break_log(dir / "missing" / "breaks.csv", {event}), Catch::Contains("missing"));
   CHECK_FALSE(std::filesystem::exists(dir / "missing"));

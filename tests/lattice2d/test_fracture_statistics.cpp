@@ -159,6 +159,19 @@ TEST_CASE("A crack away from the borehole is one secondary fracture", "[lattice2
   CHECK(f.r_max == Approx(0.7).margin(L));
   CHECK(f.length == Approx(0.2).margin(2.0 * L));
   CHECK(angle_difference(f.angle_deg, 45.1) < 3.0);
+  // A straight crack: its bounding box's diagonal is its length, 0.2 (midpoints within L/2 of the ends).
+  CHECK(f.extent == Approx(0.2).margin(2.0 * L));
+  CHECK(s.n_secondary_sizable == 1);  // 0.2 >= 0.05
+  FractureStatisticsOptions strict;
+  strict.sizable_extent = 0.3;
+  CHECK(compute_fracture_statistics(lattice, broken, {}, strict).n_secondary_sizable == 0);
+  // One broken beam alone is a secondary fracture, too short to be sizable.
+  std::vector<bool> one(broken.size(), false);
+  one[static_cast<std::size_t>(s.fractures[0].beams[0])] = true;
+  const FractureStatistics single = compute_fracture_statistics(lattice, one);
+  CHECK(single.n_secondary == 1);
+  CHECK(single.n_secondary_sizable == 0);
+  CHECK(single.fractures[0].extent == 0.0);
 }
 
 TEST_CASE("No broken beam gives empty statistics", "[lattice2d][fracture_statistics]") {
@@ -215,7 +228,7 @@ TEST_CASE("Two cracks from one wall point are one fracture with two arms away fr
   CHECK(count_crossings(lattice, broken, 1.5) == 0);  // outside the domain
 }
 
-TEST_CASE("Beams are connected through a shared triangle, not through a shared particle",
+TEST_CASE("Beams are connected through a shared particle, or only through a shared triangle when asked",
           "[lattice2d][fracture_statistics]") {
   const Lattice& lattice = annulus();
   // An interior particle and its beams; two beams of one triangle at it are adjacent in its fan.
@@ -243,15 +256,50 @@ TEST_CASE("Beams are connected through a shared triangle, not through a shared p
   }
   REQUIRE(adjacent >= 0);
   REQUIRE(opposite >= 0);
+  // A beam at opposite's far end that touches neither fan[0] nor the centre.
+  const auto far_end = [&](int e) {
+    const auto& b = lattice.beams[static_cast<std::size_t>(e)];
+    return b[0] == centre ? b[1] : b[0];
+  };
+  const int step_out = far_end(opposite);
+  int beyond = -1;
+  for (int e = 0; e < lattice.n_beams() && beyond < 0; ++e) {
+    const auto& b = lattice.beams[static_cast<std::size_t>(e)];
+    const auto touches = [&](int i) { return b[0] == i || b[1] == i; };
+    if (touches(step_out) && !touches(centre) && !touches(far_end(fan[0]))) beyond = e;
+  }
+  REQUIRE(beyond >= 0);
 
+  FractureStatisticsOptions triangle;
+  triangle.link = FractureLink::shared_triangle;
+  const FractureStatisticsOptions particle{};
+  REQUIRE(particle.link == FractureLink::shared_particle);  // the default
   std::vector<bool> broken(static_cast<std::size_t>(lattice.n_beams()), false);
+  const auto count = [&](const FractureStatisticsOptions& o) {
+    return compute_fracture_statistics(lattice, broken, {}, o).n_fractures;
+  };
+  // Two beams at one particle in no common triangle: an en-echelon step, one fracture by particle.
   broken[static_cast<std::size_t>(fan[0])] = broken[static_cast<std::size_t>(opposite)] = true;
-  CHECK(compute_fracture_statistics(lattice, broken).n_fractures == 2);
-  broken[static_cast<std::size_t>(adjacent)] = true;  // may bridge the two if it shares a triangle with both
-  const int expected = share_triangle(adjacent, opposite) ? 1 : 2;
-  CHECK(compute_fracture_statistics(lattice, broken).n_fractures == expected);
+  CHECK(count(triangle) == 2);
+  CHECK(count(particle) == 1);
+  // A chain fan[0] - opposite - beyond is linked particle to particle; beyond shares no triangle with fan[0].
+  broken[static_cast<std::size_t>(beyond)] = true;
+  CHECK(count(particle) == 1);
+  CHECK(count(triangle) == (share_triangle(opposite, beyond) ? 2 : 3));
+  // Without the middle beam nothing joins fan[0] and beyond under either rule.
   broken[static_cast<std::size_t>(opposite)] = false;
-  CHECK(compute_fracture_statistics(lattice, broken).n_fractures == 1);
+  CHECK(count(particle) == 2);
+  CHECK(count(triangle) == 2);
+  // Two edges of one triangle are one fracture under both rules.
+  broken.assign(broken.size(), false);
+  broken[static_cast<std::size_t>(fan[0])] = broken[static_cast<std::size_t>(adjacent)] = true;
+  CHECK(count(particle) == 1);
+  CHECK(count(triangle) == 1);
+
+  CHECK(to_string(FractureLink::shared_particle) == "particle");
+  CHECK(fracture_link_from_string("triangle", "output.fracture_link") == FractureLink::shared_triangle);
+  CHECK_THROWS_WITH(fracture_link_from_string("beam", "output.fracture_link"),
+                    "output.fracture_link = 'beam', allowed: particle, triangle");
 }
 
 TEST_CASE("The break log gives each fracture's tensile and shear counts", "[lattice2d][fracture_statistics]") {
@@ -310,18 +358,21 @@ TEST_CASE("Fracture tables are written as CSV and bad options are rejected", "[l
   const auto table = hm::test::lines_of(dir / "fractures.csv");
   REQUIRE(table.size() == 1 + 4);  // the empty snapshot has no rows
   CHECK(table[0] ==
-        "t,fracture,kind,n_beams,connected_to_borehole,reaches_outer,r_min,r_max,length,angle_deg,n_tensile,n_shear");
+        "t,fracture,kind,n_beams,connected_to_borehole,reaches_outer,r_min,r_max,length,angle_deg,n_tensile,n_shear,"
+        "extent");
   const Fracture& first = snaps[1].stats.fractures[0];
   CHECK(table[1].rfind("1.5,0,radial," + std::to_string(first.n_beams()) + ",1,1,", 0) == 0);
-  CHECK(table[1].substr(table[1].size() - 4) == ",0,0");
+  const std::string tail = table[1].substr(table[1].rfind(',') + 1);  // extent, after n_tensile, n_shear = 0, 0
+  CHECK(std::stod(tail) == Approx(first.extent).epsilon(1e-9));
+  CHECK(table[1].substr(table[1].size() - tail.size() - 5, 5) == ",0,0,");
 
   write_fracture_summary(dir / "summary.csv", snaps);
   const auto summary = hm::test::lines_of(dir / "summary.csv");
   REQUIRE(summary.size() == 1 + 2);
   CHECK(summary[0] ==
         "t,n_broken,n_fractures,n_radial,n_radial_reaching_outer,n_secondary,n_arms,n_tensile,n_shear,"
-        "max_radial_extent");
-  CHECK(summary[1] == "0,0,0,0,0,0,0,0,0,0");
+        "max_radial_extent,n_secondary_sizable");
+  CHECK(summary[1] == "0,0,0,0,0,0,0,0,0,0,0");
   CHECK(summary[2].rfind("1.5," + std::to_string(snaps[1].stats.n_broken) + ",4,4,4,0,4,0,0,", 0) == 0);
   CHECK_FALSE(std::filesystem::exists(dir / "summary.csv.partial"));
   CHECK_THROWS_AS(write_fracture_summary(dir / "no_such_dir" / "summary.csv", snaps), std::runtime_error);
@@ -345,6 +396,9 @@ TEST_CASE("Fracture tables are written as CSV and bad options are rejected", "[l
   o = {};
   o.arm_gap_beams = -1.0;
   CHECK(message(o) == "fracture_statistics.arm_gap_beams = -1, allowed: fracture_statistics.arm_gap_beams > 0");
+  o = {};
+  o.sizable_extent = -0.1;
+  CHECK(message(o).rfind("fracture_statistics.sizable_extent = -0.1, allowed:", 0) == 0);
   CHECK_THROWS_AS(compute_fracture_statistics(lattice, std::vector<bool>(3, false)), hm::InputError);
   CHECK_THROWS_AS(count_crossings(lattice, none, 0.0), hm::InputError);
 }

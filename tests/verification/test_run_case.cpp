@@ -51,6 +51,8 @@ TEST_CASE("Bad 2D cases are rejected with one line naming table, key, value and 
   rejected(physics + "[lattice]\nstiffness_scaling = \"facet\"\n",
            "case.toml: [lattice] stiffness_scaling = 'facet', allowed: uniform, voronoi_facet");
   rejected(physics + "[lattice]\nboundary_spacing_factor = 2\n", "case.toml: [lattice] boundary_spacing_factor = 2, allowed: ");
+  rejected(physics + "[output]\nfracture_link = \"beam\"\n",
+           "case.toml: [output] fracture_link = 'beam', allowed: particle, triangle");
   rejected(physics + "[mechanics]\nouter = \"clamped\"\n", "case.toml: [mechanics] outer = 'clamped', allowed: free, fixed");
   rejected(physics + "[mechanics]\nsolver = \"lu\"\n", "case.toml: [mechanics] solver = 'lu', allowed: cholmod, pcg");
   rejected(physics + "[flow]\nborehole_storage = \"tank\"\n", "case.toml: [flow] borehole_storage = 'tank', allowed: ");
@@ -207,4 +209,32 @@ TEST_CASE("A fracturing borehole run writes the break log, breakdown and fractur
   CHECK_THAT(fractures, Catch::Contains(",radial,"));
   const auto config = hm::test::slurp(dir.path / "run" / "config.toml");
   CHECK_THAT(config, Catch::Contains("[fracture]\nenabled = true\ndistribution = \"uniform\""));
+  CHECK_THAT(config, Catch::Contains("fracture_link = \"particle\""));
+
+  // hmlattice fractures recomputes the same statistics from config.toml and breaks.csv (the rule the
+  // run used): byte-identical files; with the triangle rule at least as many fractures (a subset of links).
+  auto r2 = run_hmlattice("fractures run", dir.path);
+  INFO("stderr: " << r2.err);
+  REQUIRE(r2.exit_code == 0);
+  CHECK(hm::test::slurp(dir.path / "run" / "fractures.csv") == fractures);
+  CHECK(hm::test::slurp(dir.path / "run" / "fracture_summary.csv") == summary);
+  r2 = run_hmlattice("fractures run --link triangle", dir.path);
+  REQUIRE(r2.exit_code == 0);
+  const auto n_fractures = [](const std::string& csv) {  // last row's third column
+    const std::string row = csv.substr(csv.rfind('\n', csv.size() - 2) + 1);
+    return std::stoi(row.substr(row.find(',', row.find(',') + 1) + 1));
+  };
+  CHECK(n_fractures(hm::test::slurp(dir.path / "run" / "fracture_summary.csv")) >= n_fractures(summary));
+  const auto reconfigured = hm::test::slurp(dir.path / "run" / "config.toml");
+  CHECK_THAT(reconfigured, Catch::Contains("fracture_link = \"triangle\""));
+  CHECK_THAT(reconfigured, Catch::Contains("# fracture statistics recomputed with fracture_link = \"triangle\" by: "));
+  CHECK_THAT(reconfigured, Catch::Contains("[provenance]"));
+  // Bad input: one line naming what is wrong, nothing changed.
+  r2 = run_hmlattice("fractures run --link beam", dir.path);
+  CHECK(r2.exit_code == 2);
+  CHECK_THAT(r2.err, Catch::Contains("--link = 'beam', allowed: particle, triangle"));
+  r2 = run_hmlattice("fractures nowhere", dir.path);
+  CHECK(r2.exit_code == 2);
+  CHECK_THAT(r2.err, Catch::Contains("run folder = nowhere has no config.toml"));
+  CHECK(hm::test::slurp(dir.path / "run" / "config.toml") == reconfigured);
 }

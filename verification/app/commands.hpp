@@ -9,5 +9,6 @@ void add_analytic_command(CLI::App& app, int& exit_code);
 void add_verify_command(CLI::App& app, int& exit_code, const std::string& command_line);
 void add_fdm1d_command(CLI::App& app, int& exit_code, const std::string& command_line);
 void add_run_command(CLI::App& app, int& exit_code, const std::string& command_line);
+void add_fractures_command(CLI::App& app, const std::string& command_line);
 
 }  // namespace hm::app

@@ -3,6 +3,7 @@
 //   hmlattice verify [--tier quick|paper] [--out DIR]     run the verification suite, write a report
 //   hmlattice fdm1d cases/fig10_fdm1d_b0.5.toml [--out DIR]   the radial 1D model (Appendix A)
 //   hmlattice run cases/fig07_rudnicki_free.toml [--out DIR]   the coupled 2D lattice (Sections 2.1-2.3)
+//   hmlattice fractures out/fig12_b0.2 [--link triangle]   recompute a run's fracture statistics
 //   hmlattice analytic rudnicki --Q 0.1 --b 0.5 --t 3e-4 --r 0.01,0.02   closed forms as CSV
 //
 // Exit codes: 0 success; 1 a verification check failed; 2 bad input (one line on stderr naming the
@@ -32,6 +33,7 @@ int main(int argc, char** argv) {
   hm::app::add_verify_command(app, exit_code, joined(argc, argv));
   hm::app::add_fdm1d_command(app, exit_code, joined(argc, argv));
   hm::app::add_run_command(app, exit_code, joined(argc, argv));
+  hm::app::add_fractures_command(app, joined(argc, argv));
   hm::app::add_analytic_command(app, exit_code);
 
   try {

@@ -306,11 +306,12 @@ std::string sign_word(double x) { return std::isnan(x) ? "-" : (x < 0.0 ? "negat
 
 Table snapshot_table() {
   return {"Per output time: broken beams; radial fractures as clusters (connected to the borehole) and as arms "
-          "crossing r = R_i + (1 - R_i)/4; radial clusters reaching r = 1; secondary clusters; borehole pressure; "
+          "crossing r = R_i + (1 - R_i)/4; radial clusters reaching r = 1; secondary clusters (all, and those at least "
+          "0.05 R long: most are single broken beams); borehole pressure; "
           "mean pressure in the fracture triangles (area-weighted over triangles with a broken beam, without / with "
           "the borehole-wall triangles) and its sign. Paper (Section 3.3, Fig. 12): 3 radial fractures for b = 0.2, "
           "7 for b = 0.8, all at r = 1 at the last time, negative pressure in the fractures",
-          {"run", "t*", "n_broken", "radial (clusters)", "arms", "radial at r = 1", "secondary", "p_h",
+          {"run", "t*", "n_broken", "radial (clusters)", "arms", "radial at r = 1", "secondary", "secondary >= 0.05", "p_h",
            "p in fractures (no wall tri.)", "with wall tri.", "min p in fractures", "sign", "paper: fractures"},
           {}};
 }
@@ -319,7 +320,7 @@ void add_snapshot_rows(const RunOutcome& o, Table& t) {
   for (const auto& s : o.snaps)
     t.rows.push_back({run_name(o), fmt(s.t), std::to_string(s.stats.n_broken), std::to_string(s.stats.n_radial),
                       std::to_string(s.stats.n_arms), std::to_string(s.stats.n_radial_reaching_outer),
-                      std::to_string(s.stats.n_secondary), fmt(s.p_h), fmt(s.fp.mean_away) + " (" + std::to_string(s.fp.n_away) + " tri.)",
+                      std::to_string(s.stats.n_secondary), std::to_string(s.stats.n_secondary_sizable), fmt(s.p_h), fmt(s.fp.mean_away) + " (" + std::to_string(s.fp.n_away) + " tri.)",
                       fmt(s.fp.mean_all), fmt(s.fp.min_away), sign_word(s.fp.mean_away),
                       std::to_string(paper_fracture_count(o.b)) + (&s == &o.snaps.back() ? ", all at r = 1" : "")});
 }
@@ -486,7 +487,9 @@ std::vector<Figure> figures(const std::string& subdir, const std::string& what) 
 
 std::string notes_common() {
   return "Definitions (docs/borehole_fracture.md): a *fracture* is a cluster of broken beams connected through shared "
-         "triangles (fracture_statistics.hpp); *radial* clusters contain a broken borehole-wall beam. Cracks that "
+         "particles (fracture_statistics.hpp; `hmlattice fractures <run> --link triangle` recomputes a run with the "
+         "stricter shared-triangle rule, which cut the N = 1e5 fractures into pieces); *radial* clusters contain a "
+         "broken borehole-wall beam. Cracks that "
          "merge at the wall form one cluster, so the count comparable with the paper's figure is the number of "
          "*arms*: groups of broken beams crossing the circle r = R_i + (1 - R_i)/4. The *pressure in the fractures* "
          "is the area-weighted mean over the triangles that have a broken beam, without the triangles on the "
@@ -553,7 +556,7 @@ BenchmarkResult fig12_paper(const BenchmarkContext& ctx) {
   Table snaps = snapshot_table(), breakdown = breakdown_table(), timing = timing_table();
   Table scatter{"Seed scatter at N = " + std::to_string(kScatterN) + " (seeds 1, 2, 3 of the lattice and the strengths): "
                 "mean ± sample standard deviation over the three runs",
-                {"b", "t*", "n_broken", "radial (clusters)", "arms", "radial at r = 1", "secondary",
+                {"b", "t*", "n_broken", "radial (clusters)", "arms", "radial at r = 1", "secondary", "secondary >= 0.05",
                  "p in fractures (no wall tri.)", "p_h"},
                 {}};
   Table scatter_bd{"Seed scatter at N = " + std::to_string(kScatterN) + ": breakdown, mean ± sd over seeds 1, 2, 3",
@@ -583,16 +586,17 @@ BenchmarkResult fig12_paper(const BenchmarkContext& ctx) {
       if (s.ok) ok.push_back(&s);
     if (!ok.empty()) {
       for (std::size_t k = 0; k < ok.front()->snaps.size(); ++k) {
-        std::vector<double> nb, nr, na, no, ns, fp, ph;
+        std::vector<double> nb, nr, na, no, ns, nz, fp, ph;
         for (const RunOutcome* s : ok) {
           if (k >= s->snaps.size()) continue;
           const Snapshot& q = s->snaps[k];
           nb.push_back(q.stats.n_broken), nr.push_back(q.stats.n_radial), na.push_back(q.stats.n_arms);
           no.push_back(q.stats.n_radial_reaching_outer), ns.push_back(q.stats.n_secondary);
+          nz.push_back(q.stats.n_secondary_sizable);
           fp.push_back(q.fp.mean_away), ph.push_back(q.p_h);
         }
         scatter.rows.push_back({b, fmt(ok.front()->snaps[k].t), mean_sd(nb), mean_sd(nr), mean_sd(na), mean_sd(no),
-                                mean_sd(ns), mean_sd(fp), mean_sd(ph)});
+                                mean_sd(ns), mean_sd(nz), mean_sd(fp), mean_sd(ph)});
       }
       std::vector<double> tf, pf, tp, pp;
       for (const RunOutcome* s : ok) tf.push_back(s->t_first), pf.push_back(s->p_first), tp.push_back(s->t_peak), pp.push_back(s->p_peak);

@@ -165,6 +165,10 @@ RunCase read_run_case(const std::filesystem::path& file) {
   o.vtk = out.get_bool("vtk", o.vtk);
   const long long bins = out.get_int("radial_bins", o.radial_bins);
   o.radial_max = out.get_double("radial_max", o.radial_max);
+  located(out, "", [&] {
+    o.fracture_link = lt::fracture_link_from_string(out.get_string("fracture_link", lt::to_string(o.fracture_link)),
+                                                    "fracture_link");
+  });
   out.reject_unknown();
   root.reject_unknown();
   if (bins < 1 || bins > 10000)
@@ -230,7 +234,8 @@ std::string run_case_to_toml(const RunCase& c, const std::string& provenance_tom
      << "\ncrack_tip = " << b(c.break_loop.crack_tip.enabled)
      << "\ncrack_tip_length = " << v(c.break_loop.crack_tip.material_length) << "\n\n"
      << "[output]\ntimes = " << list(c.output.times) << "\nvtk = " << b(c.output.vtk)
-     << "\nradial_bins = " << c.output.radial_bins << "\nradial_max = " << v(c.output.radial_max) << "\n\n"
+     << "\nradial_bins = " << c.output.radial_bins << "\nradial_max = " << v(c.output.radial_max)
+     << "\nfracture_link = \"" << lt::to_string(c.output.fracture_link) << "\"\n\n"
      << provenance_toml;
   return os.str();
 }

@@ -45,6 +45,7 @@ RunRecorder::RunRecorder(const std::filesystem::path& dir, const RunCase& c)
       r_min_(c.lattice.domain == lt::DomainShape::annulus ? c.lattice.inner_radius : 0.0),
       dir_(dir),
       fracture_(c.fracture_enabled),
+      statistics_options_{c.output.fracture_link},
       series_file_(dir / "series.csv"),
       radial_file_(dir / "radial.csv") {
   if (!series_file_ || !radial_file_) throw std::runtime_error("cannot write into " + dir.string());
@@ -86,7 +87,7 @@ void RunRecorder::record(const lt::CoupledModel& model, const lt::CoupledStepSum
     radial_->row({model.time(), f.r_mid[k], f.r_mean[k], static_cast<double>(f.n_triangles[k]), f.u_r[k], f.p[k]});
   if (fracture_)
     fractures_.push_back({model.time(), lt::compute_fracture_statistics(model.lattice(), model.mechanics().states(),
-                                                                         model.break_log())});
+                                                                         model.break_log(), statistics_options_)});
   if (vtk_) {
     lt::LatticeSnapshot snapshot;
     snapshot.time = model.time();

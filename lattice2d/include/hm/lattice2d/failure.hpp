@@ -117,4 +117,9 @@ BreakEvent make_break_event(const Lattice& lattice, const BreakCandidate& candid
 void write_break_log(const std::filesystem::path& path, const std::vector<BreakEvent>& events,
                      const std::string& load_column = "load");
 
+/// Reads a log written by write_break_log (any load column name; numbers as written, so 10
+/// significant digits). Throws std::runtime_error "<path>:<line>: ..." if the file cannot be read,
+/// its header is not write_break_log's, or a row is malformed.
+std::vector<BreakEvent> read_break_log(const std::filesystem::path& path);
+
 }  // namespace hm::lattice2d

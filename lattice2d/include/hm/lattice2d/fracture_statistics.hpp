@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Fracture statistics of a broken-beam pattern (issue #6): the broken beams grouped into fractures
-/// (clusters connected through shared Delaunay triangles, i.e. crack paths in the Voronoi dual), each
+/// (clusters of beams connected through shared particles, or only through shared triangles), each
 /// described by its size, radial extent, direction and failure modes, a per-snapshot summary (radial
 /// vs secondary fractures, radial arms crossing a circle) and CSV writers. Dimensionless lengths
 /// (over R), undeformed geometry, radii measured from the origin (the domain centre).
@@ -16,8 +16,24 @@
 
 namespace hm::lattice2d {
 
+/// When two broken beams belong to one fracture.
+enum class FractureLink {
+  /// They share a particle. Default: an en-echelon crack, whose broken beams step across a particle
+  /// with one intact beam between them, is one fracture, as it looks in a picture of broken beams
+  /// (at N = 1e5 the triangle rule cut the long radial cracks into thousands of pieces).
+  shared_particle,
+  /// They are edges of one Delaunay triangle: their Voronoi segments meet, a continuous crack face.
+  shared_triangle,
+};
+/// "particle" or "triangle".
+std::string to_string(FractureLink link);
+/// Inverse of to_string; throws hm::InputError "<key> = '<text>', allowed: particle, triangle".
+FractureLink fracture_link_from_string(const std::string& text, const std::string& key);
+
 /// Options of compute_fracture_statistics.
 struct FractureStatisticsOptions {
+  /// Which broken beams are connected (docs/fracture_statistics.md compares the two rules).
+  FractureLink link = FractureLink::shared_particle;
   /// Radius of the arm-counting circle as a fraction of the way from the borehole wall to the outer
   /// boundary: r = R_i + f (R_o - R_i) (R_i = 0 without a borehole; R_o = 1, or min(width, height)/2
   /// for a rectangle). Our choice 0.25: close enough to the wall that short radial cracks reach it,
@@ -29,6 +45,11 @@ struct FractureStatisticsOptions {
   /// about one beam length wide; 3 absorbs that and a slight crack inclination without merging cracks
   /// a few beams apart. Allowed: arm_gap_beams > 0.
   double arm_gap_beams = 3.0;
+  /// Secondary fractures at least this long (Fracture::extent, over R) are counted in
+  /// n_secondary_sizable. Our choice 0.05: visible in a picture of the whole domain (1/40 of its
+  /// width), whatever N; most secondary clusters at N = 1e5 are single broken beams (~0.005 long).
+  /// Allowed: sizable_extent >= 0.
+  double sizable_extent = 0.05;
 
   /// Throws hm::InputError "fracture_statistics.field = value, allowed: rule".
   void validate() const;
@@ -39,8 +60,7 @@ enum class FractureKind { radial, secondary };
 /// "radial" or "secondary".
 std::string to_string(FractureKind kind);
 
-/// One fracture: a cluster of broken beams, two of them connected when they are edges of the same
-/// triangle (their Voronoi segments meet at its dual point).
+/// One fracture: a connected cluster of broken beams (FractureStatisticsOptions::link).
 struct Fracture {
   int id = 0;                            ///< 0, 1, ... in order of the smallest beam index
   FractureKind kind = FractureKind::secondary;  ///< radial iff connected_to_borehole
@@ -51,6 +71,7 @@ struct Fracture {
   double r_max = 0.0;                    ///< largest radius of a beam midpoint
   double length = 0.0;                   ///< radial extent r_max - r_min (not the path length)
   double angle_deg = 0.0;                ///< atan2 of the mean unit midpoint direction, in [0, 360)
+  double extent = 0.0;                   ///< diagonal of the bounding box of the beam midpoints
   int n_tensile = 0;                     ///< beams whose break-log mode is tensile (0 without a log)
   int n_shear = 0;                       ///< beams whose break-log mode is shear (0 without a log)
 
@@ -65,6 +86,7 @@ struct FractureStatistics {
   int n_radial = 0;                  ///< fractures connected to the borehole
   int n_radial_reaching_outer = 0;   ///< radial fractures that also reach the outer boundary
   int n_secondary = 0;
+  int n_secondary_sizable = 0;       ///< secondary fractures with extent >= options.sizable_extent
   int n_tensile = 0;                 ///< summed over the fractures
   int n_shear = 0;
   double arm_radius = 0.0;           ///< radius of the arm-counting circle (options.arm_radius_fraction)
@@ -108,13 +130,13 @@ struct FractureSnapshot {
 
 /// Writes one row per fracture per snapshot, via a temporary file renamed into place. Columns:
 ///   t, fracture (id), kind (radial|secondary), n_beams, connected_to_borehole (0/1),
-///   reaches_outer (0/1), r_min, r_max, length, angle_deg, n_tensile, n_shear.
+///   reaches_outer (0/1), r_min, r_max, length, angle_deg, n_tensile, n_shear, extent.
 /// Numbers with 10 significant digits. Throws std::runtime_error naming the path if it cannot write.
 void write_fracture_table(const std::filesystem::path& path, const std::vector<FractureSnapshot>& snapshots);
 
 /// Writes one row per snapshot, via a temporary file renamed into place. Columns:
 ///   t, n_broken, n_fractures, n_radial, n_radial_reaching_outer, n_secondary, n_arms, n_tensile,
-///   n_shear, max_radial_extent.
+///   n_shear, max_radial_extent, n_secondary_sizable.
 /// Throws std::runtime_error naming the path if it cannot write.
 void write_fracture_summary(const std::filesystem::path& path, const std::vector<FractureSnapshot>& snapshots);
 

@@ -14,7 +14,7 @@
 ///   [fracture]   enabled, distribution ("none" | "uniform" | "weibull"), width, weibull_modulus,
 ///                correlated, seed (of the strengths), crack_tip, crack_tip_length (L_m over R);
 ///                the mean strengths and mu_i are [physics] tensile_strength, compressive_strength, friction
-///   [output]     times, vtk, radial_bins, radial_max
+///   [output]     times, vtk, radial_bins, radial_max, fracture_link ("particle" | "triangle")
 /// Every key is optional except where said; every default is the library struct's. Unknown keys are errors.
 #include <filesystem>
 #include <string>
@@ -23,6 +23,7 @@
 #include "hm/lattice2d/beam_stiffness.hpp"
 #include "hm/lattice2d/coupled_model.hpp"
 #include "hm/lattice2d/flow_network.hpp"
+#include "hm/lattice2d/fracture_statistics.hpp"
 #include "hm/lattice2d/lattice.hpp"
 #include "hm/lattice2d/mechanics.hpp"
 #include "hm/verification/case_file.hpp"
@@ -39,6 +40,8 @@ struct RunOutput {
   int radial_bins = 50;
   /// Outer edge of the radial shells. Allowed: R_i < radial_max <= 1.
   double radial_max = 1.0;
+  /// Which broken beams form one fracture in fractures.csv ("particle" or "triangle").
+  hm::lattice2d::FractureLink fracture_link = hm::lattice2d::FractureStatisticsOptions{}.link;
 };
 
 /// A fully read and validated 2D case.

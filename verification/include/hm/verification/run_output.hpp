@@ -19,7 +19,8 @@
 ///                  t_peak, p_h_peak (largest p_h of the run), n_broken (at the end); NaN where nothing
 ///                  broke. The breakdown pressure of Section 3.5 is p_h_first_break (and the peak if later);
 ///   fractures.csv  per output time, one row per fracture (clusters of broken beams through shared
-///                  triangles, fracture_statistics.hpp): kind radial|secondary, extent, angle, modes;
+///                  particles, or triangles: [output] fracture_link; fracture_statistics.hpp): kind
+///                  radial|secondary, extent, angle, modes;
 ///   fracture_summary.csv  per output time: counts of fractures, radial ones, those reaching the outer
 ///                  boundary, secondary ones, arms crossing r = R_i + (1 - R_i)/4, tensile/shear breaks.
 #include <filesystem>
@@ -50,6 +51,7 @@ class RunRecorder {
   double r_min_ = 0.0;
   std::filesystem::path dir_;
   bool fracture_ = false;
+  hm::lattice2d::FractureStatisticsOptions statistics_options_;
   // Breakdown (Section 3.5): first break and peak borehole pressure.
   double last_p_h_ = 0.0;
   double t_first_ = std::numeric_limits<double>::quiet_NaN(), p_before_ = t_first_, p_first_ = t_first_;

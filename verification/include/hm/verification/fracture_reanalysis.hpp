@@ -1,0 +1,29 @@
+#pragma once
+/// \file
+/// Fracture statistics of a finished run, recomputed from its files (`hmlattice fractures`): a rule
+/// of fracture_statistics.hpp changes without re-running a case that took an hour.
+#include <filesystem>
+#include <string>
+
+#include "hm/lattice2d/fracture_statistics.hpp"
+
+namespace hm::verification {
+
+/// What recompute_fracture_statistics found.
+struct FractureReanalysis {
+  int n_snapshots = 0;  ///< rows of fracture_summary.csv
+  int n_breaks = 0;     ///< events of breaks.csv
+};
+
+/// Rewrites fractures.csv and fracture_summary.csv of the run in `run_dir` (written by
+/// `hmlattice run` with fracture enabled) with the fractures joined by `link`: the lattice is rebuilt
+/// from its config.toml, a snapshot at time t holds the beams of breaks.csv logged at a time <= t,
+/// and the snapshot times are those of the old fracture_summary.csv. config.toml's [output]
+/// fracture_link becomes `link` ([provenance] kept, the command added as a comment). Every file is
+/// replaced atomically, after everything has been read and computed.
+/// Throws hm::InputError naming the folder or file if run_dir is not such a run, std::runtime_error
+/// "<file>:<line>: ..." if a file is damaged.
+FractureReanalysis recompute_fracture_statistics(const std::filesystem::path& run_dir, hm::lattice2d::FractureLink link,
+                                                 const std::string& command_line);
+
+}  // namespace hm::verification

@@ -1,0 +1,105 @@
+#include "hm/verification/fracture_reanalysis.hpp"
+
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include "hm/analytic/input_error.hpp"
+#include "hm/lattice2d/failure.hpp"
+#include "hm/lattice2d/lattice.hpp"
+#include "hm/lattice2d/vtk_writer.hpp"
+#include "hm/verification/provenance.hpp"
+#include "hm/verification/run_case.hpp"
+
+namespace hm::verification {
+
+namespace lt = hm::lattice2d;
+
+namespace {
+
+std::string text_of(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error("cannot read " + file.string());
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// The t column of a fracture_summary.csv.
+std::vector<double> snapshot_times(const std::filesystem::path& file) {
+  std::istringstream in(text_of(file));
+  std::string line;
+  std::getline(in, line);
+  if (line.rfind("t,n_broken,", 0) != 0) throw std::runtime_error(file.string() + ":1: not a fracture summary");
+  std::vector<double> times;
+  for (int line_no = 2; std::getline(in, line); ++line_no) {
+    if (line.empty()) continue;
+    try {
+      times.push_back(std::stod(line.substr(0, line.find(','))));
+    } catch (const std::logic_error&) {
+      throw std::runtime_error(file.string() + ":" + std::to_string(line_no) + ": no time in '" + line + "'");
+    }
+  }
+  return times;
+}
+
+// The run's [provenance] table and the notes of earlier reanalyses above it.
+std::string provenance_part(const std::string& config) {
+  const std::string note = "# fracture statistics recomputed";
+  std::size_t at = config.find("\n" + note);
+  if (at == std::string::npos) at = config.find("\n[provenance]");
+  return at == std::string::npos ? std::string() : config.substr(at + 1);
+}
+
+}  // namespace
+
+FractureReanalysis recompute_fracture_statistics(const std::filesystem::path& run_dir, lt::FractureLink link,
+                                                 const std::string& command_line) {
+  for (const char* name : {"config.toml", "breaks.csv", "fracture_summary.csv"})
+    if (!std::filesystem::is_regular_file(run_dir / name))
+      throw InputError("run folder = " + run_dir.string() + " has no " + name +
+                       ", allowed: the output folder of `hmlattice run` with [fracture] enabled");
+  RunCase c = read_run_case(run_dir / "config.toml");
+  if (!c.fracture_enabled)
+    throw InputError("run folder = " + run_dir.string() + ": [fracture] enabled = false in its config.toml");
+  const std::vector<lt::BreakEvent> log = lt::read_break_log(run_dir / "breaks.csv");
+  const std::vector<double> times = snapshot_times(run_dir / "fracture_summary.csv");
+
+  const lt::Lattice lattice = lt::generate_lattice(c.lattice);
+  lt::FractureStatisticsOptions options;
+  options.link = link;
+  // The log names each beam's particles: a lattice that differs from the run's (another version of
+  // the generator, an edited config) is caught here instead of giving wrong statistics.
+  for (const lt::BreakEvent& ev : log) {
+    const bool known = ev.beam >= 0 && ev.beam < lattice.n_beams();
+    const std::array<int, 2> ends = known ? lattice.beams[static_cast<std::size_t>(ev.beam)] : std::array<int, 2>{-1, -1};
+    if (ends[0] != ev.particle_i || ends[1] != ev.particle_j)
+      throw std::runtime_error((run_dir / "breaks.csv").string() + ": beam " + std::to_string(ev.beam) + " joins particles " +
+                               std::to_string(ev.particle_i) + "-" + std::to_string(ev.particle_j) +
+                               " in the log but not in the lattice of config.toml; was the run made by another version?");
+  }
+  std::vector<lt::FractureSnapshot> snapshots;
+  for (double t : times) {
+    // Times are written with 10 digits in both files; the margin absorbs the last digit.
+    std::vector<bool> broken(static_cast<std::size_t>(lattice.n_beams()), false);
+    for (const lt::BreakEvent& ev : log)
+      if (ev.load <= t + 1e-9 * std::abs(t)) broken[static_cast<std::size_t>(ev.beam)] = true;
+    snapshots.push_back({t, lt::compute_fracture_statistics(lattice, broken, log, options)});
+  }
+
+  c.output.fracture_link = link;
+  const std::string provenance = provenance_part(text_of(run_dir / "config.toml"));
+  const std::string config =
+      run_case_to_toml(c, "# fracture statistics recomputed with fracture_link = \"" + lt::to_string(link) +
+                              "\" by: " + command_line + " (" + make_provenance(command_line).utc_time + ")\n" +
+                              provenance);
+  lt::write_fracture_table(run_dir / "fractures.csv", snapshots);
+  lt::write_fracture_summary(run_dir / "fracture_summary.csv", snapshots);
+  lt::write_file_atomically(run_dir / "config.toml", [&](std::ostream& out) { out << config; });
+  return {static_cast<int>(snapshots.size()), static_cast<int>(log.size())};
+}
+
+}  // namespace hm::verification
