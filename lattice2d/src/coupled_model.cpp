@@ -36,6 +36,16 @@ CouplingRelaxation coupling_relaxation_from_string(std::string_view name) {
   throw hm::InputError("coupling.relaxation = '" + std::string(name) + "', allowed: none, aitken, anderson");
 }
 
+std::string to_string(FractureCheck check) {
+  return check == FractureCheck::every_pass ? "every_pass" : "at_convergence";
+}
+
+FractureCheck fracture_check_from_string(std::string_view name) {
+  if (name == "every_pass") return FractureCheck::every_pass;
+  if (name == "at_convergence") return FractureCheck::at_convergence;
+  throw hm::InputError("coupling.fracture_check = '" + std::string(name) + "', allowed: every_pass, at_convergence");
+}
+
 std::string to_string(CoupledStatus status) {
   switch (status) {
     case CoupledStatus::converged: return "converged";
@@ -175,31 +185,38 @@ CoupledStepSummary CoupledModel::step(double dt) {
   AndersonAcceleration anderson(options_.anderson_depth, options_.initial_relaxation);
   double u_scale = 1.0;
   bool u_scaled = false;
-  for (int k = 1; k <= options_.max_iterations; ++k) {
+  const bool check_every_pass = fracture_ && options_.fracture_check == FractureCheck::every_pass;
+  // Runs the break loop at the current forces; false (and the summary says why) if it failed.
+  const auto break_beams = [&](int pass, int& n_breaks) {
+    const BreakLoopSummary bs = break_until_stable(*mechanics_, reference_dual_, fracture_->strengths,
+                                                   fracture_->options, summary.time, break_log_);
+    summary.mechanics_seconds += bs.solve_seconds;
+    summary.stress_seconds += bs.stress_seconds;
+    summary.break_seconds += bs.break_seconds;
+    summary.n_mechanics_solves += bs.n_solves;
+    n_breaks = bs.n_breaks;
+    summary.n_breaks += bs.n_breaks;
+    if (!bs.is_stable()) {
+      summary.status = CoupledStatus::solver_failure;
+      summary.message = "break loop at t = " + hm::analytic::format_value(summary.time) + ", pass " +
+                        std::to_string(pass) + ": " + to_string(bs.status) + " " + bs.message;
+      return false;
+    }
+    if (n_breaks > 0) flow_->set_broken(broken_flags(mechanics_->states()));
+    return true;
+  };
+  int last_break_pass = 0;  // at_convergence: max_iterations counts from here
+  for (int k = 1; k - last_break_pass <= options_.max_iterations; ++k) {
     summary.iterations = k;
     // 1. Mechanics with the current pressure guess (Eq. 17) and the undrained predictor (Eq. 20).
     Eigen::VectorXd f = pressure_forces(l, reference_dual_, p_guess, coupling_);
     if (coupling_.psi > 0.0) f += spring_preload(l, springs_, u_prev);
     mechanics_->set_external_forces(f);
     int breaks_this_pass = 0;
-    if (fracture_) {
+    if (check_every_pass) {
       // Solve, then break one beam at a time until none fails (the stresses of the effective, i.e.
       // beam, forces; V_i of the undeformed dual like the rest of the linear mechanics).
-      const BreakLoopSummary bs = break_until_stable(*mechanics_, reference_dual_, fracture_->strengths,
-                                                     fracture_->options, summary.time, break_log_);
-      summary.mechanics_seconds += bs.solve_seconds;
-      summary.stress_seconds += bs.stress_seconds;
-      summary.break_seconds += bs.break_seconds;
-      summary.n_mechanics_solves += bs.n_solves;
-      breaks_this_pass = bs.n_breaks;
-      summary.n_breaks += bs.n_breaks;
-      if (!bs.is_stable()) {
-        summary.status = CoupledStatus::solver_failure;
-        summary.message = "break loop at t = " + hm::analytic::format_value(summary.time) + ", pass " +
-                          std::to_string(k) + ": " + to_string(bs.status) + " " + bs.message;
-        break;
-      }
-      if (breaks_this_pass > 0) flow_->set_broken(broken_flags(mechanics_->states()));
+      if (!break_beams(k, breaks_this_pass)) break;
     } else {
       const MechanicsSummary ms = mechanics_->solve();
       summary.mechanics_seconds += ms.solve_seconds;
@@ -239,7 +256,7 @@ CoupledStepSummary CoupledModel::step(double dt) {
     // path, not the fixed point; it tames the borehole's feedback (docs/coupling.md, section 3).
     if (options_.relaxation == CouplingRelaxation::aitken) {
       const Eigen::VectorXd r = p - p_guess;
-      if (k == 1 || breaks_this_pass > 0) {
+      if (k == 1 || breaks_this_pass > 0 || k == last_break_pass + 1) {
         // A break changed the system: the last residual belongs to another map, start afresh.
         omega = options_.initial_relaxation;
       } else {
@@ -272,6 +289,18 @@ CoupledStepSummary CoupledModel::step(double dt) {
     if (options_.relaxation != CouplingRelaxation::anderson) u_prev = u;
     if (breaks_this_pass == 0 && summary.pressure_residual <= options_.pressure_tolerance &&
         summary.displacement_residual <= options_.displacement_tolerance) {
+      if (fracture_ && !check_every_pass) {
+        // A coupled equilibrium: break what fails under its forces, then converge again from the
+        // broken state (springs relaxed there, a fresh Anderson history: the map changed).
+        int n_breaks = 0;
+        if (!break_beams(k, n_breaks)) break;
+        if (n_breaks > 0) {
+          u_prev = mechanics_->displacement();
+          anderson.reset();
+          last_break_pass = k;  // Aitken restarts at the next pass
+          continue;
+        }
+      }
       converged = true;
       break;
     }

@@ -51,6 +51,8 @@ TEST_CASE("Bad 2D cases are rejected with one line naming table, key, value and 
   rejected(physics + "[lattice]\nstiffness_scaling = \"facet\"\n",
            "case.toml: [lattice] stiffness_scaling = 'facet', allowed: uniform, voronoi_facet");
   rejected(physics + "[lattice]\nboundary_spacing_factor = 2\n", "case.toml: [lattice] boundary_spacing_factor = 2, allowed: ");
+  rejected(physics + "[coupling]\nfracture_check = \"sometimes\"\n",
+           "case.toml: [coupling] fracture_check = 'sometimes', allowed: every_pass, at_convergence");
   rejected(physics + "[output]\nfracture_link = \"beam\"\n",
            "case.toml: [output] fracture_link = 'beam', allowed: particle, triangle");
   rejected(physics + "[mechanics]\nouter = \"clamped\"\n", "case.toml: [mechanics] outer = 'clamped', allowed: free, fixed");

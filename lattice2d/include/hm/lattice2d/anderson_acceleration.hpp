@@ -29,6 +29,7 @@ class AndersonAcceleration {
   int depth_;
   double mixing_;
   std::deque<Eigen::VectorXd> dx_, dr_;  // x_k - x_{k-1}, r_k - r_{k-1}, newest last
+  Eigen::MatrixXd gram_;                 // dr_i . dr_j
   Eigen::VectorXd x_prev_, r_prev_;
   bool has_prev_ = false;
 };

@@ -47,6 +47,21 @@ std::string to_string(CouplingRelaxation relaxation);
 /// Inverse of to_string; throws hm::InputError "coupling.relaxation = 'x', allowed: none, aitken, anderson".
 CouplingRelaxation coupling_relaxation_from_string(std::string_view name);
 
+/// When the coupling loop looks for failing beams (with fracture enabled).
+enum class FractureCheck {
+  /// After every pass's mechanical solve (the paper's Fig. 5): beams can break on an unconverged
+  /// iterate, so the pattern depends a little on the iteration's path (docs/coupling.md, section 6).
+  every_pass,
+  /// Only once the passes have converged without breaking; after breaks the loop converges again
+  /// and checks again, until a converged state breaks nothing. Our addition: breaks are decided on
+  /// coupled equilibria only.
+  at_convergence,
+};
+/// "every_pass" or "at_convergence".
+std::string to_string(FractureCheck check);
+/// Inverse of to_string; throws hm::InputError "coupling.fracture_check = 'x', allowed: every_pass, at_convergence".
+FractureCheck fracture_check_from_string(std::string_view name);
+
 /// Options of the coupling iteration (Fig. 5). Every default is set here.
 struct CouplingOptions {
   /// The split. Default undrained (the paper's primary scheme).
@@ -63,8 +78,11 @@ struct CouplingOptions {
   /// ... and max|u^k - u^{k-1}| <= displacement_tolerance * max|u^k| (x, y components). Our choice 1e-6.
   /// Allowed: 0 < displacement_tolerance < 1.
   double displacement_tolerance = 1e-6;
-  /// Cap on the mechanics -> flow iterations of one step. Allowed: >= 1.
+  /// Cap on the mechanics -> flow iterations of one step (with fracture_check = at_convergence: since
+  /// the last breaks). Allowed: >= 1.
   int max_iterations = 100;
+  /// When beams are checked for failure. Default every_pass (the paper's Fig. 5).
+  FractureCheck fracture_check = FractureCheck::every_pass;
   /// Relaxation of the pressure guess between passes. Default none (the paper's loop). Our addition for
   /// the borehole, whose stiff feedback makes the plain loop diverge (docs/coupling.md, section 3).
   CouplingRelaxation relaxation = CouplingRelaxation::none;
