@@ -57,6 +57,8 @@ void FlowParameters::validate() const {
   if (!(refinement_tolerance > 0.0 && refinement_tolerance < 1e-6))
     throw InputError("refinement_tolerance = " + format_value(refinement_tolerance) + ", allowed: 0 < value < 1e-6");
   if (max_refinements < 1) throw InputError("max_refinements = " + std::to_string(max_refinements) + ", allowed: >= 1");
+  if (refresh_after_refinements < 0)
+    throw InputError("refresh_after_refinements = " + std::to_string(refresh_after_refinements) + ", allowed: >= 0");
   if (borehole_storage != BoreholeStorage::biot_modulus && borehole_storage != BoreholeStorage::none)
     throw InputError("borehole_storage = " + std::to_string(static_cast<int>(borehole_storage)) +
                      ", allowed: biot-modulus, none");
@@ -260,11 +262,12 @@ std::string FlowNetwork::factorise(double dt) {
   const std::string error = solver_->factorise(solver_->factorisation, solver_->matrix, values);
   factorised_dt_ = error.empty() ? dt : -1.0;
   factor_stale_ = false;
+  refresh_factor_ = false;
   return error;
 }
 
 std::string FlowNetwork::factorise_if_needed(double dt) {
-  if (factorised_dt_ == dt && (!factor_stale_ || parameters_.reuse_factorisation)) {
+  if (factorised_dt_ == dt && (!factor_stale_ || (parameters_.reuse_factorisation && !refresh_factor_))) {
     if (factor_stale_) {  // the current matrix for the refinement's residuals; the factor stays
       Eigen::VectorXd values;
       assemble_values(dt, 1.0, values);
@@ -324,6 +327,7 @@ FlowStepSummary FlowNetwork::solve(double dt, const Eigen::VectorXd& volume_chan
       direction = z + (rz_next / rz) * direction;
       rz = rz_next;
     }
+    refresh_factor_ = summary.refinements > parameters_.refresh_after_refinements;
     if (!(residual.norm() <= target)) {  // too far from the factor: a fresh one
       summary.message = factorise(dt);
       if (!summary.message.empty()) return summary;

@@ -12,6 +12,7 @@
 
 #include <Eigen/Dense>
 
+#include "hm/analytic/input_error.hpp"
 #include "hm/lattice2d/flow_network.hpp"
 #include "lattice2d/lattice_fixtures.hpp"
 
@@ -154,4 +155,48 @@ TEST_CASE("reuse_factorisation: CG on the new matrix, preconditioned by the old 
   CHECK(summary.refinements >= 1);
   // ||rhs - A p|| <= 1e-10 ||rhs|| (refinement_tolerance), times the condition number: measured 3e-10.
   CHECK(relative_difference(network.pressure(), reference) <= 1e-8);
+}
+
+TEST_CASE("reuse_factorisation: a solve slower than refresh_after_refinements refactorises at the next one",
+          "[lattice2d][flow]") {
+  const Lattice lattice = make_lattice(DomainShape::annulus, 600);
+  DualGraph dual = build_dual_graph(lattice);
+  FlowParameters parameters;
+  parameters.b = 0.2;
+  parameters.iota = 5.0;
+  parameters.reuse_factorisation = true;
+  parameters.refresh_after_refinements = 0;  // any refinement at all asks for a fresh factor
+  FlowNetwork network(lattice, dual, parameters);
+  const double dt = 1e-4;
+  REQUIRE(network.step(dt).is_ok());
+  crack_and_deform(lattice, network, dual, 50, 1e-5);
+  const FlowStepSummary refined = network.step(dt);
+  REQUIRE(refined.is_ok());
+  CHECK_FALSE(refined.factorised);
+  REQUIRE(refined.refinements >= 1);  // > 0 = refresh_after_refinements
+  crack_and_deform(lattice, network, dual, 50, 2e-5);  // the geometry moves again
+  const Eigen::VectorXd reference = dense_step(lattice, dual, network, dt, Eigen::VectorXd::Zero(network.n_unknowns()));
+  const FlowStepSummary refreshed = network.step(dt);
+  REQUIRE(refreshed.is_ok());
+  CHECK(refreshed.factorised);  // refactorised, not refined
+  CHECK(refreshed.refinements == 0);
+  CHECK(relative_difference(network.pressure(), reference) <= 1e-10);
+  // The default (4) keeps the factor while the refinement is fast: with iota = 1 (the Fig. 12 cases) a
+  // break changes no conductance, and the 1e-5 moves need 1-4 iterations; a second move is refined too.
+  FlowParameters lenient = parameters;
+  lenient.iota = 1.0;
+  lenient.refresh_after_refinements = FlowParameters{}.refresh_after_refinements;
+  DualGraph kept_dual = build_dual_graph(lattice);
+  FlowNetwork kept(lattice, kept_dual, lenient);
+  REQUIRE(kept.step(dt).is_ok());
+  crack_and_deform(lattice, kept, kept_dual, 50, 1e-5);
+  const FlowStepSummary first = kept.step(dt);
+  REQUIRE(first.refinements >= 1);
+  REQUIRE(first.refinements <= lenient.refresh_after_refinements);
+  crack_and_deform(lattice, kept, kept_dual, 50, 2e-5);
+  const FlowStepSummary second = kept.step(dt);
+  CHECK_FALSE(second.factorised);
+  CHECK(second.refinements >= 1);
+  parameters.refresh_after_refinements = -1;
+  CHECK_THROWS_AS(parameters.validate(), hm::InputError);
 }

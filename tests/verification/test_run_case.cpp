@@ -51,6 +51,8 @@ TEST_CASE("Bad 2D cases are rejected with one line naming table, key, value and 
   rejected(physics + "[lattice]\nstiffness_scaling = \"facet\"\n",
            "case.toml: [lattice] stiffness_scaling = 'facet', allowed: uniform, voronoi_facet");
   rejected(physics + "[lattice]\nboundary_spacing_factor = 2\n", "case.toml: [lattice] boundary_spacing_factor = 2, allowed: ");
+  rejected(physics + "[flow]\nrefresh_after_refinements = -2\n",
+           "case.toml: [flow] refresh_after_refinements = -2, allowed: 0 ... 1000000");
   rejected(physics + "[coupling]\nfracture_check = \"sometimes\"\n",
            "case.toml: [coupling] fracture_check = 'sometimes', allowed: every_pass, at_convergence");
   rejected(physics + "[output]\nfracture_link = \"beam\"\n",

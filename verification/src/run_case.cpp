@@ -41,6 +41,7 @@ lt::FlowParameters RunCase::flow_parameters() const {
   flow.borehole_storage = borehole_storage;
   flow.borehole_deformation = borehole_deformation;
   flow.reuse_factorisation = reuse_flow_factorisation;
+  flow.refresh_after_refinements = flow_refresh_after_refinements;
   return flow;
 }
 
@@ -93,6 +94,10 @@ RunCase read_run_case(const std::filesystem::path& file) {
     c.borehole_storage = lt::borehole_storage_from_string(flow.get_string("borehole_storage", "biot-modulus"));
     c.borehole_deformation = lt::borehole_deformation_from_string(flow.get_string("borehole_deformation", "biot"));
     c.reuse_flow_factorisation = flow.get_bool("reuse_factorisation", c.reuse_flow_factorisation);
+    const long long refresh = flow.get_int("refresh_after_refinements", c.flow_refresh_after_refinements);
+    if (refresh < 0 || refresh > 1000000)
+      throw InputError("refresh_after_refinements = " + std::to_string(refresh) + ", allowed: 0 ... 1000000");
+    c.flow_refresh_after_refinements = static_cast<int>(refresh);
     flow.reject_unknown();
   });
 
@@ -221,7 +226,8 @@ std::string run_case_to_toml(const RunCase& c, const std::string& provenance_tom
      << "[mechanics]\nouter = \"" << lt::to_string(c.boundary.outer) << "\"\nsolver = \""
      << lt::to_string(c.mechanics.solver) << "\"\n\n"
      << "[flow]\nborehole_storage = \"" << lt::to_string(c.borehole_storage) << "\"\nborehole_deformation = \""
-     << lt::to_string(c.borehole_deformation) << "\"\nreuse_factorisation = " << b(c.reuse_flow_factorisation) << "\n\n"
+     << lt::to_string(c.borehole_deformation) << "\"\nreuse_factorisation = " << b(c.reuse_flow_factorisation)
+     << "\nrefresh_after_refinements = " << c.flow_refresh_after_refinements << "\n\n"
      << "[coupling]\nsplit = \"" << lt::to_string(o.split) << "\"\npsi = " << v(o.psi) << "\nxi = " << v(o.xi)
      << "\npressure_tolerance = " << v(o.pressure_tolerance) << "\ndisplacement_tolerance = "
      << v(o.displacement_tolerance) << "\nmax_iterations = " << o.max_iterations

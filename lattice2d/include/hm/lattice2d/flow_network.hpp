@@ -69,6 +69,12 @@ struct FlowParameters {
   double refinement_tolerance = 1e-10;
   /// Iterations before falling back to a refactorisation. Our choice 20. Allowed: >= 1.
   int max_refinements = 20;
+  /// With reuse_factorisation: a solve that needed more iterations than this refactorises at the next
+  /// solve, so the factor follows the geometry instead of aging until max_refinements. Our choice 4:
+  /// the Fig. 12 run at N = 1e4 spends 12.4 s in the flow refactorising every pass, 10.2 s reusing with
+  /// no refresh (the old factor ages: ~8 iterations), 7.8 / 6.5 / 7.8 s with 2 / 4 / 8 (same breaks in
+  /// the same order; volume balance <= 5e-12). Allowed: >= 0.
+  int refresh_after_refinements = 4;
   /// Borehole deformation term (Eq. 16). Default: the paper's Eq. 16. With borehole_storage = none
   /// and this = none the borehole node is the 1D model's flux boundary; see docs/flow.md.
   BoreholeDeformation borehole_deformation = BoreholeDeformation::biot;
@@ -249,6 +255,7 @@ class FlowNetwork {
   std::unique_ptr<Solver> solver_;
   double factorised_dt_ = -1.0;  // dt of the current numeric factorisation; < 0: none
   bool factor_stale_ = false;    // geometry or iota changed since: refine with the old factor
+  bool refresh_factor_ = false;  // the last refinement was slow: refactorise at the next solve
 };
 
 }  // namespace hm::lattice2d

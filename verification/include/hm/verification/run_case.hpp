@@ -6,7 +6,7 @@
 ///                stiffness_scaling ("voronoi_facet" | "uniform": the calibrated beams of that scaling)
 ///   [mechanics]  outer ("free" | "fixed"), solver ("cholmod" | "pcg")
 ///   [flow]       borehole_storage ("biot-modulus" | "none"), borehole_deformation ("biot" | "none"),
-///                reuse_factorisation
+///                reuse_factorisation, refresh_after_refinements
 ///   [coupling]   split ("undrained" | "drained"), psi, xi, pressure_tolerance, displacement_tolerance,
 ///                max_iterations, accept_unconverged, relaxation ("none" | "aitken" | "anderson"), initial_relaxation,
 ///                anderson_depth, fracture_check ("every_pass" | "at_convergence")
@@ -55,6 +55,7 @@ struct RunCase {
   hm::lattice2d::BoreholeStorage borehole_storage = hm::lattice2d::BoreholeStorage::biot_modulus;
   hm::lattice2d::BoreholeDeformation borehole_deformation = hm::lattice2d::BoreholeDeformation::biot;
   bool reuse_flow_factorisation = hm::lattice2d::FlowParameters{}.reuse_factorisation;
+  int flow_refresh_after_refinements = hm::lattice2d::FlowParameters{}.refresh_after_refinements;
   hm::lattice2d::CouplingOptions coupling;
   hm::lattice2d::TimeStepping stepping;         ///< output times from [output] times
   bool fracture_enabled = false;
