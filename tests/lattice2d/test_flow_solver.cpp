@@ -81,6 +81,16 @@ void crack_and_deform(const Lattice& lattice, FlowNetwork& network, DualGraph& d
   network.update_geometry(dual, positions);
 }
 
+// The reuse_factorisation tests' flow: b = 0.2, broken segments 5x as conductive (so breaks change the
+// matrix), the factor kept across geometry changes.
+FlowParameters reusing_parameters() {
+  FlowParameters parameters;
+  parameters.b = 0.2;
+  parameters.iota = 5.0;
+  parameters.reuse_factorisation = true;
+  return parameters;
+}
+
 }  // namespace
 
 TEST_CASE("The flow network's sparse factorisation agrees with a dense solve to round-off", "[lattice2d][flow]") {
@@ -138,10 +148,7 @@ TEST_CASE("reuse_factorisation: CG on the new matrix, preconditioned by the old 
           "[lattice2d][flow]") {
   const Lattice lattice = make_lattice(DomainShape::annulus, 600);
   DualGraph dual = build_dual_graph(lattice);
-  FlowParameters parameters;
-  parameters.b = 0.2;
-  parameters.iota = 5.0;
-  parameters.reuse_factorisation = true;
+  const FlowParameters parameters = reusing_parameters();
   FlowNetwork network(lattice, dual, parameters);
   const double dt = 1e-4;
   REQUIRE(network.step(dt).is_ok());
@@ -161,10 +168,7 @@ TEST_CASE("reuse_factorisation: a solve slower than refresh_after_refinements re
           "[lattice2d][flow]") {
   const Lattice lattice = make_lattice(DomainShape::annulus, 600);
   DualGraph dual = build_dual_graph(lattice);
-  FlowParameters parameters;
-  parameters.b = 0.2;
-  parameters.iota = 5.0;
-  parameters.reuse_factorisation = true;
+  FlowParameters parameters = reusing_parameters();
   parameters.refresh_after_refinements = 0;  // any refinement at all asks for a fresh factor
   FlowNetwork network(lattice, dual, parameters);
   const double dt = 1e-4;
