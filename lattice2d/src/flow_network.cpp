@@ -8,10 +8,12 @@
 #include <utility>
 
 #include <Eigen/CholmodSupport>
+
 #include <Eigen/SparseCore>
 
 #include "hm/analytic/input_error.hpp"
 #include "hm/analytic/validation.hpp"
+#include "subtree_solve.hpp"
 
 namespace hm::lattice2d {
 
@@ -90,12 +92,24 @@ FlowParameters flow_parameters_of(const hm::analytic::DimensionlessParameters& p
 // symmetry handling; the factorisation reads the lower half.
 struct FlowNetwork::Solver {
   using Matrix = Eigen::SparseMatrix<double>;
-  using Factorisation = Eigen::CholmodSimplicialLDLT<Matrix, Eigen::Lower>;
+  // Eigen's wrapper, opened to hand its CHOLMOD factor to SubtreeSolve.
+  struct Factorisation : Eigen::CholmodSimplicialLDLT<Matrix, Eigen::Lower> {
+    const cholmod_factor& factor() const { return *m_cholmodFactor; }
+  };
 
   Matrix matrix;
   std::vector<int> diagonal_slot;                // value index of (k, k)
   std::vector<std::array<int, 4>> connection_slot;  // (s,s), (t,t), (s,t), (t,s); -1 where absent
   Factorisation factorisation;
+  SubtreeSolve subtree;
+
+  // factorisation.solve(b), with the triangular solves on all threads (bitwise the same x on any
+  // number of them; subtree_solve.hpp): the flow's share of a run halves with the mechanics'.
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) {
+    Eigen::VectorXd x(b.size());
+    subtree.solve(factorisation.factor(), b.data(), x.data());
+    return x;
+  }
 
   // Ordering and symbolic analysis on `matrix`'s pattern (once).
   void analyse(Factorisation& f) const {
@@ -304,7 +318,7 @@ FlowStepSummary FlowNetwork::solve(double dt, const Eigen::VectorXd& volume_chan
   rhs[has_borehole_ ? n_triangles_ : source_triangle_] += summary.injected;
 
   summary.factorised = !factor_current && !factor_stale_;
-  trial_pressure_ = solver_->factorisation.solve(rhs);
+  trial_pressure_ = solver_->solve(rhs);
   if (factor_stale_) {
     // Conjugate gradients on the current matrix, preconditioned by the last factor
     // (reuse_factorisation). Measured on a fracturing annulus (N = 1e4): ~8 iterations per solve at
@@ -313,7 +327,7 @@ FlowStepSummary FlowNetwork::solve(double dt, const Eigen::VectorXd& volume_chan
     const double target = parameters_.refinement_tolerance * rhs.norm();
     const auto& A = solver_->matrix;
     Eigen::VectorXd residual = rhs - A * trial_pressure_;
-    Eigen::VectorXd z = solver_->factorisation.solve(residual);
+    Eigen::VectorXd z = solver_->solve(residual);
     Eigen::VectorXd direction = z;
     double rz = residual.dot(z);
     while (residual.norm() > target && summary.refinements < parameters_.max_refinements) {
@@ -322,7 +336,7 @@ FlowStepSummary FlowNetwork::solve(double dt, const Eigen::VectorXd& volume_chan
       trial_pressure_ += alpha * direction;
       residual -= alpha * Ad;
       ++summary.refinements;
-      z = solver_->factorisation.solve(residual);
+      z = solver_->solve(residual);
       const double rz_next = residual.dot(z);
       direction = z + (rz_next / rz) * direction;
       rz = rz_next;
@@ -332,7 +346,7 @@ FlowStepSummary FlowNetwork::solve(double dt, const Eigen::VectorXd& volume_chan
       summary.message = factorise(dt);
       if (!summary.message.empty()) return summary;
       summary.factorised = true;
-      trial_pressure_ = solver_->factorisation.solve(rhs);
+      trial_pressure_ = solver_->solve(rhs);
     }
   }
   if (solver_->factorisation.info() != Eigen::Success || !trial_pressure_.allFinite()) {

@@ -69,6 +69,11 @@ struct SpdSolverOptions {
   /// modification (cholmod_updown_solve); a re-solve with the same b then needs only the backward
   /// half (D L^T x = y), about half the solve. Our choice by measurement (docs/lattice.md).
   bool reuse_forward_solve = true;
+  /// With reuse_forward_solve: do the two triangular solves on all OpenMP threads (OMP_NUM_THREADS),
+  /// the elimination tree cut into independent subtrees; false uses CHOLMOD's one-thread solves.
+  /// The result does not depend on the number of threads (bitwise). Our choice by measurement
+  /// (docs/lattice.md).
+  bool parallel_triangular_solve = true;
 
   // --- PcgSolver ---------------------------------------------------------------------------------
   /// Preconditioner of PcgSolver. Our choice: incomplete Cholesky (2.4x fewer iterations than Jacobi
@@ -154,6 +159,7 @@ class CholmodSolver final : public SpdSolver {
   double factor_nonzeros() const;
 
  private:
+  Eigen::VectorXd parallel_solve(const Eigen::VectorXd& b);  // options_.parallel_triangular_solve
   struct Impl;
   std::unique_ptr<Impl> impl_;
   SpdSolverOptions options_;
