@@ -36,6 +36,16 @@ CouplingRelaxation coupling_relaxation_from_string(std::string_view name) {
   throw hm::InputError("coupling.relaxation = '" + std::string(name) + "', allowed: none, aitken, anderson");
 }
 
+std::string to_string(CouplingPredictor predictor) {
+  return predictor == CouplingPredictor::previous ? "previous" : "linear";
+}
+
+CouplingPredictor coupling_predictor_from_string(std::string_view name) {
+  if (name == "previous") return CouplingPredictor::previous;
+  if (name == "linear") return CouplingPredictor::linear;
+  throw hm::InputError("coupling.predictor = '" + std::string(name) + "', allowed: previous, linear");
+}
+
 std::string to_string(FractureCheck check) {
   return check == FractureCheck::every_pass ? "every_pass" : "at_convergence";
 }
@@ -178,6 +188,11 @@ CoupledStepSummary CoupledModel::step(double dt) {
   const Lattice& l = lattice();
   Eigen::VectorXd p_guess = flow_->pressure();  // p^n: the drained split's frozen pressure
   Eigen::VectorXd u_prev = displacement_;       // u^n: where the springs are relaxed at the first pass
+  if (options_.predictor == CouplingPredictor::linear && previous_dt_ > 0.0) {
+    const double ratio = dt / previous_dt_;
+    p_guess += ratio * (flow_->pressure() - previous_pressure_);
+    u_prev += ratio * (displacement_ - previous_displacement_);
+  }
   DualGraph dual;
   bool converged = false;
   double omega = 1.0;     // Aitken relaxation factor
@@ -319,6 +334,11 @@ CoupledStepSummary CoupledModel::step(double dt) {
     }
   }
   if (summary.is_ok()) {
+    if (options_.predictor == CouplingPredictor::linear) {
+      previous_pressure_ = flow_->pressure();
+      previous_displacement_ = displacement_;
+      previous_dt_ = summary.n_breaks == 0 ? dt : 0.0;
+    }
     flow_->accept();
     displacement_ = mechanics_->displacement();  // the last pass's u, which the accepted flow saw
     current_dual_ = std::move(dual);

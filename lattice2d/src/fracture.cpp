@@ -1,6 +1,7 @@
 #include "hm/lattice2d/fracture.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <chrono>
 #include <cmath>
@@ -111,12 +112,46 @@ class FailureScan {
       const Eigen::Vector4d s = scale * raw_.col(i);
       particle_.col(i) << s[0], s[3], 0.5 * (s[1] + s[2]);
     }
-    // 3. Beam stresses of the intact beams, principal stresses, failure ratios, the candidate.
-    const FailureCriterion criterion(strengths.friction);
+    // 3. Beam stresses of the intact beams, principal stresses, failure ratios, the candidate: two
+    // fixed halves of the beams on the threads, combined in order (the lower half wins a tie, as the
+    // lowest index does in one pass), so the same bits on any number of threads.
+    std::array<Result, kChunks> part;
+    std::array<bool, kChunks> any_intact{};
+#pragma omp parallel for schedule(static) if (n_beams >= kParallelBeams)
+    for (int c = 0; c < kChunks; ++c)
+      scan_beams(c * n_beams / kChunks, (c + 1) * n_beams / kChunks, strengths, states, stress_scale,
+                 part[static_cast<std::size_t>(c)], any_intact[static_cast<std::size_t>(c)]);
     Result out;
+    bool any = false;
+    for (std::size_t c = 0; c < part.size(); ++c) {
+      if (!any_intact[c]) continue;
+      const Result& r = part[c];
+      if (!any || r.max_reference_ratio > out.max_reference_ratio) out.max_reference_ratio = r.max_reference_ratio;
+      if (!any || r.judged.max_ratio > out.judged.max_ratio) out.judged.max_ratio = r.judged.max_ratio;
+      any = true;
+      if (r.judged.found() && (!out.judged.found() || r.judged.ratio > out.judged.ratio)) {
+        const double max_ratio = out.judged.max_ratio;
+        out.judged = r.judged;
+        out.judged.max_ratio = max_ratio;
+        out.sigma_1 = r.sigma_1;
+        out.sigma_3 = r.sigma_3;
+        out.crack_tip_factor = r.crack_tip_factor;
+      }
+    }
+    return out;
+  }
+
+ private:
+  static constexpr int kChunks = 2;
+  // Below this many beams (N ~ 7000) one thread: waking the second costs more than it saves.
+  static constexpr int kParallelBeams = 20000;
+
+  // Step 3 of run() over beams [first, last).
+  void scan_beams(int first, int last, const BeamStrengths& strengths, const std::vector<BeamState>& states,
+                  double stress_scale, Result& out, bool& any_intact) const {
+    const FailureCriterion criterion(strengths.friction);
     BreakCandidate& best = out.judged;
-    bool any_intact = false;
-    for (int e = 0; e < n_beams; ++e) {
+    for (int e = first; e < last; ++e) {
       if (states[static_cast<std::size_t>(e)] != BeamState::intact) continue;
       const double factor =
           crack_tip_.enabled && tip_triangles_[static_cast<std::size_t>(e)] > 0 ? crack_tip_.factor(lattice_.length[e]) : 1.0;
@@ -143,10 +178,8 @@ class FailureScan {
         out.crack_tip_factor = factor;
       }
     }
-    return out;
   }
 
- private:
   const Lattice& lattice_;
   const DualGraph& dual_;
   CrackTipOptions crack_tip_;

@@ -139,6 +139,8 @@ void fill_connection_forces(const Lattice& lattice, const ParametersOf& paramete
   assert(u.size() == 3 * lattice.n_particles() && "connection_forces: u has 3 entries per particle");
   assert(static_cast<int>(states.size()) == lattice.n_beams() && "connection_forces: one state per beam");
   forces.resize(static_cast<std::size_t>(lattice.n_beams()));
+  // Beams independent: on the threads for a large lattice (N ~ 7000 and up), the same bits.
+#pragma omp parallel for schedule(static) if (lattice.n_beams() >= 20000)
   for (int e = 0; e < lattice.n_beams(); ++e) {
     const BeamState state = states[static_cast<std::size_t>(e)];
     BeamForce& F = forces[static_cast<std::size_t>(e)];

@@ -122,6 +122,7 @@ RunCase read_run_case(const std::filesystem::path& file) {
     if (depth < 1 || depth > 50) throw InputError("anderson_depth = " + std::to_string(depth) + ", allowed: 1 ... 50");
     o.anderson_depth = static_cast<int>(depth);
     o.fracture_check = lt::fracture_check_from_string(cpl.get_string("fracture_check", lt::to_string(o.fracture_check)));
+    o.predictor = lt::coupling_predictor_from_string(cpl.get_string("predictor", lt::to_string(o.predictor)));
     cpl.reject_unknown();
     o.validate();
   });
@@ -233,7 +234,8 @@ std::string run_case_to_toml(const RunCase& c, const std::string& provenance_tom
      << v(o.displacement_tolerance) << "\nmax_iterations = " << o.max_iterations
      << "\naccept_unconverged = " << b(o.accept_unconverged) << "\nrelaxation = \"" << lt::to_string(o.relaxation)
      << "\"\ninitial_relaxation = " << v(o.initial_relaxation) << "\nanderson_depth = " << o.anderson_depth
-     << "\nfracture_check = \"" << lt::to_string(o.fracture_check) << "\"\n\n"
+     << "\nfracture_check = \"" << lt::to_string(o.fracture_check) << "\"\npredictor = \""
+     << lt::to_string(o.predictor) << "\"\n\n"
      << "[numerics]\ndt_initial = " << v(s.dt_initial) << "\ndt_growth = " << v(s.dt_growth) << "\ndt_max = "
      << v(s.dt_max) << "\nt_end = " << v(s.t_end) << "\nmax_step_halvings = " << s.max_step_halvings << "\n\n"
      << "[fracture]\nenabled = " << b(c.fracture_enabled) << "\ndistribution = \"" << lt::to_string(c.strength.distribution)

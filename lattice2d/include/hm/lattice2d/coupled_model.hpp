@@ -62,6 +62,20 @@ std::string to_string(FractureCheck check);
 /// Inverse of to_string; throws hm::InputError "coupling.fracture_check = 'x', allowed: every_pass, at_convergence".
 FractureCheck fracture_check_from_string(std::string_view name);
 
+/// Where the first pass of a step starts.
+enum class CouplingPredictor {
+  /// From the last accepted state, p^n and u^n (the paper's loop).
+  previous,
+  /// From the straight line through the last two accepted states, p^n + (dt / dt_prev)(p^n - p^{n-1})
+  /// and likewise u, when the last step broke no beam (a crack's jump is not a trend); otherwise as
+  /// previous. Our addition: fewer passes on the smooth part of a run; same fixed point.
+  linear,
+};
+/// "previous" or "linear".
+std::string to_string(CouplingPredictor predictor);
+/// Inverse of to_string; throws hm::InputError "coupling.predictor = 'x', allowed: previous, linear".
+CouplingPredictor coupling_predictor_from_string(std::string_view name);
+
 /// Options of the coupling iteration (Fig. 5). Every default is set here.
 struct CouplingOptions {
   /// The split. Default undrained (the paper's primary scheme).
@@ -83,6 +97,8 @@ struct CouplingOptions {
   int max_iterations = 100;
   /// When beams are checked for failure. Default every_pass (the paper's Fig. 5).
   FractureCheck fracture_check = FractureCheck::every_pass;
+  /// The first pass's guess. Default previous (the paper's loop).
+  CouplingPredictor predictor = CouplingPredictor::previous;
   /// Relaxation of the pressure guess between passes. Default none (the paper's loop). Our addition for
   /// the borehole, whose stiff feedback makes the plain loop diverge (docs/coupling.md, section 3).
   CouplingRelaxation relaxation = CouplingRelaxation::none;
@@ -244,6 +260,11 @@ class CoupledModel {
   Eigen::VectorXd springs_;
   Eigen::VectorXd displacement_;
   Eigen::VectorXd volume_;  // V^n per unknown
+  // p^{n-1}, u^{n-1} and t^n - t^{n-1} for the linear predictor; previous_dt_ = 0 when the last step
+  // broke beams (or there is none).
+  Eigen::VectorXd previous_pressure_;
+  Eigen::VectorXd previous_displacement_;
+  double previous_dt_ = 0.0;
   PassObserver pass_observer_;
   struct FractureSetup {
     BeamStrengths strengths;

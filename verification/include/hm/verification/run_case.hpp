@@ -9,7 +9,7 @@
 ///                reuse_factorisation, refresh_after_refinements
 ///   [coupling]   split ("undrained" | "drained"), psi, xi, pressure_tolerance, displacement_tolerance,
 ///                max_iterations, accept_unconverged, relaxation ("none" | "aitken" | "anderson"), initial_relaxation,
-///                anderson_depth, fracture_check ("every_pass" | "at_convergence")
+///                anderson_depth, fracture_check ("every_pass" | "at_convergence"), predictor ("previous" | "linear")
 ///   [numerics]   dt_initial, dt_growth, dt_max, t_end, max_step_halvings
 ///   [fracture]   enabled, distribution ("none" | "uniform" | "weibull"), width, weibull_modulus,
 ///                correlated, seed (of the strengths), crack_tip, crack_tip_length (L_m over R);
