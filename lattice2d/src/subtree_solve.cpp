@@ -104,37 +104,45 @@ void SubtreeSolve::update(const cholmod_factor& L) {
       if (parent_[j] >= 0) children[static_cast<std::size_t>(next[static_cast<std::size_t>(parent_[j])]++)] = static_cast<int>(j);
   }
 
-  // Cut: move the heaviest subtree's root to the top until the subtrees split evenly into the groups
-  // (or the top would hold a tenth of the work: a tree that does not split, e.g. a band).
+  // Cut: move the heaviest subtree's root to the top, again and again, until the subtrees split evenly
+  // into the groups or the top holds a tenth of the work (a tree that does not split, e.g. a chain);
+  // keep the cut with the least estimated time, top + largest group.
   std::vector<char> is_top(n, 0);
   std::priority_queue<std::pair<std::int64_t, int>> frontier;
   for (std::size_t j = 0; j < n; ++j)
     if (parent_[j] < 0) frontier.emplace(work[j], static_cast<int>(j));
-  std::int64_t top_work = 0;
-  std::vector<int> roots;
-  const auto frontier_roots = [&]() {
-    auto copy = frontier;
-    roots.clear();
-    while (!copy.empty()) {
-      roots.push_back(copy.top().second);
-      copy.pop();
-    }
-  };
+  std::int64_t top_work = 0, best_time = total + 1;
+  std::vector<int> roots, expanded;
+  std::size_t best_expansions = 0;
   while (!frontier.empty()) {
-    const double mean = static_cast<double>(total - top_work) / kGroups;
-    if (static_cast<int>(frontier.size()) >= kGroups && static_cast<double>(frontier.top().first) <= mean) {
-      frontier_roots();
-      if (static_cast<double>(assign_groups(roots, work, kGroups).second) <= 1.02 * mean) break;
+    if (static_cast<int>(frontier.size()) >= kGroups) {
+      auto copy = frontier;
+      roots.clear();
+      for (; !copy.empty(); copy.pop()) roots.push_back(copy.top().second);
+      const std::int64_t max_load = assign_groups(roots, work, kGroups).second;
+      if (top_work + max_load < best_time) {
+        best_time = top_work + max_load;
+        best_expansions = expanded.size();
+      }
+      if (static_cast<double>(max_load) <= 1.02 * static_cast<double>(total - top_work) / kGroups) break;
     }
     if (top_work > total / 10) break;
     const int j = frontier.top().second;
     frontier.pop();
-    is_top[static_cast<std::size_t>(j)] = 1;
+    expanded.push_back(j);
     top_work += f.nz[j];
     for (int c = n_children[static_cast<std::size_t>(j)]; c < n_children[static_cast<std::size_t>(j) + 1]; ++c)
       frontier.emplace(work[static_cast<std::size_t>(children[static_cast<std::size_t>(c)])], children[static_cast<std::size_t>(c)]);
   }
-  frontier_roots();
+  // The best cut: its top, and as subtrees every other column whose parent is in the top (or none).
+  top_work = 0;
+  for (std::size_t k = 0; k < best_expansions; ++k) {
+    is_top[static_cast<std::size_t>(expanded[k])] = 1;
+    top_work += f.nz[expanded[k]];
+  }
+  roots.clear();
+  for (std::size_t j = 0; j < n; ++j)
+    if (!is_top[j] && (parent_[j] < 0 || is_top[static_cast<std::size_t>(parent_[j])])) roots.push_back(static_cast<int>(j));
   const auto [group_of_root, max_load] = assign_groups(roots, work, kGroups);
 
   // Label every column with its group and its subtree's root (parents before children).
