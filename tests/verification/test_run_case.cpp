@@ -55,6 +55,8 @@ TEST_CASE("Bad 2D cases are rejected with one line naming table, key, value and 
            "case.toml: [flow] refresh_after_refinements = -2, allowed: 0 ... 1000000");
   rejected(physics + "[coupling]\nfracture_check = \"sometimes\"\n",
            "case.toml: [coupling] fracture_check = 'sometimes', allowed: every_pass, at_convergence");
+  rejected(physics + "[coupling]\npredictor = \"quadratic\"\n",
+           "case.toml: [coupling] predictor = 'quadratic', allowed: previous, linear");
   rejected(physics + "[output]\nfracture_link = \"beam\"\n",
            "case.toml: [output] fracture_link = 'beam', allowed: particle, triangle");
   rejected(physics + "[mechanics]\nouter = \"clamped\"\n", "case.toml: [mechanics] outer = 'clamped', allowed: free, fixed");
