@@ -3,6 +3,8 @@
 //   1. CHOLMOD analyse + factorise (nested dissection; supernodal, converted to simplicial LDL'),
 //   2. a solve with that factor,
 //   3. the re-solve after one broken beam: rank-3 downdate of the kept factor + solve (mean of 10 breaks),
+//      with the triangular solves on all threads (SubtreeSolve, the default), CHOLMOD's one-thread
+//      solves, and a full solve,
 //   4. the same through BeamMechanics (break_beam + solve with contact check and equilibrium residual),
 //   5. preconditioned CG (incomplete Cholesky): set-up + cold solve from x = 0, and the re-solve after
 //      one break warm-started from the previous solution,
@@ -117,24 +119,25 @@ void run(long long n, bool variants, bool with_pcg) {
   const double t_first = solves.front();
   solves.erase(solves.begin());
   const double t_solve = median(solves), t_resolve = median(resolves), t_downdate = median(downdates);
-  // The same re-solves without carrying the forward solution (full forward + backward solve each time).
-  double t_resolve_full = 0.0;
-  {
-    SpdSolverOptions o;
-    o.reuse_forward_solve = false;
-    CholmodSolver full(o);
-    full.compute(A);
-    full.solve(b);
+  // The same re-solves with other solver options (median over the breaks).
+  const auto resolve_with = [&](const SpdSolverOptions& o) {
+    CholmodSolver other(o);
+    other.compute(A);
+    other.solve(b);
     std::vector<double> t;
     for (int e : breaks) {
       const SpdSolver::Matrix W = beam_columns(mech, free_index, e);
       t0 = now();
-      full.modify(W, -1);
-      full.solve(b);
+      other.modify(W, -1);
+      other.solve(b);
       t.push_back(now() - t0);
     }
-    t_resolve_full = median(t);
-  }
+    return median(t);
+  };
+  SpdSolverOptions full_options, serial_options;
+  full_options.reuse_forward_solve = false;  // full forward + backward solve each time (CHOLMOD's)
+  serial_options.parallel_triangular_solve = false;  // CHOLMOD's one-thread backward solve
+  const double t_resolve_full = resolve_with(full_options), t_resolve_serial = resolve_with(serial_options);
   std::printf("  minimum over repeats: repeated solve %.4f s, re-solve %.4f s (4 solves, %d breaks; medians below)\n",
               *std::min_element(solves.begin(), solves.end()), *std::min_element(resolves.begin(), resolves.end()),
               static_cast<int>(breaks.size()));
@@ -158,6 +161,7 @@ void run(long long n, bool variants, bool with_pcg) {
     std::printf("  %-58s %10.4f\n  %-58s %10.4f\n  %-58s %10.4f\n  %-58s %10.4f\n  %-58s %10.4f\n", "CHOLMOD analyse + factorise", t_factor,
                 "  of which numeric (refactorize())", t_numeric,
                 "CHOLMOD first solve", t_first, "CHOLMOD re-solve after one break", t_resolve, "BeamMechanics break_beam + solve", t_mech);
+    std::printf("  %-58s %10.4f\n", "  same, CHOLMOD's one-thread solves", t_resolve_serial);
   }
   if (with_pcg) {
   // 4. PCG (incomplete Cholesky), cold and warm.
@@ -188,6 +192,7 @@ void run(long long n, bool variants, bool with_pcg) {
   row("CHOLMOD re-solve after one break (rank-3 downdate + solve)", t_resolve);
   row("  of which the downdate (cholmod_updown_solve)", t_downdate);
   row("  same, full solve (reuse_forward_solve = false)", t_resolve_full);
+  row("  same, CHOLMOD's one-thread solves (parallel_triangular_solve = false)", t_resolve_serial);
   row("BeamMechanics break_beam + solve", t_mech);
   row("PCG cold: ichol set-up + solve from 0 (= CG)", cg);
   std::printf("  %-58s %10.4f %8.4f   (%d iterations)\n", "  of which the CG iterations", t_cg_cold, t_cg_cold / cg, it_cold);
