@@ -158,10 +158,13 @@ void run(long long n, bool variants, bool with_pcg) {
 
   std::printf("  %-58s %10s %8s\n", "step", "seconds", "/ CG");
   if (!with_pcg) {
-    std::printf("  %-58s %10.4f\n  %-58s %10.4f\n  %-58s %10.4f\n  %-58s %10.4f\n  %-58s %10.4f\n", "CHOLMOD analyse + factorise", t_factor,
-                "  of which numeric (refactorize())", t_numeric,
-                "CHOLMOD first solve", t_first, "CHOLMOD re-solve after one break", t_resolve, "BeamMechanics break_beam + solve", t_mech);
-    std::printf("  %-58s %10.4f\n", "  same, CHOLMOD's one-thread solves", t_resolve_serial);
+    const auto line = [](const char* name, double t) { std::printf("  %-58s %10.4f\n", name, t); };
+    line("CHOLMOD analyse + factorise", t_factor);
+    line("  of which numeric (refactorize())", t_numeric);
+    line("CHOLMOD first solve", t_first);
+    line("CHOLMOD re-solve after one break", t_resolve);
+    line("  same, CHOLMOD's one-thread solves", t_resolve_serial);
+    line("BeamMechanics break_beam + solve", t_mech);
   }
   if (with_pcg) {
   // 4. PCG (incomplete Cholesky), cold and warm.
