@@ -85,6 +85,32 @@ TEST_CASE("The harness writes report and metrics, and a failing gating metric fa
   CHECK_THAT(md, Catch::Contains("**The benchmark stopped with an error:** solver diverged"));
 }
 
+TEST_CASE("Paper-tier benchmarks print progress between two headings; quick ones get no stream", "[verification][harness]") {
+  TempDir dir("harness_progress");
+  bool quick_had_stream = true;
+  std::vector<Benchmark> benchmarks = {
+      {"demo.quick", "Quick", "", Tier::quick,
+       [&](const BenchmarkContext& ctx) {
+         quick_had_stream = ctx.progress != nullptr;
+         return BenchmarkResult{};
+       }},
+      {"demo.long", "Long", "", Tier::paper,
+       [](const BenchmarkContext& ctx) {
+         REQUIRE(ctx.progress != nullptr);
+         *ctx.progress << "[run] half way\n";
+         return BenchmarkResult{};
+       }},
+  };
+  HarnessOptions options;
+  options.tier = Tier::paper;
+  options.out_dir = dir.path / "report";
+  std::ostringstream log;
+  REQUIRE(run_harness(benchmarks, options, log).ok());
+  CHECK_FALSE(quick_had_stream);
+  CHECK_THAT(log.str(), Catch::StartsWith("[1/2] demo.quick ... ok, 0 metrics ("));
+  CHECK_THAT(log.str(), Catch::Contains("[2/2] demo.long ...\n[run] half way\n[2/2] demo.long ... ok, 0 metrics ("));
+}
+
 TEST_CASE("A staged output folder appears only on commit", "[verification][harness]") {
   TempDir dir("staged");
   const auto target = dir.path / "run";

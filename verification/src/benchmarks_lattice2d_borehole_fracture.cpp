@@ -24,6 +24,8 @@
 #include <fstream>
 #include <limits>
 #include <numeric>
+#include <optional>
+#include <ostream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -36,6 +38,7 @@
 #include "hm/lattice2d/strength.hpp"
 #include "hm/verification/benchmark.hpp"
 #include "hm/verification/fdm1d_output.hpp"
+#include "hm/verification/progress.hpp"
 #include "hm/verification/provenance.hpp"
 #include "hm/verification/run_case.hpp"
 #include "hm/verification/run_output.hpp"
@@ -168,7 +171,9 @@ fdm1d::Fdm1dResult run_reference(const RunCase& c) {
   return r;
 }
 
-RunOutcome run_case(const RunCase& c, const std::string& label, const fs::path& root, const fdm1d::Fdm1dResult& ref) {
+/// `progress` (null: silent) gets a line a minute and one at the end: the paper tier's runs take up to an hour.
+RunOutcome run_case(const RunCase& c, const std::string& label, const fs::path& root, const fdm1d::Fdm1dResult& ref,
+                    std::ostream* progress = nullptr) {
   RunOutcome o;
   o.label = label;
   o.b = c.physics.parameters.material.b;
@@ -188,9 +193,12 @@ RunOutcome run_case(const RunCase& c, const std::string& label, const fs::path& 
   int last_n_broken = 0;
   double last_p_h = 0.0;
   double pre_last_t = kNaN, pre_last_ratio = kNaN;
+  std::optional<ProgressReporter> reporter;
+  if (progress) reporter.emplace(*progress, label, 60.0);
   const auto run = model.run(c.stepping, [&](const lt::CoupledModel& m, const lt::CoupledStepSummary& s, bool out) {
     recorder.record(m, s, out);
     const double t = m.time(), p_h = injection_pressure(m);
+    if (reporter) reporter->update(t, c.stepping.t_end, "broken " + std::to_string(m.n_broken()));
     o.seconds += s.seconds;
     o.mechanics += s.mechanics_seconds;
     o.fracture += s.stress_seconds + s.break_seconds;
@@ -248,6 +256,10 @@ RunOutcome run_case(const RunCase& c, const std::string& label, const fs::path& 
   o.passes = run.total_iterations;
   o.n_halvings = run.n_step_halvings;
   o.max_balance = run.max_balance_error;
+  if (reporter)
+    reporter->finish(o.ok ? std::to_string(o.n_steps) + " steps, " + std::to_string(o.passes) + " passes, " +
+                                std::to_string(model.n_broken()) + " broken"
+                          : "failed: " + o.message);
   if (!o.ok) return o;  // the folder stays, with the series up to the failure, for a look
   recorder.finish();
   std::ofstream(dir / "config.toml") << run_case_to_toml(
@@ -567,7 +579,7 @@ BenchmarkResult fig12_paper(const BenchmarkContext& ctx) {
   for (const std::string b : {"0.2", "0.8"}) {
     const RunCase c = read_run_case(fs::path(HM_SOURCE_DIR) / "cases" / "paper" / ("fig12_b" + b + ".toml"));
     const fdm1d::Fdm1dResult ref = write_reference(c, root);
-    runs.push_back(run_case(c, "fig12_b" + b, root, ref));
+    runs.push_back(run_case(c, "fig12_b" + b, root, ref, ctx.progress));
     runs.back().twin_label = "fig12_b" + b + "_flux_borehole";
     runs.back().twin = run_flux_twin(c, runs.back().twin_label, root, ref);
     in_figure.push_back(true);
@@ -578,7 +590,7 @@ BenchmarkResult fig12_paper(const BenchmarkContext& ctx) {
       cs.lattice.seed = seed;
       cs.strength.seed = seed;
       seeds.push_back(run_case(cs, "fig12_b" + b + "_N" + std::to_string(kScatterN) + "_seed" + std::to_string(seed),
-                               root, ref));
+                               root, ref, ctx.progress));
     }
     // Mean ± sd per output time (the runs share the output times; a failed run is left out).
     std::vector<const RunOutcome*> ok;

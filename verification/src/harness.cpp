@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <exception>
+#include <string>
 
 #include "figure_runner.hpp"
 #include "hm/analytic/input_error.hpp"
@@ -38,10 +39,13 @@ HarnessSummary run_harness(const std::vector<Benchmark>& benchmarks, const Harne
   for (std::size_t i = 0; i < selected.size(); ++i) {
     BenchmarkOutcome o;
     o.benchmark = selected[i];
-    log << "[" << i + 1 << "/" << selected.size() << "] " << o.benchmark->id << " ... " << std::flush;
+    // Paper-tier benchmarks run for minutes to hours: their progress lines go between two headings.
+    const std::string heading = "[" + std::to_string(i + 1) + "/" + std::to_string(selected.size()) + "] " + o.benchmark->id;
+    const bool long_running = o.benchmark->tier == Tier::paper;
+    log << heading << (long_running ? " ...\n" : " ... ") << std::flush;
     const auto start = std::chrono::steady_clock::now();
     try {
-      o.result = o.benchmark->run(BenchmarkContext{options.tier, data_dir});
+      o.result = o.benchmark->run(BenchmarkContext{options.tier, data_dir, long_running ? &log : nullptr});
     } catch (const std::exception& e) {
       o.error = e.what();
     }
@@ -55,6 +59,7 @@ HarnessSummary run_harness(const std::vector<Benchmark>& benchmarks, const Harne
     summary.n_failed += failed;
     summary.n_benchmark_errors += !o.error.empty();
     summary.n_missing_figures += static_cast<int>(o.figure_errors.size());
+    if (long_running) log << heading << " ... ";
     if (!o.error.empty())
       log << "ERROR: " << o.error << "\n";
     else

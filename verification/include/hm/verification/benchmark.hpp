@@ -4,6 +4,7 @@
 /// what, how, and why the tolerance is what it is) plus a function that runs it and returns metrics.
 #include <filesystem>
 #include <functional>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -63,6 +64,8 @@ struct BenchmarkResult {
 struct BenchmarkContext {
   Tier tier = Tier::quick;
   std::filesystem::path data_dir;  ///< write CSV for figures here (exists)
+  /// Paper-tier benchmarks may print progress lines of their long runs here; null in the quick tier.
+  std::ostream* progress = nullptr;
 };
 
 struct Benchmark {
