@@ -85,7 +85,7 @@ TEST_CASE("The harness writes report and metrics, and a failing gating metric fa
   CHECK_THAT(md, Catch::Contains("**The benchmark stopped with an error:** solver diverged"));
 }
 
-TEST_CASE("Paper-tier benchmarks print progress between two headings; quick ones get no stream", "[verification][harness]") {
+TEST_CASE("Paper-tier benchmarks print progress between two headings and quick ones get no stream", "[verification][harness]") {
   TempDir dir("harness_progress");
   bool quick_had_stream = true;
   std::vector<Benchmark> benchmarks = {
