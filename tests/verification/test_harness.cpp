@@ -111,6 +111,30 @@ TEST_CASE("Paper-tier benchmarks print progress between two headings and quick o
   CHECK_THAT(log.str(), Catch::Contains("[2/2] demo.long ...\n[run] half way\n[2/2] demo.long ... ok, 0 metrics ("));
 }
 
+TEST_CASE("Figures of the same file name from two benchmarks go to separate folders", "[verification][harness]") {
+  // The quick and the paper Fig. 12 benchmarks both draw fig12_fracture_pressure.png: one shared
+  // folder let the second overwrite the first, and the report showed the same picture twice.
+  TempDir dir("harness_figures");
+  auto with_figure = [](const BenchmarkContext&) {
+    BenchmarkResult r;
+    r.figures.push_back({"no_such_script.py", "same.png", "caption", ""});
+    return r;
+  };
+  std::vector<Benchmark> benchmarks = {{"demo.quick", "Quick", "", Tier::quick, with_figure},
+                                       {"demo.paper", "Paper", "", Tier::paper, with_figure}};
+  HarnessOptions options;
+  options.tier = Tier::paper;
+  options.out_dir = dir.path / "report";
+  std::ostringstream log;
+  const auto summary = run_harness(benchmarks, options, log);
+  CHECK(summary.n_missing_figures == 2);  // the script does not exist: reported, not hidden
+  const std::string md = slurp(options.out_dir / "report.md");
+  CHECK_THAT(md, Catch::Contains("](figures/demo.quick/same.png)"));
+  CHECK_THAT(md, Catch::Contains("](figures/demo.paper/same.png)"));
+  CHECK(std::filesystem::is_directory(options.out_dir / "figures" / "demo.quick"));
+  CHECK(std::filesystem::is_directory(options.out_dir / "figures" / "demo.paper"));
+}
+
 TEST_CASE("A staged output folder appears only on commit", "[verification][harness]") {
   TempDir dir("staged");
   const auto target = dir.path / "run";

@@ -49,8 +49,11 @@ HarnessSummary run_harness(const std::vector<Benchmark>& benchmarks, const Harne
     } catch (const std::exception& e) {
       o.error = e.what();
     }
+    // One folder per benchmark: a quick and a paper benchmark draw files of the same name.
+    if (!o.result.figures.empty()) fs::create_directories(figure_dir / o.benchmark->id);
     for (const auto& f : o.result.figures)
-      if (auto why = draw_figure(f, data_dir, figure_dir); !why.empty()) o.figure_errors.push_back(why);
+      if (auto why = draw_figure(f, data_dir, figure_dir / o.benchmark->id); !why.empty())
+        o.figure_errors.push_back(why);
     o.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     int failed = 0;

@@ -100,7 +100,7 @@ void write_report_markdown(const fs::path& file, const std::vector<BenchmarkOutc
       md << "\n";
     }
     for (const auto& t : o.result.tables) write_table(md, t);
-    for (const auto& f : o.result.figures) md << "![" << f.caption << "](figures/" << f.file << ")\n\n*" << f.caption << "*\n\n";
+    for (const auto& f : o.result.figures) md << "![" << f.caption << "](figures/" << o.benchmark->id << "/" << f.file << ")\n\n*" << f.caption << "*\n\n";
     for (const auto& e : o.figure_errors) md << "> Figure missing: " << e << "\n\n";
     for (const auto& n : o.result.notes) md << n << "\n\n";
   }
