@@ -10,9 +10,10 @@ profiles.csv, borehole.csv), or a single run folder (then without the 1D curves)
 
 Solid lines with markers: the lattice's shell means u_r (radial.csv, shells binned by undeformed centroid
 radius) at the run's output times (the paper's times). Dashed: fdm1d's nodal u_r at the same times.
-Dotted (when the benchmark wrote it): the same lattice without fracture and with fdm1d's flux-boundary
-borehole (no Eq. 16 storage), up to the first output time: what separates the 2D curves from the 1D
-ones before the first break is the borehole node (docs/borehole_fracture.md).
+Dotted (when the benchmark wrote it): the same lattice without fracture, up to the first output time:
+the lattice's own error against 1D before fracture. Dash-dot (when the benchmark wrote it): the same
+case with the paper's Eq. 16 borehole node instead of the flux boundary (errata E15, E16), its u_r at
+the first output time and its borehole pressure with its first break (docs/borehole_fracture.md).
 """
 import csv
 import os
@@ -24,22 +25,31 @@ from hmplot import plt
 
 
 def runs_to_draw(data):
-    """[(label, run folder, 1D folder or None, flux-borehole twin folder or None)]."""
+    """[(label, run folder, 1D folder, twin folder, Eq. 16 node folder)]; None where there is none."""
     index = os.path.join(data, "runs.csv")
     if os.path.exists(index):
         with open(index, newline="") as f:
             rows = [r for r in csv.DictReader(f) if r["figure"] == "1"]
         rows.sort(key=lambda r: float(r["b"]))
-        return [(r["run"], os.path.join(data, r["run"]), os.path.join(data, r["fdm1d"]),
-                 os.path.join(data, r["flux_twin"]) if r.get("flux_twin") else None) for r in rows]
-    return [(os.path.basename(os.path.normpath(data)), data, None, None)]
+
+        def folder(r, key):
+            return os.path.join(data, r[key]) if r.get(key) else None
+
+        return [(r["run"], os.path.join(data, r["run"]), folder(r, "fdm1d"), folder(r, "flux_twin"),
+                 folder(r, "eq16_node")) for r in rows]
+    return [(os.path.basename(os.path.normpath(data)), data, None, None, None)]
+
+
+def existing(folder, name):
+    """folder if it holds the file name (a run that failed or was not made has none), else None."""
+    return folder if folder and os.path.exists(os.path.join(folder, name)) else None
 
 
 def main():
     args = hmplot.arguments(__doc__.splitlines()[0])
     runs = runs_to_draw(args.data)
     fig, axes = plt.subplots(2, len(runs), figsize=(5.2 * len(runs), 7.4), squeeze=False)
-    for col, (label, folder, folder_1d, folder_twin) in enumerate(runs):
+    for col, (label, folder, folder_1d, folder_twin, folder_eq16) in enumerate(runs):
         b = hmplot.run_physics(folder, "b")
         title = f"b = {b:g}" if b is not None else label
         radial = hmplot.group_by(hmplot.read_csv(os.path.join(folder, "radial.csv")), "t")
@@ -66,12 +76,20 @@ def main():
                     ax.plot(d1["r"], d1["u_r"], "--", color=colors[k], lw=1.2)
         if profiles_1d is not None:
             ax.plot([], [], "k--", lw=1.2, label="1D (fdm1d), no fracture")
-        twin = folder_twin if folder_twin and os.path.exists(os.path.join(folder_twin, "radial.csv")) else None
+        twin = existing(folder_twin, "radial.csv")
         if twin:
             tr = hmplot.group_by(hmplot.read_csv(os.path.join(twin, "radial.csv")), "t")
             t_tw = max(tr)
             ax.plot(tr[t_tw]["r_mean"], tr[t_tw]["u_r"], ":", color="C1", lw=1.4,
-                    label=f"2D, flux borehole, no fracture, t* = {t_tw:.3g}")
+                    label=f"2D, no fracture, t* = {t_tw:.3g}")
+        eq16 = existing(folder_eq16, "radial.csv")
+        if eq16:
+            er = hmplot.group_by(hmplot.read_csv(os.path.join(eq16, "radial.csv")), "t")
+            t_e = min(t for t in er if t > 0.0)
+            t_e_first = hmplot.read_csv(os.path.join(eq16, "breakdown.csv"))["t_first_break"][0]
+            state = "unbroken" if not (t_e >= t_e_first) else "fractured"
+            ax.plot(er[t_e]["r_mean"], er[t_e]["u_r"], "-.", color="C2", lw=1.4,
+                    label=f"2D, Eq. 16 borehole node, t* = {t_e:.3g} ({state})")
         ax.set_xlabel("r*")
         ax.set_ylabel("radially averaged u_r*")
         ax.set_xlim(0.0, 1.0)
@@ -91,7 +109,15 @@ def main():
             st = hmplot.read_csv(os.path.join(twin, "series.csv"))
             kt = st["t"] > 0.0
             ax.plot(st["t"][kt], st["p_h"][kt], ":", color="C1", lw=1.4,
-                    label="2D, flux-boundary borehole, no fracture")
+                    label="2D, no fracture")
+        if eq16:
+            se = hmplot.read_csv(os.path.join(eq16, "series.csv"))
+            ke = se["t"] > 0.0
+            ax.plot(se["t"][ke], se["p_h"][ke], "-.", color="C2", lw=1.2, label="2D, Eq. 16 borehole node (fracture)")
+            be = hmplot.read_csv(os.path.join(eq16, "breakdown.csv"))
+            if np.isfinite(be["t_first_break"][0]):
+                ax.plot(be["t_first_break"][:1], be["p_h_first_break"][:1], "s", color="C2", ms=6, mfc="none",
+                        label=f"Eq. 16 node: first break t* = {be['t_first_break'][0]:.3g}")
         if np.isfinite(t_first):
             ax.axvline(t_first, color="C3", lw=0.8, ls=":")
             ax.plot([t_first], [p_first], "o", color="C3", ms=6, mfc="none",
