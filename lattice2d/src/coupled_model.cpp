@@ -185,6 +185,7 @@ CoupledStepSummary CoupledModel::step(double dt) {
   CoupledStepSummary summary;
   summary.dt = dt;
   summary.time = time() + dt;
+  const int factorizations_before = mechanics_->solver_report().n_factorizations;
   const Lattice& l = lattice();
   Eigen::VectorXd p_guess = flow_->pressure();  // p^n: the drained split's frozen pressure
   Eigen::VectorXd u_prev = displacement_;       // u^n: where the springs are relaxed at the first pass
@@ -209,6 +210,7 @@ CoupledStepSummary CoupledModel::step(double dt) {
     summary.stress_seconds += bs.stress_seconds;
     summary.break_seconds += bs.break_seconds;
     summary.n_mechanics_solves += bs.n_solves;
+    summary.n_contact_changes += bs.n_contact_changes;
     n_breaks = bs.n_breaks;
     summary.n_breaks += bs.n_breaks;
     if (!bs.is_stable()) {
@@ -236,6 +238,7 @@ CoupledStepSummary CoupledModel::step(double dt) {
       const MechanicsSummary ms = mechanics_->solve();
       summary.mechanics_seconds += ms.solve_seconds;
       ++summary.n_mechanics_solves;
+      summary.n_contact_changes += ms.n_contact_changes;
       if (!ms.is_converged()) {
         summary.status = CoupledStatus::solver_failure;
         summary.message = "mechanics at t = " + hm::analytic::format_value(summary.time) + ", pass " +
@@ -348,6 +351,7 @@ CoupledStepSummary CoupledModel::step(double dt) {
     flow_->update_geometry(current_dual_, positions(displacement_));
   }
   summary.n_broken = n_broken();
+  summary.n_mechanics_factorizations = mechanics_->solver_report().n_factorizations - factorizations_before;
   summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return summary;
 }

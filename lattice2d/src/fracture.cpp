@@ -296,6 +296,7 @@ BreakLoopSummary break_until_stable(BeamMechanics& mechanics, const DualGraph& d
     summary.solve_seconds += solved.solve_seconds;
     ++summary.n_solves;
     summary.n_contact_iterations += solved.contact_iterations;
+    summary.n_contact_changes += solved.n_contact_changes;
     if (!solved.is_converged()) {
       summary.status = BreakLoopStatus::solve_failed;
       summary.message = "mechanical solve " + std::to_string(summary.n_solves) + " after " +

@@ -167,6 +167,9 @@ struct CoupledStepSummary {
   double stress_seconds = 0.0;      ///< break loops: beam stresses and failure checks
   double break_seconds = 0.0;       ///< break loops: BeamMechanics::break_beam (factor downdates)
   int n_mechanics_solves = 0;       ///< mechanical solves (one per pass plus one per break)
+  int n_contact_changes = 0;        ///< open <-> contact switches of broken beams (each a factor modification)
+  int n_mechanics_factorizations = 0;  ///< full refactorisations of the mechanical factor (after
+                                       ///< max_modifications modifications, or a failed update)
   double geometry_seconds = 0.0;    ///< deformed dual graph and FlowNetwork::update_geometry
   double flow_seconds = 0.0;        ///< FlowNetwork::solve (refactorisation and solve)
   std::string message;  ///< empty when converged

@@ -65,6 +65,7 @@ struct BreakLoopSummary {
   /// 1 / max_reference_ratio (homogeneity; see the file comment). 0 if no intact beam is stressed.
   double max_reference_ratio = 0.0;
   int n_contact_iterations = 0;  ///< summed over the solves
+  int n_contact_changes = 0;     ///< open <-> contact switches, summed over the solves
   double seconds = 0.0;          ///< wall time of the call, of which:
   double solve_seconds = 0.0;    ///< BeamMechanics::solve (back-substitutions, contact iterations)
   double stress_seconds = 0.0;   ///< beam stresses and the failure check
