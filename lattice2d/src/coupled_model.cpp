@@ -186,6 +186,7 @@ CoupledStepSummary CoupledModel::step(double dt) {
   summary.dt = dt;
   summary.time = time() + dt;
   const int factorizations_before = mechanics_->solver_report().n_factorizations;
+  const int update_failures_before = mechanics_->solver_report().n_update_failures;
   const Lattice& l = lattice();
   Eigen::VectorXd p_guess = flow_->pressure();  // p^n: the drained split's frozen pressure
   Eigen::VectorXd u_prev = displacement_;       // u^n: where the springs are relaxed at the first pass
@@ -352,6 +353,7 @@ CoupledStepSummary CoupledModel::step(double dt) {
   }
   summary.n_broken = n_broken();
   summary.n_mechanics_factorizations = mechanics_->solver_report().n_factorizations - factorizations_before;
+  summary.n_mechanics_update_failures = mechanics_->solver_report().n_update_failures - update_failures_before;
   summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return summary;
 }

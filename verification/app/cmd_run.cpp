@@ -86,7 +86,7 @@ void add_run_command(CLI::App& app, int& exit_code, const std::string& command_l
     int step = 0;
     double step_seconds = 0.0, mechanics_seconds = 0.0, geometry_seconds = 0.0, flow_seconds = 0.0,
            stress_seconds = 0.0, break_seconds = 0.0;
-    long long n_solves = 0, n_contact_changes = 0, n_refactorizations = 0;
+    long long n_solves = 0, n_contact_changes = 0, n_refactorizations = 0, n_update_failures = 0;
     const auto run = model.run(c.stepping, [&](const lattice2d::CoupledModel& m, const lattice2d::CoupledStepSummary& s,
                                                bool is_output) {
       recorder.record(m, s, is_output);
@@ -99,11 +99,13 @@ void add_run_command(CLI::App& app, int& exit_code, const std::string& command_l
       n_solves += s.n_mechanics_solves;
       n_contact_changes += s.n_contact_changes;
       n_refactorizations += s.n_mechanics_factorizations;
+      n_update_failures += s.n_mechanics_update_failures;
       const int remaining = remaining_steps(m.time(), s.dt, c.stepping);
       progress.update(m.time(), c.stepping.t_end,
                       "step " + std::to_string(step) + ", broken " + std::to_string(m.n_broken()) + ", iterations " +
                           std::to_string(s.iterations) + ", contact switches " + std::to_string(s.n_contact_changes) +
-                          ", refactorisations " + std::to_string(s.n_mechanics_factorizations) + ", ETA " +
+                          ", refactorisations " + std::to_string(s.n_mechanics_factorizations) + " (" +
+                          std::to_string(s.n_mechanics_update_failures) + " after failed updates), ETA " +
                           std::to_string(static_cast<int>(step > 0 ? step_seconds / step * remaining : 0.0)) + " s");
       ++step;
     });
@@ -111,11 +113,11 @@ void add_run_command(CLI::App& app, int& exit_code, const std::string& command_l
     std::snprintf(summary, sizeof summary,
                   "%d steps (%d halved), %d coupling iterations (= flow factorisations and solves), %d beams broken "
                   "(= factor downdates), %lld mechanical solves, %lld contact switches, %lld mechanical "
-                  "refactorisations, max volume-balance error %.2e; set-up %.1f s, "
+                  "refactorisations (%lld after failed updates), max volume-balance error %.2e; set-up %.1f s, "
                   "mechanics solves %.1f s, stresses and failure checks %.1f s, downdates %.1f s, geometry %.1f s, "
                   "flow %.1f s",
                   run.n_steps, run.n_step_halvings, run.total_iterations, model.n_broken(), n_solves,
-                  n_contact_changes, n_refactorizations, run.max_balance_error, setup_seconds, mechanics_seconds,
+                  n_contact_changes, n_refactorizations, n_update_failures, run.max_balance_error, setup_seconds, mechanics_seconds,
                   stress_seconds, break_seconds,
                   geometry_seconds, flow_seconds);
     progress.finish(summary);

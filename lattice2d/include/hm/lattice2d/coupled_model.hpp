@@ -170,6 +170,7 @@ struct CoupledStepSummary {
   int n_contact_changes = 0;        ///< open <-> contact switches of broken beams (each a factor modification)
   int n_mechanics_factorizations = 0;  ///< full refactorisations of the mechanical factor (after
                                        ///< max_modifications modifications, or a failed update)
+  int n_mechanics_update_failures = 0;  ///< of which after a failed low-rank update (cholmod_updown)
   double geometry_seconds = 0.0;    ///< deformed dual graph and FlowNetwork::update_geometry
   double flow_seconds = 0.0;        ///< FlowNetwork::solve (refactorisation and solve)
   std::string message;  ///< empty when converged
