@@ -297,6 +297,10 @@ void CholmodSolver::modify(const Matrix& W, int sigma) {
   if (!ok) {
     // Seen (rarely, status CHOLMOD_INVALID on valid input, after hundreds of modifications of a
     // re-assembled factor): A itself is current (add_low_rank above), so rebuild the factor from it.
+    report_.last_update_failure = "cholmod_updown" + std::string(impl_->forward ? "_solve" : "") + " status " +
+                                  std::to_string(c->status) + ", rank " + std::to_string(k) + ", sigma " +
+                                  std::to_string(sigma) + ", after " + std::to_string(report_.n_modifications - 1) +
+                                  " modifications";
     impl_->forward.reset();
     ++report_.n_update_failures;
     refactorize();

@@ -99,6 +99,7 @@ struct SpdSolveReport {
   int n_factorizations = 0;        ///< numeric factorisations since compute()
   int n_modifications = 0;         ///< modify() calls since the last factorisation
   int n_update_failures = 0;       ///< modify() calls whose factor update failed and fell back to refactorize()
+  std::string last_update_failure; ///< the last such failure: CHOLMOD's status, rank, sign, modifications before it
   std::string message;             ///< human-readable reason when info != Success
 };
 
