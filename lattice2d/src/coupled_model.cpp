@@ -185,8 +185,8 @@ CoupledStepSummary CoupledModel::step(double dt) {
   CoupledStepSummary summary;
   summary.dt = dt;
   summary.time = time() + dt;
-  const int factorizations_before = mechanics_->solver_report().n_factorizations;
-  const int update_failures_before = mechanics_->solver_report().n_update_failures;
+  const int factorizations_before = mechanics_->solver().report().n_factorizations;
+  const int update_failures_before = mechanics_->solver().report().n_update_failures;
   const Lattice& l = lattice();
   Eigen::VectorXd p_guess = flow_->pressure();  // p^n: the drained split's frozen pressure
   Eigen::VectorXd u_prev = displacement_;       // u^n: where the springs are relaxed at the first pass
@@ -352,8 +352,8 @@ CoupledStepSummary CoupledModel::step(double dt) {
     flow_->update_geometry(current_dual_, positions(displacement_));
   }
   summary.n_broken = n_broken();
-  summary.n_mechanics_factorizations = mechanics_->solver_report().n_factorizations - factorizations_before;
-  summary.n_mechanics_update_failures = mechanics_->solver_report().n_update_failures - update_failures_before;
+  summary.n_mechanics_factorizations = mechanics_->solver().report().n_factorizations - factorizations_before;
+  summary.n_mechanics_update_failures = mechanics_->solver().report().n_update_failures - update_failures_before;
   summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return summary;
 }

@@ -155,13 +155,27 @@ CholmodSolver::CholmodSolver(const SpdSolverOptions& options) : impl_(std::make_
   options_.validate();
 }
 
+namespace {
+
+/// A fresh report for a new matrix that keeps the solver's lifetime counters: a caller that counts
+/// factorisations over a run (CoupledStepSummary) must not see them restart when the matrix is rebuilt.
+SpdSolveReport report_keeping_totals(const SpdSolveReport& old) {
+  SpdSolveReport r;
+  r.n_factorizations = old.n_factorizations;
+  r.n_update_failures = old.n_update_failures;
+  r.last_update_failure = old.last_update_failure;
+  return r;
+}
+
+}  // namespace
+
 CholmodSolver::~CholmodSolver() = default;
 
 void CholmodSolver::compute(const Matrix& A) {
   assert(A.rows() == A.cols() && "compute: A must be square");
   matrix_ = A;
   matrix_.makeCompressed();
-  report_ = SpdSolveReport{};
+  report_ = report_keeping_totals(report_);
   cholmod_common* c = impl_->c();
   c->final_ll = 0;
   c->supernodal = options_.supernodal_factorization ? CHOLMOD_SUPERNODAL : CHOLMOD_SIMPLICIAL;
@@ -445,7 +459,7 @@ PcgSolver::~PcgSolver() = default;
 void PcgSolver::compute(const Matrix& A) {
   matrix_ = A;
   matrix_.makeCompressed();
-  report_ = SpdSolveReport{};
+  report_ = report_keeping_totals(report_);
   previous_.resize(0);
   refactorize();
 }

@@ -108,7 +108,7 @@ void add_run_command(CLI::App& app, int& exit_code, const std::string& command_l
                           std::to_string(s.n_mechanics_update_failures) + " after failed updates), ETA " +
                           std::to_string(static_cast<int>(step > 0 ? step_seconds / step * remaining : 0.0)) + " s" +
                           (s.n_mechanics_update_failures > 0
-                               ? "; last failed update: " + m.mechanics().solver_report().last_update_failure
+                               ? "; last failed update: " + m.mechanics().solver().report().last_update_failure
                                : std::string()));
       ++step;
     });
@@ -125,7 +125,7 @@ void add_run_command(CLI::App& app, int& exit_code, const std::string& command_l
                   geometry_seconds, flow_seconds);
     progress.finish(summary);
     if (n_update_failures > 0)  // to find why CHOLMOD's low-rank updates fail (docs/borehole_fracture.md)
-      std::cout << "last failed update: " << model.mechanics().solver_report().last_update_failure << "\n";
+      std::cout << "last failed update: " << model.mechanics().solver().report().last_update_failure << "\n";
     if (!run.is_ok()) {
       std::cerr << "hmlattice run: numerical failure: " << run.message << "\n";
       exit_code = 1;

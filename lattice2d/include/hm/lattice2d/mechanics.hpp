@@ -182,8 +182,6 @@ class BeamMechanics {
   const Lattice& lattice() const { return lattice_; }
   const BeamParameters& parameters() const { return parameters_; }
   const std::vector<BeamState>& states() const { return states_; }
-  /// The linear solver's counters (factorisations, low-rank modifications since the last one).
-  const SpdSolveReport& solver_report() const { return solver_->report(); }
   const std::vector<bool>& held_dofs() const { return held_; }
   const std::vector<bool>& detached_particles() const { return detached_; }
   int n_detached_particles() const { return n_detached_; }
