@@ -302,15 +302,18 @@ void CholmodSolver::modify(const Matrix& W, int sigma) {
   impl_->subtree_current = false;
   bool ok;
   if (impl_->forward) {
-    if (!impl_->zero_delta) impl_->zero_delta.reset(cholmod_zeros(static_cast<std::size_t>(n), 1, CHOLMOD_REAL, c));
+    // DeltaB must have the factor's size: a compute() on a matrix of another size (the mechanics
+    // holds a rotation) left the old one, and every update then failed with CHOLMOD_INVALID.
+    if (!impl_->zero_delta || impl_->zero_delta->nrow != static_cast<std::size_t>(n))
+      impl_->zero_delta.reset(cholmod_zeros(static_cast<std::size_t>(n), 1, CHOLMOD_REAL, c));
     ok = impl_->zero_delta && cholmod_updown_solve(sigma > 0 ? 1 : 0, C.get(), impl_->factor.get(), impl_->forward.get(),
                                                    impl_->zero_delta.get(), c);
   } else {
     ok = cholmod_updown(sigma > 0 ? 1 : 0, C.get(), impl_->factor.get(), c);
   }
   if (!ok) {
-    // Seen (rarely, status CHOLMOD_INVALID on valid input, after hundreds of modifications of a
-    // re-assembled factor): A itself is current (add_low_rank above), so rebuild the factor from it.
+    // Out of memory while a column of L grows (W outside A's pattern), or a bad argument: A itself
+    // is current (add_low_rank above), so rebuild the factor from it.
     report_.last_update_failure = "cholmod_updown" + std::string(impl_->forward ? "_solve" : "") + " status " +
                                   std::to_string(c->status) + ", rank " + std::to_string(k) + ", sigma " +
                                   std::to_string(sigma) + ", after " + std::to_string(report_.n_modifications - 1) +
