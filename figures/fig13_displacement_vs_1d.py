@@ -4,9 +4,13 @@ borehole pressure history of both with the first break marked.
 
 Reads a folder with runs.csv written by the lattice2d.fig12 benchmarks (run folders as `hmlattice run`
 writes them: radial.csv, series.csv, breakdown.csv; 1D folders as `hmlattice fdm1d` writes them:
-profiles.csv, borehole.csv), or a single run folder (then without the 1D curves):
+profiles.csv, borehole.csv), or a single run folder, with the 1D curves when --fdm1d names an
+`hmlattice fdm1d` folder at the run's output times (cases/fig13_fdm1d_b*.toml):
 
     /usr/bin/python3 figures/fig13_displacement_vs_1d.py --data verify/data/fig12_quick --out fig
+    /usr/bin/python3 figures/fig13_displacement_vs_1d.py --data out/fig12_b0.2 --fdm1d out/fig13_fdm1d_b0.2 --out fig
+
+Prints, per run, how many of its output times have a 1D profile to compare with.
 
 Solid lines with markers: the lattice's shell means u_r (radial.csv, shells binned by undeformed centroid
 radius) at the run's output times (the paper's times). Dashed: fdm1d's nodal u_r at the same times.
@@ -24,10 +28,12 @@ import hmplot
 from hmplot import plt
 
 
-def runs_to_draw(data):
+def runs_to_draw(data, fdm1d=None):
     """[(label, run folder, 1D folder, twin folder, Eq. 16 node folder)]; None where there is none."""
     index = os.path.join(data, "runs.csv")
     if os.path.exists(index):
+        if fdm1d:
+            raise SystemExit(f"--fdm1d goes with a single run folder; {index} names the 1D runs itself")
         with open(index, newline="") as f:
             rows = [r for r in csv.DictReader(f) if r["figure"] == "1"]
         rows.sort(key=lambda r: float(r["b"]))
@@ -37,7 +43,9 @@ def runs_to_draw(data):
 
         return [(r["run"], os.path.join(data, r["run"]), folder(r, "fdm1d"), folder(r, "flux_twin"),
                  folder(r, "eq16_node")) for r in rows]
-    return [(os.path.basename(os.path.normpath(data)), data, None, None, None)]
+    if fdm1d and not os.path.exists(os.path.join(fdm1d, "profiles.csv")):
+        raise SystemExit(f"--fdm1d {fdm1d}: no profiles.csv (a folder `hmlattice fdm1d` wrote)")
+    return [(os.path.basename(os.path.normpath(data)), data, fdm1d, None, None)]
 
 
 def existing(folder, name):
@@ -46,8 +54,9 @@ def existing(folder, name):
 
 
 def main():
-    args = hmplot.arguments(__doc__.splitlines()[0])
-    runs = runs_to_draw(args.data)
+    args = hmplot.arguments(__doc__.splitlines()[0], lambda parser: parser.add_argument(
+        "--fdm1d", help="with a single run folder: an `hmlattice fdm1d` folder at the run's output times"))
+    runs = runs_to_draw(args.data, args.fdm1d)
     fig, axes = plt.subplots(2, len(runs), figsize=(5.2 * len(runs), 7.4), squeeze=False)
     for col, (label, folder, folder_1d, folder_twin, folder_eq16) in enumerate(runs):
         b = hmplot.run_physics(folder, "b")
@@ -64,6 +73,7 @@ def main():
         ax = axes[0][col]
         colors = plt.cm.viridis(np.linspace(0.0, 0.85, len(times)))
         markers = "osD^v<>"
+        n_compared = 0
         for k, t in enumerate(times):
             d = radial[t]
             state = "unbroken" if not (t >= t_first) else "fractured"
@@ -72,8 +82,10 @@ def main():
             if profiles_1d is not None:
                 match = [t1 for t1 in profiles_1d if abs(t1 - t) <= 1e-6 * t]
                 if match:
+                    n_compared += 1
                     d1 = profiles_1d[match[0]]
                     ax.plot(d1["r"], d1["u_r"], "--", color=colors[k], lw=1.2)
+        print(f"fig13: {title}: {len(times)} output times, {n_compared} with a 1D profile")
         if profiles_1d is not None:
             ax.plot([], [], "k--", lw=1.2, label="1D (fdm1d), no fracture")
         twin = existing(folder_twin, "radial.csv")

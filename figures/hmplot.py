@@ -31,11 +31,13 @@ STYLE = {
 }
 
 
-def arguments(description):
-    """Parse --data and --out; create --out."""
+def arguments(description, add_options=None):
+    """Parse --data and --out (and the script's own options, added by add_options(parser)); create --out."""
     parser = argparse.ArgumentParser(description=description)
     parser.add_argument("--data", required=True, help="folder with the CSV files hmlattice wrote")
     parser.add_argument("--out", required=True, help="folder to write the PNG and PDF into")
+    if add_options:
+        add_options(parser)
     args = parser.parse_args()
     os.makedirs(args.out, exist_ok=True)
     plt.rcParams.update(STYLE)
