@@ -311,6 +311,22 @@ TEST_CASE("A particle or cluster that loses its anchoring is frozen rigidly, not
   CHECK(m.displacement().allFinite());
   for (int e : ring) CHECK(m.beam_forces()[static_cast<std::size_t>(e)].force_on_i.norm() == 0.0);
 
+  SECTION("breaks after the re-assembly (fewer free DOFs) still update the factor, not rebuild it") {
+    const int factorisations = m.solver().report().n_factorizations;
+    int broken = 0;
+    for (int e = 0; e < l.n_beams() && broken < 5; e += 97) {
+      const auto [i, j] = l.beams[static_cast<std::size_t>(e)];
+      if (i == p || j == p || l.boundary[i] != BoundaryTag::interior || l.boundary[j] != BoundaryTag::interior) continue;
+      m.break_beam(e);
+      ++broken;
+      REQUIRE(m.solve().is_converged());  // the forward solution exists again before the next break
+    }
+    REQUIRE(broken == 5);
+    INFO(m.solver().report().last_update_failure);
+    CHECK(m.solver().report().n_update_failures == 0);
+    CHECK(m.n_detached_particles() == 1);  // no break above detached anything: no re-assembly
+    CHECK(m.solver().report().n_factorizations == factorisations);
+  }
   SECTION("a fixed boundary particle with no intact beam left: its free rotation would be singular") {
     int b = 0;
     while (l.boundary[static_cast<std::size_t>(b)] != BoundaryTag::outer) ++b;
