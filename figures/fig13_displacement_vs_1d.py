@@ -32,8 +32,6 @@ def runs_to_draw(data, fdm1d=None):
     """[(label, run folder, 1D folder, twin folder, Eq. 16 node folder)]; None where there is none."""
     index = os.path.join(data, "runs.csv")
     if os.path.exists(index):
-        if fdm1d:
-            raise SystemExit(f"--fdm1d goes with a single run folder; {index} names the 1D runs itself")
         with open(index, newline="") as f:
             rows = [r for r in csv.DictReader(f) if r["figure"] == "1"]
         rows.sort(key=lambda r: float(r["b"]))
@@ -43,8 +41,6 @@ def runs_to_draw(data, fdm1d=None):
 
         return [(r["run"], os.path.join(data, r["run"]), folder(r, "fdm1d"), folder(r, "flux_twin"),
                  folder(r, "eq16_node")) for r in rows]
-    if fdm1d and not os.path.exists(os.path.join(fdm1d, "profiles.csv")):
-        raise SystemExit(f"--fdm1d {fdm1d}: no profiles.csv (a folder `hmlattice fdm1d` wrote)")
     return [(os.path.basename(os.path.normpath(data)), data, fdm1d, None, None)]
 
 
@@ -53,9 +49,21 @@ def existing(folder, name):
     return folder if folder and os.path.exists(os.path.join(folder, name)) else None
 
 
+def check_fdm1d(args):
+    """Why --fdm1d cannot be used with these arguments, or None."""
+    if not args.fdm1d:
+        return None
+    if os.path.exists(os.path.join(args.data, "runs.csv")):
+        return f"--fdm1d = {args.fdm1d}: allowed only with a single run folder ({args.data}/runs.csv names its 1D runs)"
+    if not os.path.exists(os.path.join(args.fdm1d, "profiles.csv")):
+        return f"--fdm1d = {args.fdm1d}: allowed: a folder `hmlattice fdm1d` wrote (no profiles.csv there)"
+    return None
+
+
 def main():
     args = hmplot.arguments(__doc__.splitlines()[0], lambda parser: parser.add_argument(
-        "--fdm1d", help="with a single run folder: an `hmlattice fdm1d` folder at the run's output times"))
+        "--fdm1d", help="with a single run folder: an `hmlattice fdm1d` folder at the run's output times"),
+        check_fdm1d)
     runs = runs_to_draw(args.data, args.fdm1d)
     fig, axes = plt.subplots(2, len(runs), figsize=(5.2 * len(runs), 7.4), squeeze=False)
     for col, (label, folder, folder_1d, folder_twin, folder_eq16) in enumerate(runs):

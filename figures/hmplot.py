@@ -31,14 +31,20 @@ STYLE = {
 }
 
 
-def arguments(description, add_options=None):
-    """Parse --data and --out (and the script's own options, added by add_options(parser)); create --out."""
+def arguments(description, add_options=None, check=None):
+    """Parse --data and --out (and the script's own options, added by add_options(parser)); create --out.
+
+    check(args) returns None or a one-line reason the arguments are wrong: then the script exits with
+    code 2 (argparse's usage error) before anything is written."""
     parser = argparse.ArgumentParser(description=description)
     parser.add_argument("--data", required=True, help="folder with the CSV files hmlattice wrote")
     parser.add_argument("--out", required=True, help="folder to write the PNG and PDF into")
     if add_options:
         add_options(parser)
     args = parser.parse_args()
+    reason = check(args) if check else None
+    if reason:
+        parser.error(reason)
     os.makedirs(args.out, exist_ok=True)
     plt.rcParams.update(STYLE)
     return args

@@ -124,7 +124,7 @@ void add_run_command(CLI::App& app, int& exit_code, const std::string& command_l
                   stress_seconds, break_seconds,
                   geometry_seconds, flow_seconds);
     progress.finish(summary);
-    if (n_update_failures > 0)  // to find why CHOLMOD's low-rank updates fail (docs/borehole_fracture.md)
+    if (n_update_failures > 0)  // each cost a refactorisation: say what CHOLMOD reported (docs/borehole_fracture.md)
       std::cout << "last failed update: " << model.mechanics().solver().report().last_update_failure << "\n";
     if (!run.is_ok()) {
       std::cerr << "hmlattice run: numerical failure: " << run.message << "\n";
