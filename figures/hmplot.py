@@ -7,10 +7,18 @@ matplotlib and numpy (Debian's /usr/bin/python3):
 
 It writes <out>/<name>.png and <out>/<name>.pdf via save(). Nothing is computed here that the
 toolkit did not compute: scripts select, label and draw.
+
+--out follows the rule of every hmlattice result folder (core/include/hm/core/result_folder.hpp): it
+may be a new or empty folder (created, and given the marker file .hmlattice) or a folder that holds
+the marker (a run folder, an earlier figure folder), into which the figures are added. Anything else
+is refused before anything is drawn. Each figure file is written completely or not at all.
 """
 import argparse
 import csv
+import datetime
+import json
 import os
+import sys
 import tomllib
 from collections import defaultdict
 
@@ -42,12 +50,93 @@ def arguments(description, add_options=None, check=None):
     if add_options:
         add_options(parser)
     args = parser.parse_args()
-    reason = check(args) if check else None
+    reason = out_folder_problem(args.out) or (check(args) if check else None)
     if reason:
         parser.error(reason)
-    os.makedirs(args.out, exist_ok=True)
     plt.rcParams.update(STYLE)
     return args
+
+
+MARKER = ".hmlattice"
+MARKER_FIRST_LINE = "# hmlattice result folder"
+
+
+def is_result_folder(folder):
+    """True if `folder` holds the toolkit's marker file (a regular file starting with its first line)."""
+    marker = os.path.join(folder, MARKER)
+    if os.path.islink(marker) or not os.path.isfile(marker):
+        return False
+    with open(marker, errors="replace") as f:
+        return f.readline().startswith(MARKER_FIRST_LINE)
+
+
+def out_folder_problem(out):
+    """None if figures may be written into `out`, else the one-line reason (the rule of hmlattice's --out)."""
+    shown = out.rstrip("/") or out
+    allowed = "allowed: a new or empty folder, or a folder that hmlattice wrote"
+    if not shown:
+        return f"--out = '' is empty; {allowed}"
+    absolute = os.path.normpath(os.path.abspath(shown))
+    if absolute == os.path.dirname(absolute):
+        return f"--out = '{shown}' is the root folder; {allowed}"
+    where = os.path.join(os.path.realpath(os.path.dirname(absolute)), os.path.basename(absolute))
+    cwd = os.path.realpath(os.getcwd())
+    if cwd == where or cwd.startswith(where.rstrip("/") + "/"):
+        return f"--out = '{shown}' is the working directory or a folder above it; {allowed}"
+    home = os.environ.get("HOME")
+    if home and os.path.realpath(home) == where:
+        return f"--out = '{shown}' is the home directory; {allowed}"
+    if os.path.islink(where):
+        return f"--out = '{shown}' is a symbolic link; {allowed}"
+    if not os.path.lexists(where):
+        up = os.path.dirname(where)
+        while not os.path.lexists(up) and up != os.path.dirname(up):
+            up = os.path.dirname(up)
+        return None if os.path.isdir(up) else f"--out = '{shown}' lies under '{up}', which is not a folder; {allowed}"
+    if os.path.isdir(where):
+        if not os.listdir(where) or is_result_folder(where):
+            return None
+        return f"--out = '{shown}' is a folder with files that hmlattice did not write; {allowed}"
+    if os.path.isfile(where):
+        return f"--out = '{shown}' is a file; {allowed}"
+    return f"--out = '{shown}' is a device, pipe or socket; {allowed}"
+
+
+def _fail_writing(path, error):
+    print(f"{os.path.basename(sys.argv[0])}: cannot write '{path}': {error.strerror or error}", file=sys.stderr)
+    sys.exit(1)
+
+
+def _prepare_out(out):
+    """Create `out` if needed and give it the marker unless it has one (checked by arguments() already)."""
+    try:
+        os.makedirs(out, exist_ok=True)
+        if is_result_folder(out):
+            return
+        command = json.dumps(" ".join([os.path.basename(sys.executable)] + sys.argv))  # a valid TOML string
+        stamp = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
+        _write_atomically(os.path.join(out, MARKER), lambda path: _write_text(path, (
+            f"{MARKER_FIRST_LINE}: written by the command below; `--overwrite` may replace this folder.\n"
+            f'command_line = {command}\nversion = "figures"\nutc_time = "{stamp}"\n')))
+    except OSError as e:
+        _fail_writing(e.filename or out, e)
+
+
+def _write_text(path, text):
+    with open(path, "w") as f:
+        f.write(text)
+
+
+def _write_atomically(path, write):
+    """write(partial_path), then rename onto `path`: a failed write leaves no half-written file."""
+    partial = os.path.join(os.path.dirname(path) or ".", "." + os.path.basename(path) + ".partial")
+    try:
+        write(partial)
+        os.replace(partial, path)
+    except BaseException:
+        if os.path.exists(partial):
+            os.remove(partial)
+        raise
 
 
 def read_csv(path):
@@ -89,8 +178,13 @@ def group_by(columns, key):
 
 
 def save(fig, out, name):
-    """Write <out>/<name>.png and .pdf and close the figure."""
+    """Write <out>/<name>.png and .pdf (each completely or not at all) and close the figure."""
     fig.tight_layout()
+    _prepare_out(out)
     for ext in ("png", "pdf"):
-        fig.savefig(os.path.join(out, f"{name}.{ext}"))
+        path = os.path.join(out, f"{name}.{ext}")
+        try:
+            _write_atomically(path, lambda partial: fig.savefig(partial, format=ext))
+        except OSError as e:
+            _fail_writing(path, e)
     plt.close(fig)

@@ -1,7 +1,7 @@
 #include "hm/analytic/physical_parameters.hpp"
 
 #include "hm/analytic/biot_modulus.hpp"
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/analytic/validation.hpp"
 
 namespace hm::analytic {

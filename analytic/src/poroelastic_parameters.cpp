@@ -1,6 +1,6 @@
 #include "hm/analytic/poroelastic_parameters.hpp"
 
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/analytic/validation.hpp"
 
 namespace hm::analytic {

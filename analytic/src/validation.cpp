@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/input_error.hpp"
 
 namespace hm::analytic {
 

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "discretisation.hpp"
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/analytic/validation.hpp"
 
 namespace hm::fdm1d {

@@ -8,7 +8,7 @@
 #include <Eigen/Cholesky>
 
 #include "hm/analytic/validation.hpp"
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/input_error.hpp"
 
 namespace hm::lattice2d {
 

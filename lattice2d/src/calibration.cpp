@@ -6,7 +6,7 @@
 #include <numbers>
 #include <sstream>
 
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/analytic/validation.hpp"
 #include "hm/lattice2d/dual_graph.hpp"
 #include "hm/lattice2d/mechanics.hpp"

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <utility>
 
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/analytic/validation.hpp"
 #include "hm/lattice2d/anderson_acceleration.hpp"
 #include "hm/lattice2d/fracture_statistics.hpp"

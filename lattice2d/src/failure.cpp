@@ -7,7 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "hm/lattice2d/vtk_writer.hpp"
+#include "hm/core/file_output.hpp"
 
 namespace hm::lattice2d {
 
@@ -101,7 +101,7 @@ BreakEvent make_break_event(const Lattice& lattice, const BreakCandidate& candid
 
 void write_break_log(const std::filesystem::path& path, const std::vector<BreakEvent>& events,
                      const std::string& load_column) {
-  write_file_atomically(path, [&](std::ostream& out) {
+  core::write_file_atomically(path, [&](std::ostream& out) {
     out << "sequence,beam,particle_i,particle_j,x,y," << load_column
         << ",sigma_1,sigma_3,ratio,crack_tip_factor,mode\n";
     char buf[32];

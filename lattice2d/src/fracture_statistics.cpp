@@ -9,9 +9,9 @@
 
 #include <Eigen/Geometry>
 
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/file_output.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/analytic/validation.hpp"
-#include "hm/lattice2d/vtk_writer.hpp"
 
 namespace hm::lattice2d {
 
@@ -241,7 +241,7 @@ FractureStatistics compute_fracture_statistics(const Lattice& lattice, const std
 }
 
 void write_fracture_table(const std::filesystem::path& path, const std::vector<FractureSnapshot>& snapshots) {
-  write_file_atomically(path, [&](std::ostream& out) {
+  core::write_file_atomically(path, [&](std::ostream& out) {
     out << "t,fracture,kind,n_beams,connected_to_borehole,reaches_outer,r_min,r_max,length,angle_deg,n_tensile,"
            "n_shear,extent\n";
     for (const FractureSnapshot& snap : snapshots)
@@ -254,7 +254,7 @@ void write_fracture_table(const std::filesystem::path& path, const std::vector<F
 }
 
 void write_fracture_summary(const std::filesystem::path& path, const std::vector<FractureSnapshot>& snapshots) {
-  write_file_atomically(path, [&](std::ostream& out) {
+  core::write_file_atomically(path, [&](std::ostream& out) {
     out << "t,n_broken,n_fractures,n_radial,n_radial_reaching_outer,n_secondary,n_arms,n_tensile,n_shear,"
            "max_radial_extent,n_secondary_sizable\n";
     for (const FractureSnapshot& snap : snapshots) {

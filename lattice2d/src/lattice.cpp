@@ -8,7 +8,7 @@
 #include <tuple>
 
 #include "delaunay.hpp"
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/analytic/validation.hpp"
 #include "point_sampling.hpp"
 

@@ -11,7 +11,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/SparseCore>
 
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/analytic/validation.hpp"
 
 namespace hm::lattice2d {

@@ -3,7 +3,7 @@
 #include <cassert>
 #include <cmath>
 
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/analytic/validation.hpp"
 
 namespace hm::lattice2d {

@@ -10,7 +10,7 @@
 #include <Eigen/IterativeLinearSolvers>
 #include <cholmod.h>
 
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/analytic/validation.hpp"
 #include "subtree_solve.hpp"
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <random>
 
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/analytic/validation.hpp"
 
 namespace hm::lattice2d {

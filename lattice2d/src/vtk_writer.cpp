@@ -10,28 +10,11 @@
 #include <system_error>
 #include <type_traits>
 
+#include "hm/core/file_output.hpp"
+
 namespace hm::lattice2d {
 
 namespace fs = std::filesystem;
-
-void write_file_atomically(const fs::path& path, const std::function<void(std::ostream&)>& write) {
-  fs::path partial = path;
-  partial += ".partial";
-  try {
-    {
-      std::ofstream out(partial, std::ios::binary | std::ios::trunc);
-      if (!out) throw std::runtime_error("cannot open '" + partial.string() + "' for writing");
-      write(out);
-      out.close();
-      if (!out) throw std::runtime_error("writing '" + partial.string() + "' failed (disk full?)");
-    }
-    fs::rename(partial, path);
-  } catch (...) {
-    std::error_code ec;  // best effort: the original error is the one to report
-    fs::remove(partial, ec);
-    throw;
-  }
-}
 
 namespace {
 
@@ -162,7 +145,7 @@ void write_vtu(const fs::path& path, const Lattice& lattice, const DualGraph& du
   const auto state = [&](long e) -> int {
     return s.beam_states.empty() ? 0 : static_cast<int>(s.beam_states[static_cast<std::size_t>(e)]);
   };
-  write_file_atomically(path, [&](std::ostream& out) {
+  core::write_file_atomically(path, [&](std::ostream& out) {
     ArrayWriter w(out, format);
     out << "<?xml version=\"1.0\"?>\n"
            "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\""
@@ -229,7 +212,7 @@ void write_vtu(const fs::path& path, const Lattice& lattice, const DualGraph& du
 }
 
 void write_pvd(const fs::path& path, const std::vector<PvdEntry>& entries) {
-  write_file_atomically(path, [&](std::ostream& out) {
+  core::write_file_atomically(path, [&](std::ostream& out) {
     out << "<?xml version=\"1.0\"?>\n"
            "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
            "  <Collection>\n";

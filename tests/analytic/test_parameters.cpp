@@ -8,7 +8,7 @@
 
 #include "approx.hpp"
 #include "hm/analytic/biot_modulus.hpp"
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/analytic/physical_parameters.hpp"
 #include "hm/analytic/poroelastic_parameters.hpp"
 

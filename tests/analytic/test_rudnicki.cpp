@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "approx.hpp"
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/analytic/rudnicki.hpp"
 
 using hm::analytic::PoroelasticParameters;

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "approx.hpp"
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/analytic/lame.hpp"
 #include "hm/analytic/steady_borehole.hpp"
 #include "hm/analytic/physical_parameters.hpp"

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/analytic/physical_parameters.hpp"
 #include "hm/fdm1d/fdm1d.hpp"
 #include "hm/fdm1d/odeint_reference.hpp"

@@ -2,7 +2,7 @@
 
 #include <Eigen/Dense>
 
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/lattice2d/anderson_acceleration.hpp"
 
 using hm::lattice2d::AndersonAcceleration;

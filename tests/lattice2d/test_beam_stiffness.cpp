@@ -7,7 +7,7 @@
 #include <Eigen/SparseCholesky>
 
 #include "approx.hpp"
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/lattice2d/beam_stiffness.hpp"
 #include "hm/lattice2d/lattice.hpp"
 

@@ -8,7 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include "approx.hpp"
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/lattice2d/calibration.hpp"
 #include "lattice2d/lattice_fixtures.hpp"
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/lattice2d/calibration.hpp"
 #include "hm/lattice2d/coupled_model.hpp"
 #include "hm/lattice2d/strength.hpp"

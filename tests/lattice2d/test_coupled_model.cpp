@@ -5,7 +5,7 @@
 #include <utility>
 #include <vector>
 
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/lattice2d/coupled_model.hpp"
 #include "lattice2d/lattice_fixtures.hpp"
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "approx.hpp"
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/lattice2d/beam_stiffness.hpp"
 #include "hm/lattice2d/coupling.hpp"
 #include "hm/lattice2d/mechanics.hpp"

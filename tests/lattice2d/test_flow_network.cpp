@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "approx.hpp"
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/analytic/rudnicki.hpp"
 #include "hm/analytic/steady_borehole.hpp"
 #include "hm/lattice2d/flow_network.hpp"

@@ -12,7 +12,7 @@
 
 #include <Eigen/Dense>
 
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/lattice2d/flow_network.hpp"
 #include "lattice2d/lattice_fixtures.hpp"
 

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "approx.hpp"
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/lattice2d/fracture.hpp"
 
 using namespace hm::lattice2d;

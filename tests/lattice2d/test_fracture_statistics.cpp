@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "approx.hpp"
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/lattice2d/fracture.hpp"
 #include "hm/lattice2d/fracture_statistics.hpp"
 #include "lattice_fixtures.hpp"

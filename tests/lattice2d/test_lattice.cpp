@@ -6,7 +6,7 @@
 #include <string>
 
 #include "approx.hpp"
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/lattice2d/lattice.hpp"
 #include "lattice2d/lattice_fixtures.hpp"
 

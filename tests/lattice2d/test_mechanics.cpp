@@ -4,7 +4,7 @@
 #include <iostream>
 #include <vector>
 
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/lattice2d/mechanics.hpp"
 #include "hm/lattice2d/particle_stress.hpp"
 

@@ -8,7 +8,7 @@
 #include <Eigen/SparseCholesky>
 #include <omp.h>
 
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/lattice2d/beam_stiffness.hpp"
 #include "hm/lattice2d/lattice.hpp"
 #include "hm/lattice2d/spd_solver.hpp"

@@ -15,7 +15,7 @@
 #include <catch2/catch.hpp>
 
 #include "approx.hpp"
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/analytic/lame.hpp"
 #include "hm/lattice2d/beam_stiffness.hpp"
 #include "hm/lattice2d/calibration.hpp"

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "approx.hpp"
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/lattice2d/strength.hpp"
 
 using namespace hm::lattice2d;

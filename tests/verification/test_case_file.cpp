@@ -4,7 +4,7 @@
 
 #include "approx.hpp"
 #include "hm/analytic/biot_modulus.hpp"
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/verification/case_file.hpp"
 #include "verification/run_command.hpp"
 

@@ -6,7 +6,6 @@
 #include <stdexcept>
 
 #include "hm/verification/harness.hpp"
-#include "hm/verification/output_dir.hpp"
 #include "verification/run_command.hpp"
 
 using namespace hm::verification;
@@ -133,22 +132,4 @@ TEST_CASE("Figures of the same file name from two benchmarks go to separate fold
   CHECK_THAT(md, Catch::Contains("](figures/demo.paper/same.png)"));
   CHECK(std::filesystem::is_directory(options.out_dir / "figures" / "demo.quick"));
   CHECK(std::filesystem::is_directory(options.out_dir / "figures" / "demo.paper"));
-}
-
-TEST_CASE("A staged output folder appears only on commit", "[verification][harness]") {
-  TempDir dir("staged");
-  const auto target = dir.path / "run";
-  {
-    StagedDirectory staged(target);
-    std::ofstream(staged.path() / "half.csv") << "t\n";
-    CHECK_FALSE(std::filesystem::exists(target));
-  }  // abandoned, as when a run throws
-  CHECK_FALSE(std::filesystem::exists(target));
-  CHECK(dir.is_empty());
-  {
-    StagedDirectory staged(target);
-    std::ofstream(staged.path() / "done.csv") << "t\n";
-    staged.commit();
-  }
-  CHECK(std::filesystem::exists(target / "done.csv"));
 }

@@ -1,19 +1,20 @@
-// hmlattice fdm1d <case.toml> [--out DIR]
+// hmlattice fdm1d <case.toml> [--out DIR] [--overwrite]
 //
 // Runs the radial 1D poroelastic model of the paper's Appendix A (monolithic implicit Euler) on a
 // case file and writes, into DIR (default out/<case name>):
 //   borehole.csv, profiles.csv, probes.csv, steady_state.csv  (see hm/verification/fdm1d_output.hpp)
 //   config.toml                              the resolved case + provenance; rerunnable as a case
+// DIR must be new or empty, or an earlier result folder with --overwrite (hm/core/result_folder.hpp).
 // Example: hmlattice fdm1d cases/fig10_fdm1d_b0.5.toml --out out/fig10
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 
 #include "commands.hpp"
+#include "hm/core/file_output.hpp"
+#include "hm/core/result_folder.hpp"
 #include "hm/fdm1d/fdm1d.hpp"
 #include "hm/verification/fdm1d_case.hpp"
 #include "hm/verification/fdm1d_output.hpp"
-#include "hm/verification/output_dir.hpp"
 #include "hm/verification/progress.hpp"
 #include "hm/verification/provenance.hpp"
 
@@ -22,17 +23,16 @@ namespace hm::app {
 void add_fdm1d_command(CLI::App& app, int& exit_code, const std::string& command_line) {
   struct Args {
     std::string case_file, out;
+    bool overwrite = false;
   };
   auto a = std::make_shared<Args>();
   auto* cmd = app.add_subcommand("fdm1d", "Run the radial 1D finite-difference model (Appendix A) on a case");
   cmd->add_option("case", a->case_file, "case file (TOML), e.g. cases/fig10_fdm1d_b0.5.toml")->required();
-  cmd->add_option("--out", a->out, "output folder [default: out/<case name>]");
+  add_output_options(*cmd, a->out, a->overwrite);
   cmd->callback([a, &exit_code, command_line] {
-    // 1. Read and validate everything before anything is written.
+    // 1. Read and validate everything, the output folder included, before computing.
     const verification::Fdm1dCase c = verification::read_fdm1d_case(a->case_file);
-    const std::filesystem::path out =
-        a->out.empty() ? std::filesystem::path("out") / std::filesystem::path(a->case_file).stem()
-                       : std::filesystem::path(a->out);
+    core::ResultFolder out(output_folder(a->out, a->case_file), "--out", a->overwrite, command_line);
     const auto& p = c.physics.parameters;
     std::cout << "fdm1d: Q = " << p.Q << ", b = " << p.material.b << ", nu = " << p.material.nu
               << ", E/M = " << p.material.E_over_M << ", R_i = " << p.R_i << ", vol_strain = "
@@ -54,12 +54,12 @@ void add_fdm1d_command(CLI::App& app, int& exit_code, const std::string& command
     }
 
     // 3. Write the results and the resolved configuration together, or nothing.
-    verification::StagedDirectory staged(out);
-    verification::write_fdm1d_results(staged.path(), result, p);
-    std::ofstream(staged.path() / "config.toml")
-        << verification::fdm1d_case_to_toml(c, verification::to_toml(verification::make_provenance(command_line)));
-    staged.commit();
-    std::cout << "Results: " << out.string() << "/{borehole,profiles,probes,steady_state}.csv, config.toml\n";
+    verification::write_fdm1d_results(out.path(), result, p);
+    core::write_file_atomically(out.path() / "config.toml", [&](std::ostream& f) {
+      f << verification::fdm1d_case_to_toml(c, verification::to_toml(verification::make_provenance(command_line)));
+    });
+    out.commit();
+    std::cout << "Results: " << out.target().string() << "/{borehole,profiles,probes,steady_state}.csv, config.toml\n";
   });
 }
 

@@ -1,4 +1,4 @@
-// hmlattice run <case.toml> [--out DIR]
+// hmlattice run <case.toml> [--out DIR] [--overwrite]
 //
 // Runs the two-way coupled 2D lattice model of Sections 2.1-2.3 (beam mechanics + dual-graph flow,
 // drained or undrained operator split iterated to convergence in every time step, Fig. 5) on a case
@@ -8,20 +8,21 @@
 //   radial.csv   radially averaged u_r and p at the output times (Figs. 7, 13, 15)
 //   vtk/         lattice.pvd + lattice_NNNN.vtu snapshots for ParaView (pressure per triangle)
 //   config.toml  the resolved case + provenance; rerunnable as a case
+// DIR must be new or empty, or an earlier result folder with --overwrite (hm/core/result_folder.hpp).
 // Examples:
 //   hmlattice run cases/fig07_rudnicki_free_quick.toml --out out/fig07_quick
 //   hmlattice run cases/fig07_rudnicki_free.toml
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 
 #include "commands.hpp"
+#include "hm/core/file_output.hpp"
+#include "hm/core/result_folder.hpp"
 #include "hm/lattice2d/calibration.hpp"
 #include "hm/lattice2d/coupled_model.hpp"
 #include "hm/lattice2d/strength.hpp"
-#include "hm/verification/output_dir.hpp"
 #include "hm/verification/progress.hpp"
 #include "hm/verification/provenance.hpp"
 #include "hm/verification/run_case.hpp"
@@ -47,17 +48,16 @@ int remaining_steps(double t, double dt, const lattice2d::TimeStepping& s) {
 void add_run_command(CLI::App& app, int& exit_code, const std::string& command_line) {
   struct Args {
     std::string case_file, out;
+    bool overwrite = false;
   };
   auto a = std::make_shared<Args>();
   auto* cmd = app.add_subcommand("run", "Run the coupled 2D lattice model (Sections 2.1-2.3) on a case");
   cmd->add_option("case", a->case_file, "case file (TOML), e.g. cases/fig07_rudnicki_free.toml")->required();
-  cmd->add_option("--out", a->out, "output folder [default: out/<case name>]");
+  add_output_options(*cmd, a->out, a->overwrite);
   cmd->callback([a, &exit_code, command_line] {
-    // 1. Read and validate everything before anything is written.
+    // 1. Read and validate everything, the output folder included, before computing.
     const verification::RunCase c = verification::read_run_case(a->case_file);
-    const std::filesystem::path out =
-        a->out.empty() ? std::filesystem::path("out") / std::filesystem::path(a->case_file).stem()
-                       : std::filesystem::path(a->out);
+    core::ResultFolder out(output_folder(a->out, a->case_file), "--out", a->overwrite, command_line);
     const auto& p = c.physics.parameters;
     std::cout << "run: Q = " << p.Q << ", b = " << p.material.b << ", E/M = " << p.material.E_over_M
               << ", iota = " << p.iota << "; " << to_string(c.lattice.domain) << ", N = " << c.lattice.n_particles
@@ -80,8 +80,7 @@ void add_run_command(CLI::App& app, int& exit_code, const std::string& command_l
               << " beams, " << model.lattice().n_triangles() << " triangles\n";
 
     // 3. Run: the initial state, then while time remains a coupled step; each step is recorded.
-    verification::StagedDirectory staged(out);
-    verification::RunRecorder recorder(staged.path(), c);
+    verification::RunRecorder recorder(out.path(), c);
     verification::ProgressReporter progress(std::cout, "run");
     int step = 0;
     double step_seconds = 0.0, mechanics_seconds = 0.0, geometry_seconds = 0.0, flow_seconds = 0.0,
@@ -129,15 +128,16 @@ void add_run_command(CLI::App& app, int& exit_code, const std::string& command_l
     if (!run.is_ok()) {
       std::cerr << "hmlattice run: numerical failure: " << run.message << "\n";
       exit_code = 1;
-      return;  // the staged folder is removed: no partial results
+      return;  // the staging folder is removed: no partial results
     }
 
     // 4. The resolved configuration beside the results, then everything appears at once.
     recorder.finish();
-    std::ofstream(staged.path() / "config.toml")
-        << verification::run_case_to_toml(c, verification::to_toml(verification::make_provenance(command_line)));
-    staged.commit();
-    std::cout << "Results: " << out.string() << (c.fracture_enabled ? "/{series,radial,breaks,breakdown,fractures,fracture_summary}.csv, " : "/{series,radial}.csv, ") << (c.output.vtk ? "vtk/lattice.pvd, " : "")
+    core::write_file_atomically(out.path() / "config.toml", [&](std::ostream& f) {
+      f << verification::run_case_to_toml(c, verification::to_toml(verification::make_provenance(command_line)));
+    });
+    out.commit();
+    std::cout << "Results: " << out.target().string() << (c.fracture_enabled ? "/{series,radial,breaks,breakdown,fractures,fracture_summary}.csv, " : "/{series,radial}.csv, ") << (c.output.vtk ? "vtk/lattice.pvd, " : "")
               << "config.toml\n";
   });
 }

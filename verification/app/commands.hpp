@@ -2,6 +2,8 @@
 // The subcommands of `hmlattice`. Each adds itself to the CLI11 app; its callback runs the
 // command and stores the process exit code in `exit_code` (0 ok, 1 failed checks).
 #include <CLI/CLI.hpp>
+#include <filesystem>
+#include <string>
 
 namespace hm::app {
 
@@ -10,5 +12,10 @@ void add_verify_command(CLI::App& app, int& exit_code, const std::string& comman
 void add_fdm1d_command(CLI::App& app, int& exit_code, const std::string& command_line);
 void add_run_command(CLI::App& app, int& exit_code, const std::string& command_line);
 void add_fractures_command(CLI::App& app, const std::string& command_line);
+
+/// Adds --out DIR and --overwrite to a command that writes a result folder.
+void add_output_options(CLI::App& cmd, std::string& out, bool& overwrite);
+/// The result folder of a case: `out` if given, otherwise out/<case file name without extension>.
+std::filesystem::path output_folder(const std::string& out, const std::string& case_file);
 
 }  // namespace hm::app

@@ -13,7 +13,7 @@
 #include <string>
 
 #include "commands.hpp"
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/verification/blas_threads.hpp"
 
 namespace {

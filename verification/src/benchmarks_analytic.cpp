@@ -16,6 +16,7 @@
 #include "hm/analytic/rudnicki.hpp"
 #include "hm/analytic/sneddon.hpp"
 #include "hm/analytic/steady_borehole.hpp"
+#include "hm/core/file_output.hpp"
 #include "hm/verification/benchmark.hpp"
 #include "hm/verification/csv_writer.hpp"
 
@@ -93,7 +94,8 @@ BenchmarkResult steady_borehole(const BenchmarkContext& ctx) {
   res.metrics.push_back({.name = "flux -2 pi r dp/dr = Q at R_i, 0.5, 1 (rel.)", .value = worst_flux,
                          .tolerance = 1e-8, .comparison = Comparison::at_most, .justification = fd_reason});
 
-  std::ofstream csv(ctx.data_dir / "analytic_steady_borehole.csv");
+  const std::filesystem::path csv_path = ctx.data_dir / "analytic_steady_borehole.csv";
+  std::ofstream csv = core::open_for_writing(csv_path);
   CsvWriter w(csv, {"b", "r", "p", "u_r", "sigma_r", "sigma_theta", "sigma_z"});
   for (double b : {0.2, 0.5, 0.8}) {
     const SteadyBorehole sol(Q, b, nu, R_i);
@@ -107,13 +109,15 @@ BenchmarkResult steady_borehole(const BenchmarkContext& ctx) {
                          "effective stresses for b = 0.2, 0.5, 0.8."});
   res.notes.push_back("The printed B5-B9 contain misprints; the implemented forms are re-derived and listed in "
                       "`docs/errata.md`. This benchmark checks the implemented forms against B2 itself.");
+  core::close_checked(csv, csv_path);
   return res;
 }
 
 BenchmarkResult rudnicki(const BenchmarkContext& ctx) {
   BenchmarkResult res;
   const double Q = 0.1, t = 3e-4;
-  std::ofstream csv(ctx.data_dir / "analytic_rudnicki.csv");
+  const std::filesystem::path csv_path = ctx.data_dir / "analytic_rudnicki.csv";
+  std::ofstream csv = core::open_for_writing(csv_path);
   CsvWriter w(csv, {"vol_strain", "r", "p", "u_r"});
   for (VolStrain vs : {VolStrain::plane_strain, VolStrain::appendix_a}) {
     PoroelasticParameters m;
@@ -169,6 +173,7 @@ BenchmarkResult rudnicki(const BenchmarkContext& ctx) {
   res.figures.push_back({"verify_rudnicki.py", "verify_rudnicki.png",
                          "Rudnicki line source, Q = 0.1, b = 0.5, t = 3e-4 (the paper's Fig. 7 setting): p and u_r "
                          "for both volumetric-strain variants."});
+  core::close_checked(csv, csv_path);
   return res;
 }
 

@@ -16,6 +16,7 @@
 #include <fstream>
 
 #include "hm/analytic/rudnicki.hpp"
+#include "hm/core/file_output.hpp"
 #include "hm/lattice2d/calibration.hpp"
 #include "hm/lattice2d/coupled_model.hpp"
 #include "hm/lattice2d/radial_average.hpp"
@@ -108,15 +109,15 @@ RudnickiOutcome run_variant(const RudnickiVariant& v, const BenchmarkContext& ct
   continuum.nu = lt::calibrated_continuum().poisson_ratio;
   continuum.vol_strain = analytic::VolStrain::plane_strain;
   const analytic::RudnickiLineSource exact(c.physics.parameters.Q, continuum);
-  {  // the reference beside the run, for figures/fig07_rudnicki.py (which computes nothing itself)
-    std::ofstream file(dir / "analytic.csv");
+  // The reference beside the run, for figures/fig07_rudnicki.py (which computes nothing itself).
+  core::write_file_atomically(dir / "analytic.csv", [&](std::ostream& file) {
     CsvWriter w(file, {"t", "r", "p", "u_r"});
     const double t = c.stepping.t_end;
     for (int k = 1; k <= 400; ++k) {  // r* = 0.0005 ... radial_max, fine enough for a smooth line
       const double r = c.output.radial_max * k / 400.0;
       w.row({t, r, exact.pressure(r, t), exact.radial_displacement(r, t)});
     }
-  }
+  });
   for (std::size_t k = 0; k < o.fields.r_mean.size(); ++k) {
     const double r = o.fields.r_mean[k];
     if (!(r >= 0.01 && r <= 0.05)) continue;
@@ -269,7 +270,8 @@ BenchmarkResult psi_study(const BenchmarkContext& ctx) {
   const long long n = ctx.tier == Tier::paper ? 30000 : 10000;
   const std::filesystem::path dir = ctx.data_dir / "psi_study";
   std::filesystem::create_directories(dir);
-  std::ofstream pass_file(dir / "passes.csv");
+  const std::filesystem::path pass_file_path = dir / "passes.csv";
+  std::ofstream pass_file = core::open_for_writing(pass_file_path);
   CsvWriter passes(pass_file, {"psi", "pass", "p_shell"});
   Table table{"Psi study at N = " + fmt(static_cast<double>(n)) +
                   ": the Fig. 7 run to t* = 3e-4 (27 steps) with each Psi, and one step dt = 3e-4 from rest",
@@ -368,6 +370,7 @@ BenchmarkResult psi_study(const BenchmarkContext& ctx) {
                          "step dt = 3e-4 from rest, for each Psi (Psi = 0: the drained split); right, its relative "
                          "distance from the same Psi's last (converged) pass.",
                          "psi_study"});
+  core::close_checked(pass_file, pass_file_path);
   return res;
 }
 

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "hm/analytic/lame.hpp"
+#include "hm/core/file_output.hpp"
 #include "hm/lattice2d/calibration.hpp"
 #include "hm/lattice2d/dual_graph.hpp"
 #include "hm/lattice2d/mechanics.hpp"
@@ -203,13 +204,12 @@ BenchmarkResult patch_test(const BenchmarkContext& ctx) {
   res.tables.push_back(table);
 
   // Histogram data for the scatter: one row per region particle.
-  {
-    std::ofstream out(ctx.data_dir / "lattice_patch_test.csv");
+  core::write_file_atomically(ctx.data_dir / "lattice_patch_test.csv", [&](std::ostream& out) {
     CsvWriter csv(out, {"x", "y", "sigma_xx", "sigma_yy", "sigma_xy", "expected_xx", "expected_yy", "expected_xy"});
     for (int i : chosen)
       csv.row({lattice.points(0, i), lattice.points(1, i), stress.stress(0, i), stress.stress(1, i), stress.stress(2, i),
                expected[0], expected[1], expected[2]});
-  }
+  });
 
   res.metrics.push_back({.name = "|mean interior stress - calibrated continuum| / |sigma|", .value = error,
                          .tolerance = 0.02, .comparison = Comparison::at_most,
@@ -319,7 +319,8 @@ BenchmarkResult lame(const BenchmarkContext& ctx) {
   const l2::ElasticConstants cal = l2::calibrated_continuum();
   const std::vector<long long> resolutions =
       ctx.tier == Tier::paper ? std::vector<long long>{10000, 100000} : std::vector<long long>{2500, 10000};
-  std::ofstream out(ctx.data_dir / "lattice_lame.csv");
+  const std::filesystem::path out_path = ctx.data_dir / "lattice_lame.csv";
+  std::ofstream out = core::open_for_writing(out_path);
   CsvWriter csv(out, {"n_particles", "outer_fixed", "r_u", "u_r", "u_r_exact", "r_sigma", "sigma_theta",
                       "sigma_theta_exact"});
   Table table{"Lame cylinder R_i = 0.138, p_i = 1e-4, calibrated beams; 16 radial shells; lattice against the "
@@ -386,6 +387,7 @@ BenchmarkResult lame(const BenchmarkContext& ctx) {
                          "resolutions) against the plane-strain solution with the calibrated E, nu (lines), free and "
                          "fixed outer boundary.",
                          ""});
+  core::close_checked(out, out_path);
   return res;
 }
 

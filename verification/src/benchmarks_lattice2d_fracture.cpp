@@ -15,6 +15,7 @@
 #include <Eigen/Dense>
 
 #include "hm/analytic/sneddon.hpp"
+#include "hm/core/file_output.hpp"
 #include "hm/lattice2d/calibration.hpp"
 #include "hm/lattice2d/fracture.hpp"
 #include "hm/lattice2d/vtk_writer.hpp"
@@ -221,7 +222,8 @@ BenchmarkResult sneddon(const BenchmarkContext& ctx) {
   const double nu_measured = em.lateral_ratio / (1 + em.lateral_ratio);  // plane strain: nu_2D = nu/(1 - nu)
   const l2::ElasticConstants continuum = l2::calibrated_continuum();
   const double e_prime = continuum.youngs_modulus / (1 - continuum.poisson_ratio * continuum.poisson_ratio);
-  std::ofstream out(ctx.data_dir / "lattice2d_sneddon.csv");
+  const std::filesystem::path out_path = ctx.data_dir / "lattice2d_sneddon.csv";
+  std::ofstream out = core::open_for_writing(out_path);
   CsvWriter csv(out, {"case", "c_nominal", "boundary", "x", "aperture", "aperture_sneddon", "x_upper", "uy_upper", "x_lower", "uy_lower",
                       "normal_opening", "c_effective", "x_center", "max_aperture_sneddon"});
   std::vector<SneddonRun> runs;
@@ -295,6 +297,7 @@ BenchmarkResult sneddon(const BenchmarkContext& ctx) {
   res.figures.push_back({"figC2_sneddon.py", "figC2_sneddon.png",
                          "Fig. C2: aperture along the pressurised crack of broken beams against Eq. C1 (free and fixed "
                          "outer boundary), and the displacement of the particles on both faces."});
+  core::close_checked(out, out_path);
   return res;
 }
 
@@ -336,7 +339,8 @@ BenchmarkResult uniaxial_tension(const BenchmarkContext& ctx) {
   options.load_increment = 0.05 * t_u / e_prime;
   options.max_load = 20 * t_u / e_prime;
   options.max_breaks = paper ? 40000 : 10000;
-  std::ofstream out(ctx.data_dir / "lattice2d_uniaxial_tension.csv");
+  const std::filesystem::path out_path = ctx.data_dir / "lattice2d_uniaxial_tension.csv";
+  std::ofstream out = core::open_for_writing(out_path);
   CsvWriter csv(out, {"strain", "mean_stress", "n_broken", "next_break_strain"});
   l2::VtkSeries series(ctx.data_dir / "lattice2d_uniaxial_tension_vtk", "uniaxial_tension");
   double peak = 0, peak_strain = 0, last = 0, last_strain = 0;
@@ -408,6 +412,7 @@ BenchmarkResult uniaxial_tension(const BenchmarkContext& ctx) {
       "resolution (L ~ 1e-2 > 2 L_m) the first crack then runs unstably across, so the peak is the first-break "
       "stress. Break log: lattice2d_uniaxial_tension_breaks.csv; VTK: lattice2d_uniaxial_tension_vtk/." +
       (result.message.empty() ? std::string() : " Run status: " + result.message));
+  core::close_checked(out, out_path);
   return res;
 }
 

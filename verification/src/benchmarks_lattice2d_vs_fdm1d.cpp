@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "hm/analytic/physical_parameters.hpp"
+#include "hm/core/file_output.hpp"
 #include "hm/fdm1d/fdm1d.hpp"
 #include "hm/lattice2d/calibration.hpp"
 #include "hm/lattice2d/coupled_model.hpp"
@@ -324,14 +325,17 @@ Metric balance_metric(const Outcome& o) {
 
 /// The comparison's CSV files (one set per tier), read by figures/verify_lattice_vs_fdm1d.py.
 struct Files {
+  fs::path folder;
   std::ofstream ph_file, p2d_file, p1d_file;
   std::unique_ptr<CsvWriter> ph, p2d, p1d;
   explicit Files(const fs::path& root)
-      : ph_file(root / "ph_history.csv"), p2d_file(root / "profiles_2d.csv"), p1d_file(root / "profiles_1d.csv") {
-    if (!ph_file || !p2d_file || !p1d_file) throw std::runtime_error("cannot write into " + root.string());
-    std::ofstream window_file(root / "window.csv");
-    CsvWriter(window_file, {"t_window", "t_early"}).row({kWindow, kEarly});
-    if (!window_file) throw std::runtime_error("cannot write " + (root / "window.csv").string());
+      : folder(root),
+        ph_file(core::open_for_writing(root / "ph_history.csv")),
+        p2d_file(core::open_for_writing(root / "profiles_2d.csv")),
+        p1d_file(core::open_for_writing(root / "profiles_1d.csv")) {
+    core::write_file_atomically(root / "window.csv", [](std::ostream& window_file) {
+      CsvWriter(window_file, {"t_window", "t_early"}).row({kWindow, kEarly});
+    });
     ph = std::make_unique<CsvWriter>(ph_file, std::vector<std::string>{"b", "N", "t", "p_h", "p_h_1d", "p_h_1d_nu025"});
     p2d = std::make_unique<CsvWriter>(
         p2d_file, std::vector<std::string>{"b", "N", "t", "r_mean", "u_r", "u_r_1d", "p", "p_1d", "u_rel", "p_rel"});
@@ -339,10 +343,9 @@ struct Files {
                                       std::vector<std::string>{"b", "t", "r", "u_r", "p", "u_r_nu025", "p_nu025"});
   }
   void close() {
-    ph_file.close();
-    p2d_file.close();
-    p1d_file.close();
-    if (!ph_file || !p2d_file || !p1d_file) throw std::runtime_error("writing the vs_fdm1d CSV failed");
+    core::close_checked(ph_file, folder / "ph_history.csv");
+    core::close_checked(p2d_file, folder / "profiles_2d.csv");
+    core::close_checked(p1d_file, folder / "profiles_1d.csv");
   }
 };
 

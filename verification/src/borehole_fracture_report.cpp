@@ -6,6 +6,7 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "hm/core/file_output.hpp"
 #include "hm/lattice2d/calibration.hpp"
 #include "report_writer.hpp"
 
@@ -188,14 +189,13 @@ void add_paper_metrics(const RunOutcome& o, std::vector<Metric>& m) {
 
 /// runs.csv: which folder is which (text columns; read by the figure scripts with csv.DictReader).
 void write_index(const fs::path& root, const std::vector<RunOutcome>& runs, const std::vector<bool>& in_figure) {
-  std::ofstream f(root / "runs.csv");
+  std::ofstream f = core::open_for_writing(root / "runs.csv");
   f << "run,b,n_particles,seed,fdm1d,figure,flux_twin,eq16_node\n";
   for (std::size_t k = 0; k < runs.size(); ++k)
     f << runs[k].label << "," << fmt(runs[k].b) << "," << runs[k].n_particles << "," << runs[k].seed << ",fdm1d_b"
       << fmt(runs[k].b) << "," << (in_figure[k] ? 1 : 0) << "," << runs[k].twin_label << "," << runs[k].eq16_label
       << "\n";
-  f.close();
-  if (!f) throw std::runtime_error("cannot write " + (root / "runs.csv").string());
+  core::close_checked(f, root / "runs.csv");
 }
 
 std::vector<Figure> figures(const std::string& subdir, const std::string& what) {

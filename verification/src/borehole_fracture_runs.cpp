@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "fdm1d_sampling.hpp"
+#include "hm/core/file_output.hpp"
 #include "hm/lattice2d/calibration.hpp"
 #include "hm/lattice2d/radial_average.hpp"
 #include "hm/lattice2d/strength.hpp"
@@ -201,8 +202,9 @@ RunOutcome run_case(const RunCase& c, const std::string& label, const fs::path& 
                           : "failed: " + o.message);
   if (!o.ok) return o;  // the folder stays, with the series up to the failure, for a look
   recorder.finish();
-  std::ofstream(dir / "config.toml") << run_case_to_toml(
-      c, to_toml(make_provenance("hmlattice verify (lattice2d.fig12 benchmark), run " + label)));
+  core::write_file_atomically(dir / "config.toml", [&](std::ostream& out) {
+    out << run_case_to_toml(c, to_toml(make_provenance("hmlattice verify (lattice2d.fig12 benchmark), run " + label)));
+  });
   return o;
 }
 

@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "hm/analytic/biot_modulus.hpp"
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/analytic/validation.hpp"
 
 namespace hm::verification {

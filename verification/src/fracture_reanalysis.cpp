@@ -7,7 +7,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/file_output.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/lattice2d/failure.hpp"
 #include "hm/lattice2d/lattice.hpp"
 #include "hm/lattice2d/vtk_writer.hpp"
@@ -98,7 +99,7 @@ FractureReanalysis recompute_fracture_statistics(const std::filesystem::path& ru
                               provenance);
   lt::write_fracture_table(run_dir / "fractures.csv", snapshots);
   lt::write_fracture_summary(run_dir / "fracture_summary.csv", snapshots);
-  lt::write_file_atomically(run_dir / "config.toml", [&](std::ostream& out) { out << config; });
+  core::write_file_atomically(run_dir / "config.toml", [&](std::ostream& out) { out << config; });
   return {static_cast<int>(snapshots.size()), static_cast<int>(log.size())};
 }
 

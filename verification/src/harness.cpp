@@ -5,8 +5,8 @@
 #include <string>
 
 #include "figure_runner.hpp"
-#include "hm/analytic/input_error.hpp"
-#include "hm/verification/output_dir.hpp"
+#include "hm/core/input_error.hpp"
+#include "hm/core/result_folder.hpp"
 #include "report_writer.hpp"
 
 namespace hm::verification {
@@ -23,7 +23,7 @@ Tier parse_tier(const std::string& text) {
 
 HarnessSummary run_harness(const std::vector<Benchmark>& benchmarks, const HarnessOptions& options,
                            std::ostream& log) {
-  StagedDirectory out(options.out_dir);
+  core::ResultFolder out(options.out_dir, "--out", options.overwrite, options.command_line);
   const fs::path data_dir = out.path() / "data", figure_dir = out.path() / "figures";
   fs::create_directories(data_dir);
   fs::create_directories(figure_dir);
@@ -76,7 +76,7 @@ HarnessSummary run_harness(const std::vector<Benchmark>& benchmarks, const Harne
   write_report_markdown(out.path() / "report.md", outcomes, make_provenance(options.command_line), options.tier);
   write_metrics_json(out.path() / "metrics.json", outcomes);
   out.commit();
-  summary.report = options.out_dir / "report.md";
+  summary.report = out.target() / "report.md";
   return summary;
 }
 

@@ -2,8 +2,9 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <nlohmann/json.hpp>
+
+#include "hm/core/file_output.hpp"
 
 namespace hm::verification {
 
@@ -48,7 +49,7 @@ std::string reference_text(const Metric& m) {  // bounds (at_most/at_least) usua
   return (bound && m.reference == 0.0) ? "—" : format_number(m.reference);
 }
 
-void write_table(std::ofstream& md, const Table& t) {
+void write_table(std::ostream& md, const Table& t) {
   if (!t.title.empty()) md << "*" << t.title << "*\n\n";
   md << "|";
   for (const auto& h : t.header) md << " " << cell(h) << " |";
@@ -73,37 +74,38 @@ int failed_gating(const BenchmarkOutcome& o) {
 
 void write_report_markdown(const fs::path& file, const std::vector<BenchmarkOutcome>& outcomes,
                            const Provenance& prov, Tier tier) {
-  std::ofstream md(file);
-  md << "# hmlattice verification report\n\n"
-     << "Tier **" << (tier == Tier::quick ? "quick" : "paper") << "**; hmlattice " << prov.version
-     << " (commit " << prov.git_commit << ", " << prov.build_type << "), " << prov.utc_time << ".  \n"
-     << "Command: `" << prov.command_line << "`\n\n"
-     << "Each metric states what is compared, the tolerance and where that tolerance comes from. "
-        "Metrics marked *(info)* compare with numbers read from the paper; they are shown, never tuned, "
-        "and do not decide the verdict. Machine-readable values: `metrics.json`.\n\n"
-     << "## Summary\n\n| benchmark | metrics | failed | time [s] |\n|---|---|---|---|\n";
-  for (const auto& o : outcomes) {
-    const std::string failed = o.error.empty() ? std::to_string(failed_gating(o)) : "error";
-    md << "| [" << o.benchmark->title << "](#" << o.benchmark->id << ") | " << o.result.metrics.size()
-       << " | " << failed << " | " << format_number(o.seconds) << " |\n";
-  }
-  md << "\n";
-  for (const auto& o : outcomes) {
-    const Benchmark& b = *o.benchmark;
-    md << "<a id=\"" << b.id << "\"></a>\n## " << b.title << "\n\n`" << b.id << "`. " << b.description << "\n\n";
-    if (!o.error.empty()) md << "**The benchmark stopped with an error:** " << o.error << "\n\n";
-    if (!o.result.metrics.empty()) {
-      md << "| metric | value | reference | check | verdict | why this tolerance |\n|---|---|---|---|---|---|\n";
-      for (const auto& m : o.result.metrics)
-        md << "| " << cell(m.name) << " | " << format_number(m.value) << " | " << reference_text(m)
-           << " | " << comparison_text(m) << " | " << verdict(m) << " | " << cell(m.justification) << " |\n";
-      md << "\n";
+  core::write_file_atomically(file, [&](std::ostream& md) {
+    md << "# hmlattice verification report\n\n"
+       << "Tier **" << (tier == Tier::quick ? "quick" : "paper") << "**; hmlattice " << prov.version
+       << " (commit " << prov.git_commit << ", " << prov.build_type << "), " << prov.utc_time << ".  \n"
+       << "Command: `" << prov.command_line << "`\n\n"
+       << "Each metric states what is compared, the tolerance and where that tolerance comes from. "
+          "Metrics marked *(info)* compare with numbers read from the paper; they are shown, never tuned, "
+          "and do not decide the verdict. Machine-readable values: `metrics.json`.\n\n"
+       << "## Summary\n\n| benchmark | metrics | failed | time [s] |\n|---|---|---|---|\n";
+    for (const auto& o : outcomes) {
+      const std::string failed = o.error.empty() ? std::to_string(failed_gating(o)) : "error";
+      md << "| [" << o.benchmark->title << "](#" << o.benchmark->id << ") | " << o.result.metrics.size()
+         << " | " << failed << " | " << format_number(o.seconds) << " |\n";
     }
-    for (const auto& t : o.result.tables) write_table(md, t);
-    for (const auto& f : o.result.figures) md << "![" << f.caption << "](figures/" << o.benchmark->id << "/" << f.file << ")\n\n*" << f.caption << "*\n\n";
-    for (const auto& e : o.figure_errors) md << "> Figure missing: " << e << "\n\n";
-    for (const auto& n : o.result.notes) md << n << "\n\n";
-  }
+    md << "\n";
+    for (const auto& o : outcomes) {
+      const Benchmark& b = *o.benchmark;
+      md << "<a id=\"" << b.id << "\"></a>\n## " << b.title << "\n\n`" << b.id << "`. " << b.description << "\n\n";
+      if (!o.error.empty()) md << "**The benchmark stopped with an error:** " << o.error << "\n\n";
+      if (!o.result.metrics.empty()) {
+        md << "| metric | value | reference | check | verdict | why this tolerance |\n|---|---|---|---|---|---|\n";
+        for (const auto& m : o.result.metrics)
+          md << "| " << cell(m.name) << " | " << format_number(m.value) << " | " << reference_text(m)
+             << " | " << comparison_text(m) << " | " << verdict(m) << " | " << cell(m.justification) << " |\n";
+        md << "\n";
+      }
+      for (const auto& t : o.result.tables) write_table(md, t);
+      for (const auto& f : o.result.figures) md << "![" << f.caption << "](figures/" << o.benchmark->id << "/" << f.file << ")\n\n*" << f.caption << "*\n\n";
+      for (const auto& e : o.figure_errors) md << "> Figure missing: " << e << "\n\n";
+      for (const auto& n : o.result.notes) md << n << "\n\n";
+    }
+  });
 }
 
 void write_metrics_json(const fs::path& file, const std::vector<BenchmarkOutcome>& outcomes) {
@@ -119,7 +121,7 @@ void write_metrics_json(const fs::path& file, const std::vector<BenchmarkOutcome
                       {"reference", number(m.reference)}, {"tolerance", number(m.tolerance)},
                       {"pass", m.passes()}, {"gating", m.gating}, {"justification", m.justification}});
   }
-  std::ofstream(file) << list.dump(2) << "\n";
+  core::write_file_atomically(file, [&](std::ostream& out) { out << list.dump(2) << "\n"; });
 }
 
 }  // namespace hm::verification

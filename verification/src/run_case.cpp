@@ -2,7 +2,7 @@
 
 #include <sstream>
 
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/analytic/validation.hpp"
 #include "hm/lattice2d/calibration.hpp"
 

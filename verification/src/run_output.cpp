@@ -1,7 +1,6 @@
 #include "hm/verification/run_output.hpp"
 
-#include <stdexcept>
-
+#include "hm/core/file_output.hpp"
 #include "hm/lattice2d/radial_average.hpp"
 
 namespace hm::verification {
@@ -46,9 +45,8 @@ RunRecorder::RunRecorder(const std::filesystem::path& dir, const RunCase& c)
       dir_(dir),
       fracture_(c.fracture_enabled),
       statistics_options_{c.output.fracture_link},
-      series_file_(dir / "series.csv"),
-      radial_file_(dir / "radial.csv") {
-  if (!series_file_ || !radial_file_) throw std::runtime_error("cannot write into " + dir.string());
+      series_file_(core::open_for_writing(dir / "series.csv")),
+      radial_file_(core::open_for_writing(dir / "radial.csv")) {
   series_ = std::make_unique<CsvWriter>(
       series_file_, std::vector<std::string>{"t", "dt", "p_h", "injected", "stored", "coupling", "outflow",
                                              "balance_error", "n_broken", "iterations", "pressure_residual",
@@ -103,19 +101,17 @@ void RunRecorder::record(const lt::CoupledModel& model, const lt::CoupledStepSum
 namespace hm::verification {
 
 void RunRecorder::finish() {
-  series_file_.close();
-  radial_file_.close();
-  if (!series_file_ || !radial_file_) throw std::runtime_error("writing series.csv or radial.csv failed");
+  core::close_checked(series_file_, dir_ / "series.csv");
+  core::close_checked(radial_file_, dir_ / "radial.csv");
   if (!fracture_) return;
   lt::write_break_log(dir_ / "breaks.csv", breaks_, "time");
   lt::write_fracture_table(dir_ / "fractures.csv", fractures_);
   lt::write_fracture_summary(dir_ / "fracture_summary.csv", fractures_);
-  std::ofstream file(dir_ / "breakdown.csv");
-  CsvWriter breakdown(file, {"t_first_break", "p_h_before", "p_h_first_break", "x_first_break", "y_first_break",
-                             "t_peak", "p_h_peak", "n_broken"});
-  breakdown.row({t_first_, p_before_, p_first_, x_first_, y_first_, t_peak_, p_peak_, static_cast<double>(n_broken_)});
-  file.close();
-  if (!file) throw std::runtime_error("writing breakdown.csv failed");
+  core::write_file_atomically(dir_ / "breakdown.csv", [&](std::ostream& file) {
+    CsvWriter breakdown(file, {"t_first_break", "p_h_before", "p_h_first_break", "x_first_break", "y_first_break",
+                               "t_peak", "p_h_peak", "n_broken"});
+    breakdown.row({t_first_, p_before_, p_first_, x_first_, y_first_, t_peak_, p_peak_, static_cast<double>(n_broken_)});
+  });
 }
 
 }  // namespace hm::verification

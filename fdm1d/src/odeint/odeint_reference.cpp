@@ -7,7 +7,7 @@
 #include <utility>
 
 #include "discretisation.hpp"  // fdm1d/src
-#include "hm/analytic/input_error.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/analytic/validation.hpp"
 
 namespace hm::fdm1d {

@@ -20,7 +20,6 @@
 /// Every file is written to a temporary name and renamed into place, so an interrupted run leaves
 /// complete files only; the .pvd is rewritten after each snapshot and always lists complete snapshots.
 #include <filesystem>
-#include <functional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -88,10 +87,5 @@ class VtkSeries {
   VtkFormat format_;
   std::vector<PvdEntry> entries_;
 };
-
-/// Runs `write` on a stream to `<path>.partial` and renames it to `path` only if the stream is still
-/// good after closing; otherwise removes the partial file and throws std::runtime_error naming the
-/// path. Shared by the VTK and break-log writers.
-void write_file_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write);
 
 }  // namespace hm::lattice2d

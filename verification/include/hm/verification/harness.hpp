@@ -12,7 +12,9 @@ namespace hm::verification {
 
 struct HarnessOptions {
   Tier tier = Tier::quick;
+  /// A new or empty folder, or (with overwrite) an earlier result folder (hm/core/result_folder.hpp).
   std::filesystem::path out_dir = "out/verify";
+  bool overwrite = false;
   std::string command_line;  ///< recorded in the report for provenance
   /// Only benchmarks whose id contains this text (empty: all).
   std::string filter;
@@ -29,8 +31,9 @@ struct HarnessSummary {
 };
 
 /// Runs the selected benchmarks (progress on `log`), then their figure scripts, then writes
-/// out_dir/report.md and out_dir/metrics.json. The output folder is replaced only when the run
-/// completes (written to a staging folder first), so a crashed run leaves no half-written report.
+/// out_dir/report.md and out_dir/metrics.json. The output folder appears (or replaces an earlier
+/// result) only when the run completes, so a crashed run leaves no half-written report; a refused
+/// out_dir throws hm::InputError before any benchmark runs.
 HarnessSummary run_harness(const std::vector<Benchmark>& benchmarks, const HarnessOptions& options,
                            std::ostream& log);
 

@@ -1,0 +1,70 @@
+#pragma once
+/// \file
+/// The folder a command writes its results into (`--out`), made so that the toolkit never removes
+/// anything it did not write and never leaves a folder that looks complete but is not.
+///
+/// The target may be
+///   - absent: it is created (with any missing parent folders);
+///   - an empty folder: it is filled;
+///   - an earlier result of the toolkit, recognised by the marker file `.hmlattice` that every result
+///     folder gets: replaced only when the user asked for it (`--overwrite`), otherwise refused.
+/// Anything else is refused before any computing: a folder holding other files, a file, a device, a
+/// symbolic link, the working directory or a folder above it, `/` and the home directory.
+/// Results are written into a staging folder with a short fixed-length name beside the target, which
+/// takes the target's place on commit() in one rename; an earlier result is first renamed aside and
+/// removed only once the new one is in place, so at no moment is neither there. If the last rename
+/// fails, the finished staging folder is kept and the error says where.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace hm::core {
+
+/// Name of the marker file in every result folder.
+inline constexpr const char* result_marker_name = ".hmlattice";
+
+/// What a `--out` target is, once it is known to be allowed.
+enum class ResultTarget {
+  absent,          ///< nothing there: created
+  empty_folder,    ///< an empty folder: filled
+  earlier_result,  ///< a folder with the toolkit's marker: replaced (only with overwrite)
+};
+
+/// Classifies `target` (as the user typed it) for writing a result folder. Throws hm::InputError with
+/// one line naming `option`, the path, why it is refused and what is allowed; `overwrite` allows an
+/// earlier result. Reads only: nothing is created or removed.
+ResultTarget inspect_result_target(const std::filesystem::path& target, const std::string& option, bool overwrite);
+
+/// True if `folder` holds the toolkit's marker file (a regular file whose first line is the marker's).
+bool is_result_folder(const std::filesystem::path& folder);
+
+/// A result folder being written. Construct it before computing anything: bad targets and unwritable
+/// parents are reported (hm::InputError) before the work starts.
+class ResultFolder {
+ public:
+  /// `command_line` goes into the marker, so a folder tells which command wrote it.
+  ResultFolder(const std::filesystem::path& target, const std::string& option, bool overwrite,
+               std::string command_line);
+  ~ResultFolder();  ///< removes the staging folder (and parents it created) unless committed or kept
+  ResultFolder(const ResultFolder&) = delete;
+  ResultFolder& operator=(const ResultFolder&) = delete;
+
+  /// Where to write now (the staging folder).
+  const std::filesystem::path& path() const { return staging_; }
+  /// The final location, as the user gave it without a trailing separator (for messages).
+  const std::filesystem::path& target() const { return shown_; }
+
+  /// Writes the marker and moves the staged results into place. Throws std::runtime_error if they
+  /// cannot be put there (the target changed meanwhile, a rename failed): the finished results are
+  /// then kept in the staging folder, whose path the message gives.
+  void commit();
+
+ private:
+  std::filesystem::path shown_, target_, staging_;
+  std::string option_, command_line_;
+  bool overwrite_;
+  bool done_ = false;                          // committed, or kept after a failed commit
+  std::vector<std::filesystem::path> made_;    // parent folders this object created, deepest last
+};
+
+}  // namespace hm::core

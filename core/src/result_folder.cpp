@@ -1,0 +1,244 @@
+#include "hm/core/result_folder.hpp"
+
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <ctime>
+#include <fstream>
+#include <iostream>
+#include <stdexcept>
+#include <system_error>
+
+#include "hm/core/file_output.hpp"
+#include "hm/core/input_error.hpp"
+
+namespace hm::core {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* marker_first_line = "# hmlattice result folder";
+constexpr const char* allowed = "allowed: a new or empty folder, or an earlier hmlattice result with --overwrite";
+
+std::string quoted(const fs::path& p) {
+  std::string s = "'";  // appended step by step: GCC 12 warns falsely (-Wrestrict) on "'" + string
+  s += p.string();
+  s += "'";
+  return s;
+}
+
+[[noreturn]] void refuse(const std::string& option, const fs::path& shown, const std::string& why,
+                         const std::string& what_is_allowed = allowed) {
+  throw InputError(option + " = " + quoted(shown) + " " + why + "; " + what_is_allowed);
+}
+
+// The path as typed without trailing separators ("res/" names the folder res).
+fs::path without_trailing_separators(const fs::path& p) {
+  std::string s = p.string();
+  while (s.size() > 1 && s.back() == '/') s.pop_back();
+  return s;
+}
+
+// The physical location of `shown`: `.` and `..` resolved as the shell does, then the existing
+// part of the parent through its symbolic links (the last component itself is not followed).
+fs::path physical_location(const fs::path& shown) {
+  fs::path absolute = fs::absolute(shown).lexically_normal();
+  if (!absolute.has_filename() && absolute != absolute.root_path()) absolute = absolute.parent_path();
+  if (absolute == absolute.root_path()) return absolute;
+  std::error_code ec;
+  const fs::path parent = fs::weakly_canonical(absolute.parent_path(), ec);
+  return (ec ? absolute.parent_path() : parent) / absolute.filename();
+}
+
+// True if `a` is `b` or a folder above it (component-wise, both absolute and normal).
+bool is_same_or_above(const fs::path& a, const fs::path& b) {
+  return std::mismatch(a.begin(), a.end(), b.begin(), b.end()).first == a.end();
+}
+
+fs::path canonical_or_empty(const fs::path& p) {
+  std::error_code ec;
+  fs::path c = fs::canonical(p, ec);
+  return ec ? fs::path() : c;
+}
+
+std::string utc_now() {
+  const std::time_t now = std::time(nullptr);
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char stamp[32];
+  std::strftime(stamp, sizeof stamp, "%Y-%m-%dT%H:%M:%SZ", &utc);
+  return stamp;
+}
+
+// A TOML basic string: the command line may hold quotes, backslashes or control characters.
+std::string toml_string(const std::string& s) {
+  std::string out = "\"";
+  for (unsigned char c : s) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += static_cast<char>(c);
+    } else if (c < 0x20 || c == 0x7f) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", c);
+      out += buf;
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out + "\"";
+}
+
+// A new folder `<parent>/<prefix>XXXXXX` (fixed length, whatever the target's name), with the
+// permissions an ordinary mkdir would give (mkdtemp makes it private).
+fs::path make_unique_folder(const fs::path& parent, const std::string& prefix, std::error_code& ec) {
+  std::string name = (parent / (prefix + "XXXXXX")).string();
+  if (::mkdtemp(name.data()) == nullptr) {
+    ec.assign(errno, std::generic_category());
+    return {};
+  }
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  ::chmod(name.c_str(), 0777 & ~mask);
+  ec.clear();
+  return name;
+}
+
+}  // namespace
+
+bool is_result_folder(const fs::path& folder) {
+  const fs::path marker = folder / result_marker_name;
+  std::error_code ec;
+  if (fs::symlink_status(marker, ec).type() != fs::file_type::regular) return false;
+  std::ifstream in(marker);
+  std::string first;
+  std::getline(in, first);
+  return first.rfind(marker_first_line, 0) == 0;
+}
+
+ResultTarget inspect_result_target(const fs::path& target, const std::string& option, bool overwrite) {
+  const fs::path shown = without_trailing_separators(target);
+  if (shown.empty()) refuse(option, shown, "is empty", "allowed: the path of a folder for the results");
+  const fs::path where = physical_location(shown);
+  if (where == where.root_path()) refuse(option, shown, "is the root folder");
+  const fs::path cwd = canonical_or_empty(fs::current_path());
+  if (!cwd.empty() && is_same_or_above(where, cwd))
+    refuse(option, shown, "is the working directory or a folder above it");
+  if (const char* home = std::getenv("HOME"); home && *home && canonical_or_empty(home) == where)
+    refuse(option, shown, "is the home directory");
+
+  std::error_code ec;
+  const fs::file_status st = fs::symlink_status(where, ec);
+  switch (st.type()) {
+    case fs::file_type::not_found: {
+      // The nearest existing folder above must be a folder we can create the rest in.
+      fs::path up = where.parent_path();
+      while (!fs::exists(fs::symlink_status(up, ec)) && up != up.root_path()) up = up.parent_path();
+      if (!fs::is_directory(up, ec)) refuse(option, shown, "lies under " + quoted(up) + ", which is not a folder");
+      return ResultTarget::absent;
+    }
+    case fs::file_type::symlink: refuse(option, shown, "is a symbolic link");
+    case fs::file_type::directory: {
+      const bool empty = fs::is_empty(where, ec);
+      if (ec) refuse(option, shown, "cannot be read (" + ec.message() + ")");
+      if (empty) return ResultTarget::empty_folder;
+      if (!is_result_folder(where)) refuse(option, shown, "is a folder with files that hmlattice did not write");
+      if (!overwrite)
+        refuse(option, shown, "holds an earlier hmlattice result",
+               "add --overwrite to replace it, or choose another folder");
+      return ResultTarget::earlier_result;
+    }
+    case fs::file_type::regular: refuse(option, shown, "is a file");
+    default: refuse(option, shown, "is a device, pipe or socket");
+  }
+}
+
+ResultFolder::ResultFolder(const fs::path& target, const std::string& option, bool overwrite,
+                           std::string command_line)
+    : shown_(without_trailing_separators(target)),
+      option_(option),
+      command_line_(std::move(command_line)),
+      overwrite_(overwrite) {
+  inspect_result_target(shown_, option_, overwrite_);
+  target_ = physical_location(shown_);
+  const fs::path parent = target_.parent_path();
+  std::vector<fs::path> missing;
+  std::error_code ec;
+  for (fs::path up = parent; !fs::exists(fs::symlink_status(up, ec)) && up != up.root_path(); up = up.parent_path())
+    missing.push_back(up);
+  for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
+    if (!fs::create_directory(*it, ec) && ec) {
+      const std::string reason = ec.message();
+      for (auto made = made_.rbegin(); made != made_.rend(); ++made) fs::remove(*made, ec);
+      refuse(option_, shown_, "cannot be created: folder " + quoted(*it) + " cannot be made (" + reason + ")",
+             "allowed: a folder in a place you can write to");
+    }
+    made_.push_back(*it);
+  }
+  staging_ = make_unique_folder(parent, ".hmlattice-staging-", ec);
+  if (ec) {
+    const std::string reason = ec.message();
+    for (auto made = made_.rbegin(); made != made_.rend(); ++made) fs::remove(*made, ec);
+    refuse(option_, shown_, "cannot be written: its folder " + quoted(parent) + " refuses new files (" + reason + ")",
+           "allowed: a folder in a place you can write to");
+  }
+}
+
+ResultFolder::~ResultFolder() {
+  if (done_) return;
+  std::error_code ec;  // never throw from a destructor; what is removed here is only what this object made
+  fs::remove_all(staging_, ec);
+  for (auto made = made_.rbegin(); made != made_.rend(); ++made) fs::remove(*made, ec);
+}
+
+void ResultFolder::commit() {
+  write_file_atomically(staging_ / result_marker_name, [&](std::ostream& out) {
+    out << marker_first_line << ": written by the command below; `--overwrite` may replace this folder.\n"
+        << "command_line = " << toml_string(command_line_) << "\n"
+        << "version = " << toml_string(HM_VERSION) << "\n"
+        << "utc_time = " << toml_string(utc_now()) << "\n";
+  });
+  const auto keep = [&](const std::string& why) {
+    done_ = true;  // a finished result is never deleted by the toolkit
+    throw std::runtime_error("the finished results could not be put in " + quoted(shown_) + " (" + why +
+                             "); they are complete in " + quoted(staging_));
+  };
+  ResultTarget now;
+  try {  // the target may have changed while the run computed
+    now = inspect_result_target(shown_, option_, overwrite_);
+  } catch (const InputError& e) {
+    keep(e.what());
+  }
+  std::error_code ec;
+  if (now != ResultTarget::earlier_result) {
+    fs::rename(staging_, target_, ec);  // rename(2) replaces an empty folder, never a non-empty one
+    if (ec) keep(ec.message());
+    done_ = true;
+    return;
+  }
+  const fs::path aside = make_unique_folder(target_.parent_path(), ".hmlattice-replaced-", ec);
+  if (ec) keep("cannot set the earlier result aside: " + ec.message());
+  fs::rename(target_, aside, ec);
+  if (ec) {
+    const std::string reason = ec.message();
+    fs::remove(aside, ec);
+    keep("cannot set the earlier result aside: " + reason);
+  }
+  fs::rename(staging_, target_, ec);
+  if (ec) {
+    const std::string reason = ec.message();
+    fs::rename(aside, target_, ec);  // the earlier result back in its place
+    keep(ec ? reason + "; the earlier result is in " + quoted(aside) : reason);
+  }
+  done_ = true;
+  fs::remove_all(aside, ec);
+  if (ec)
+    std::cerr << "hmlattice: warning: the replaced result is left in " << quoted(aside) << " (" << ec.message()
+              << ")\n";
+}
+
+}  // namespace hm::core
