@@ -125,7 +125,7 @@ RunOutcome run_case(const RunCase& c, const std::string& label, const fs::path& 
   o.R_i = c.physics.parameters.R_i;
   o.eq16_node = c.borehole_storage == lt::BoreholeStorage::biot_modulus &&
                 c.borehole_deformation == lt::BoreholeDeformation::biot;
-  // As verification/app/cmd_run.cpp: calibrated beams, strengths drawn per beam, the case's break loop.
+  // As app/cmd_run.cpp: calibrated beams, strengths drawn per beam, the case's break loop.
   lt::CoupledModel model(lt::generate_lattice(c.lattice), c.beams(), c.boundary, c.mechanics,
                          c.flow_parameters(), c.coupling);
   model.enable_fracture(lt::draw_beam_strengths(c.strength, model.lattice().n_beams()), c.break_loop);
