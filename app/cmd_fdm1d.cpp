@@ -2,7 +2,7 @@
 //
 // Runs the radial 1D poroelastic model of the paper's Appendix A (monolithic implicit Euler) on a
 // case file and writes, into DIR (default out/<case name>):
-//   borehole.csv, profiles.csv, probes.csv, steady_state.csv  (see hm/verification/fdm1d_output.hpp)
+//   borehole.csv, profiles.csv, probes.csv, steady_state.csv  (see hm/case/fdm1d_output.hpp)
 //   config.toml                              the resolved case + provenance; rerunnable as a case
 // DIR must be new or empty, or an earlier result folder with --overwrite (hm/core/result_folder.hpp).
 // Example: hmlattice fdm1d cases/fig10_fdm1d_b0.5.toml --out out/fig10
@@ -13,10 +13,10 @@
 #include "hm/core/file_output.hpp"
 #include "hm/core/result_folder.hpp"
 #include "hm/fdm1d/fdm1d.hpp"
-#include "hm/verification/fdm1d_case.hpp"
-#include "hm/verification/fdm1d_output.hpp"
-#include "hm/verification/progress.hpp"
-#include "hm/verification/provenance.hpp"
+#include "hm/case/fdm1d_case.hpp"
+#include "hm/case/fdm1d_output.hpp"
+#include "hm/case/progress.hpp"
+#include "hm/case/provenance.hpp"
 
 namespace hm::app {
 
@@ -31,7 +31,7 @@ void add_fdm1d_command(CLI::App& app, int& exit_code, const std::string& command
   add_output_options(*cmd, a->out, a->overwrite);
   cmd->callback([a, &exit_code, command_line] {
     // 1. Read and validate everything, the output folder included, before computing.
-    const verification::Fdm1dCase c = verification::read_fdm1d_case(a->case_file);
+    const cases::Fdm1dCase c = cases::read_fdm1d_case(a->case_file);
     core::ResultFolder out(output_folder(a->out, a->case_file), "--out", a->overwrite, command_line);
     const auto& p = c.physics.parameters;
     std::cout << "fdm1d: Q = " << p.Q << ", b = " << p.material.b << ", nu = " << p.material.nu
@@ -40,7 +40,7 @@ void add_fdm1d_command(CLI::App& app, int& exit_code, const std::string& command
               << "\n";
 
     // 2. Run, with a progress line on long runs.
-    verification::ProgressReporter progress(std::cout, "fdm1d");
+    cases::ProgressReporter progress(std::cout, "fdm1d");
     const auto result = fdm1d::run_fdm1d(p, c.numerics, [&](double t, double t_end) { progress.update(t, t_end); });
     const auto& s = result.summary;
     char balance[32];
@@ -54,9 +54,9 @@ void add_fdm1d_command(CLI::App& app, int& exit_code, const std::string& command
     }
 
     // 3. Write the results and the resolved configuration together, or nothing.
-    verification::write_fdm1d_results(out.path(), result, p);
+    cases::write_fdm1d_results(out.path(), result, p);
     core::write_file_atomically(out.path() / "config.toml", [&](std::ostream& f) {
-      f << verification::fdm1d_case_to_toml(c, verification::to_toml(verification::make_provenance(command_line)));
+      f << cases::fdm1d_case_to_toml(c, cases::to_toml(cases::make_provenance(command_line)));
     });
     out.commit();
     std::cout << "Results: " << out.target().string() << "/{borehole,profiles,probes,steady_state}.csv, config.toml\n";

@@ -8,7 +8,7 @@
 #include <iostream>
 
 #include "commands.hpp"
-#include "hm/verification/fracture_reanalysis.hpp"
+#include "hm/case/fracture_reanalysis.hpp"
 
 namespace hm::app {
 
@@ -22,7 +22,7 @@ void add_fractures_command(CLI::App& app, const std::string& command_line) {
   cmd->add_option("--link", a->link, "broken beams of one fracture share a 'particle' or a 'triangle'")->capture_default_str();
   cmd->callback([a, command_line] {
     const auto link = lattice2d::fracture_link_from_string(a->link, "--link");
-    const auto done = verification::recompute_fracture_statistics(a->run_dir, link, command_line);
+    const auto done = cases::recompute_fracture_statistics(a->run_dir, link, command_line);
     std::cout << "fractures: " << done.n_breaks << " breaks, " << done.n_snapshots << " snapshots, fracture_link = "
               << a->link << "\nResults: " << a->run_dir << "/{fractures,fracture_summary}.csv, config.toml\n";
   });

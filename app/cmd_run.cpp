@@ -2,7 +2,7 @@
 //
 // Runs the two-way coupled 2D lattice model of Sections 2.1-2.3 (beam mechanics + dual-graph flow,
 // drained or undrained operator split iterated to convergence in every time step, Fig. 5) on a case
-// file (model = "lattice2d", format in hm/verification/run_case.hpp) and writes, into DIR (default
+// file (model = "lattice2d", format in hm/case/run_case.hpp) and writes, into DIR (default
 // out/<case name>):
 //   series.csv   per step: p_h, injected, stored, coupling, outflow volumes, balance error, iterations
 //   radial.csv   radially averaged u_r and p at the output times (Figs. 7, 13, 15)
@@ -23,10 +23,10 @@
 #include "hm/lattice2d/calibration.hpp"
 #include "hm/lattice2d/coupled_model.hpp"
 #include "hm/lattice2d/strength.hpp"
-#include "hm/verification/progress.hpp"
-#include "hm/verification/provenance.hpp"
-#include "hm/verification/run_case.hpp"
-#include "hm/verification/run_output.hpp"
+#include "hm/case/progress.hpp"
+#include "hm/case/provenance.hpp"
+#include "hm/case/run_case.hpp"
+#include "hm/case/run_output.hpp"
 
 namespace hm::app {
 
@@ -56,7 +56,7 @@ void add_run_command(CLI::App& app, int& exit_code, const std::string& command_l
   add_output_options(*cmd, a->out, a->overwrite);
   cmd->callback([a, &exit_code, command_line] {
     // 1. Read and validate everything, the output folder included, before computing.
-    const verification::RunCase c = verification::read_run_case(a->case_file);
+    const cases::RunCase c = cases::read_run_case(a->case_file);
     core::ResultFolder out(output_folder(a->out, a->case_file), "--out", a->overwrite, command_line);
     const auto& p = c.physics.parameters;
     std::cout << "run: Q = " << p.Q << ", b = " << p.material.b << ", E/M = " << p.material.E_over_M
@@ -80,8 +80,8 @@ void add_run_command(CLI::App& app, int& exit_code, const std::string& command_l
               << " beams, " << model.lattice().n_triangles() << " triangles\n";
 
     // 3. Run: the initial state, then while time remains a coupled step; each step is recorded.
-    verification::RunRecorder recorder(out.path(), c);
-    verification::ProgressReporter progress(std::cout, "run");
+    cases::RunRecorder recorder(out.path(), c);
+    cases::ProgressReporter progress(std::cout, "run");
     int step = 0;
     double step_seconds = 0.0, mechanics_seconds = 0.0, geometry_seconds = 0.0, flow_seconds = 0.0,
            stress_seconds = 0.0, break_seconds = 0.0;
@@ -134,7 +134,7 @@ void add_run_command(CLI::App& app, int& exit_code, const std::string& command_l
     // 4. The resolved configuration beside the results, then everything appears at once.
     recorder.finish();
     core::write_file_atomically(out.path() / "config.toml", [&](std::ostream& f) {
-      f << verification::run_case_to_toml(c, verification::to_toml(verification::make_provenance(command_line)));
+      f << cases::run_case_to_toml(c, cases::to_toml(cases::make_provenance(command_line)));
     });
     out.commit();
     std::cout << "Results: " << out.target().string() << (c.fracture_enabled ? "/{series,radial,breaks,breakdown,fractures,fracture_summary}.csv, " : "/{series,radial}.csv, ") << (c.output.vtk ? "vtk/lattice.pvd, " : "")

@@ -14,7 +14,7 @@
 
 #include "commands.hpp"
 #include "hm/core/input_error.hpp"
-#include "hm/verification/blas_threads.hpp"
+#include "hm/case/blas_threads.hpp"
 
 namespace {
 
@@ -27,7 +27,7 @@ std::string joined(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  hm::verification::limit_blas_threads();  // before any factorisation: see blas_threads.hpp
+  hm::cases::limit_blas_threads();  // before any factorisation: see blas_threads.hpp
   CLI::App app{"hmlattice: fluid-driven fracture in porous rock, verified (Ulven & Sun 2017)", "hmlattice"};
   app.require_subcommand(1);
   app.set_version_flag("--version", HM_VERSION);

@@ -5,7 +5,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "hm/verification/blas_threads.hpp"
+#include "hm/case/blas_threads.hpp"
 
 namespace {
 
@@ -28,13 +28,13 @@ TEST_CASE("limit_blas_threads puts OpenBLAS on one thread and leaves a user's ch
   ::unsetenv("OPENBLAS_NUM_THREADS");
 
   set(2);
-  CHECK(hm::verification::limit_blas_threads());
+  CHECK(hm::cases::limit_blas_threads());
   CHECK(get() == 1);
 
   set(2);
   const int chosen = get();  // 2 on this 2-core machine (OpenBLAS caps it at its own maximum)
   ::setenv("OPENBLAS_NUM_THREADS", "2", 1);
-  CHECK_FALSE(hm::verification::limit_blas_threads());
+  CHECK_FALSE(hm::cases::limit_blas_threads());
   CHECK(get() == chosen);
   ::unsetenv("OPENBLAS_NUM_THREADS");
 

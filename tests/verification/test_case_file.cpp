@@ -5,16 +5,16 @@
 #include "approx.hpp"
 #include "hm/analytic/biot_modulus.hpp"
 #include "hm/core/input_error.hpp"
-#include "hm/verification/case_file.hpp"
+#include "hm/case/case_file.hpp"
 #include "verification/run_command.hpp"
 
 using hm::test::TempDir;
-using hm::verification::CaseFile;
-using hm::verification::read_physics;
+using hm::cases::CaseFile;
+using hm::cases::read_physics;
 
 namespace {
 
-hm::verification::CasePhysics physics_of(const TempDir& dir, const std::string& toml) {
+hm::cases::CasePhysics physics_of(const TempDir& dir, const std::string& toml) {
   dir.write("case.toml", toml);
   CaseFile file(dir.path / "case.toml");
   auto root = file.root();

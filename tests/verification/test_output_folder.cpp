@@ -34,7 +34,7 @@ void require_refusal(const hm::test::CommandResult& r, const std::string& must_m
 
 }  // namespace
 
-TEST_CASE("--out naming a folder of the user's files is refused and every file stays, byte for byte",
+TEST_CASE("An --out naming a folder of the user's files is refused and every file stays, byte for byte",
           "[verification][cli]") {
   TempDir dir("out-foreign");
   dir.write("thesis.tex", "\\chapter{Results} -- four years");
@@ -54,7 +54,7 @@ TEST_CASE("--out naming a folder of the user's files is refused and every file s
   CHECK(folder_snapshot(dir.path) == before);
 }
 
-TEST_CASE("--out . or .. , a file, a symbolic link or a device is refused before anything is computed",
+TEST_CASE("An --out of . or .., a file, a symbolic link or a device is refused before anything is computed",
           "[verification][cli]") {
   TempDir dir("out-places");
   fs::create_directories(dir.path / "work" / "sub");
@@ -93,7 +93,7 @@ TEST_CASE("An earlier result is refused without --overwrite and replaced with it
   CHECK(folder_snapshot(dir.path).size() == before.size());  // nothing set aside is left over
 }
 
-TEST_CASE("--out with a trailing slash or a 250-character name keeps the finished run", "[verification][cli]") {
+TEST_CASE("An --out with a trailing slash or a 250-character name keeps the finished run", "[verification][cli]") {
   TempDir dir("out-names");
   auto r = run_hmlattice("fdm1d " + fdm1d_case + " --out res/", dir.path);
   INFO("stderr: " << r.err);

@@ -1,4 +1,4 @@
-// `hmlattice run` and its case format (hm/verification/run_case.hpp), through the executable as a user
+// `hmlattice run` and its case format (hm/case/run_case.hpp), through the executable as a user
 // meets it: a bad case gives one line naming [table] key, value and rule, exit code 2, nothing written.
 #include <catch2/catch.hpp>
 

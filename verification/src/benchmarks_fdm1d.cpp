@@ -13,11 +13,15 @@
 #include "hm/fdm1d/odeint_reference.hpp"
 #include "hm/fdm1d/section32.hpp"
 #include "hm/verification/benchmark.hpp"
-#include "hm/verification/fdm1d_case.hpp"
-#include "hm/verification/fdm1d_output.hpp"
+#include "hm/case/fdm1d_case.hpp"
+#include "hm/case/fdm1d_output.hpp"
 #include "report_writer.hpp"
 
 namespace hm::verification {
+
+using cases::Fdm1dCase;
+using cases::read_fdm1d_case;
+using cases::write_fdm1d_results;
 
 namespace {
 

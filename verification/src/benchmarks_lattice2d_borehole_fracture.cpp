@@ -27,10 +27,13 @@
 #include "borehole_fracture_report.hpp"
 #include "borehole_fracture_runs.hpp"
 #include "hm/verification/benchmark.hpp"
-#include "hm/verification/run_case.hpp"
+#include "hm/case/run_case.hpp"
 #include "report_writer.hpp"
 
 namespace hm::verification {
+
+using cases::RunCase;
+using cases::read_run_case;
 
 namespace {
 

@@ -21,12 +21,18 @@
 #include "hm/lattice2d/coupled_model.hpp"
 #include "hm/lattice2d/radial_average.hpp"
 #include "hm/verification/benchmark.hpp"
-#include "hm/verification/csv_writer.hpp"
-#include "hm/verification/run_case.hpp"
-#include "hm/verification/run_output.hpp"
+#include "hm/case/csv_writer.hpp"
+#include "hm/case/run_case.hpp"
+#include "hm/case/run_output.hpp"
 #include "report_writer.hpp"
 
 namespace hm::verification {
+
+using cases::CsvWriter;
+using cases::RadialFields;
+using cases::RunCase;
+using cases::RunRecorder;
+using cases::radial_fields;
 
 namespace {
 

@@ -20,10 +20,12 @@
 #include "hm/lattice2d/fracture.hpp"
 #include "hm/lattice2d/vtk_writer.hpp"
 #include "hm/verification/benchmark.hpp"
-#include "hm/verification/csv_writer.hpp"
+#include "hm/case/csv_writer.hpp"
 #include "report_writer.hpp"
 
 namespace hm::verification {
+
+using cases::CsvWriter;
 
 namespace {
 

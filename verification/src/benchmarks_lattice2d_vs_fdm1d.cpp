@@ -38,14 +38,22 @@
 #include "hm/lattice2d/coupled_model.hpp"
 #include "hm/lattice2d/radial_average.hpp"
 #include "hm/verification/benchmark.hpp"
-#include "hm/verification/csv_writer.hpp"
-#include "hm/verification/fdm1d_output.hpp"
-#include "hm/verification/run_case.hpp"
-#include "hm/verification/run_output.hpp"
+#include "hm/case/csv_writer.hpp"
+#include "hm/case/fdm1d_output.hpp"
+#include "hm/case/run_case.hpp"
+#include "hm/case/run_output.hpp"
 #include "report_writer.hpp"
 #include "fdm1d_sampling.hpp"
 
 namespace hm::verification {
+
+using cases::CsvWriter;
+using cases::RadialFields;
+using cases::RunCase;
+using cases::RunRecorder;
+using cases::injection_pressure;
+using cases::radial_fields;
+using cases::write_fdm1d_results;
 
 namespace {
 

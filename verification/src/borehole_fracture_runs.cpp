@@ -12,13 +12,24 @@
 #include "hm/lattice2d/calibration.hpp"
 #include "hm/lattice2d/radial_average.hpp"
 #include "hm/lattice2d/strength.hpp"
-#include "hm/verification/fdm1d_output.hpp"
-#include "hm/verification/progress.hpp"
-#include "hm/verification/provenance.hpp"
-#include "hm/verification/run_output.hpp"
+#include "hm/case/fdm1d_output.hpp"
+#include "hm/case/progress.hpp"
+#include "hm/case/provenance.hpp"
+#include "hm/case/run_output.hpp"
 #include "report_writer.hpp"
 
 namespace hm::verification::borehole_fracture {
+
+using cases::ProgressReporter;
+using cases::RadialFields;
+using cases::RunCase;
+using cases::RunRecorder;
+using cases::injection_pressure;
+using cases::make_provenance;
+using cases::radial_fields;
+using cases::run_case_to_toml;
+using cases::to_toml;
+using cases::write_fdm1d_results;
 
 namespace lt = hm::lattice2d;
 namespace fs = std::filesystem;

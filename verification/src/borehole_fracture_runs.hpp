@@ -13,7 +13,7 @@
 #include "hm/fdm1d/fdm1d.hpp"
 #include "hm/lattice2d/coupled_model.hpp"
 #include "hm/lattice2d/fracture_statistics.hpp"
-#include "hm/verification/run_case.hpp"
+#include "hm/case/run_case.hpp"
 
 namespace hm::verification::borehole_fracture {
 
@@ -87,19 +87,19 @@ struct RunOutcome {
 
 /// The 1D reference of a case (fdm1d: Appendix A, no fracture, flux-boundary borehole, with the calibrated
 /// lattice's nu), written to root/fdm1d_b<b>/ as `hmlattice fdm1d` writes it.
-fdm1d::Fdm1dResult write_reference(const RunCase& c, const std::filesystem::path& root);
+fdm1d::Fdm1dResult write_reference(const cases::RunCase& c, const std::filesystem::path& root);
 
 /// Runs case `c` with fracture into root/label/. `progress` (null: silent) gets a line a minute and one
 /// at the end: the paper tier's runs take up to an hour.
-RunOutcome run_case(const RunCase& c, const std::string& label, const std::filesystem::path& root,
+RunOutcome run_case(const cases::RunCase& c, const std::string& label, const std::filesystem::path& root,
                     const fdm1d::Fdm1dResult& ref, std::ostream* progress = nullptr);
 
 /// Runs the unfractured flux-borehole twin of `c` into root/label/, to the case's first output time.
-TwinOutcome run_flux_twin(const RunCase& c, const std::string& label, const std::filesystem::path& root,
+TwinOutcome run_flux_twin(const cases::RunCase& c, const std::string& label, const std::filesystem::path& root,
                           const fdm1d::Fdm1dResult& ref);
 
 /// `c` with the paper's Eq. 16 borehole node (storage (E/M) V_h dp_h and b dV_h, errata E15) instead of
 /// the cases' flux boundary.
-RunCase with_eq16_borehole_node(RunCase c);
+cases::RunCase with_eq16_borehole_node(cases::RunCase c);
 
 }  // namespace hm::verification::borehole_fracture

@@ -11,6 +11,8 @@
 
 namespace hm::verification {
 
+using cases::make_provenance;
+
 namespace fs = std::filesystem;
 
 std::string to_string(Tier tier) { return tier == Tier::quick ? "quick" : "paper"; }

@@ -8,6 +8,8 @@
 
 namespace hm::verification {
 
+using cases::Provenance;
+
 namespace fs = std::filesystem;
 
 std::string format_number(double value) {

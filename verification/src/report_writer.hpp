@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "hm/verification/benchmark.hpp"
-#include "hm/verification/provenance.hpp"
+#include "hm/case/provenance.hpp"
 
 namespace hm::verification {
 
@@ -19,7 +19,7 @@ struct BenchmarkOutcome {
 };
 
 void write_report_markdown(const std::filesystem::path& file, const std::vector<BenchmarkOutcome>& outcomes,
-                           const Provenance& provenance, Tier tier);
+                           const cases::Provenance& provenance, Tier tier);
 void write_metrics_json(const std::filesystem::path& file, const std::vector<BenchmarkOutcome>& outcomes);
 
 /// "3.14e-05"-style formatting used in every report table.

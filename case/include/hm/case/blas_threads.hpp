@@ -1,6 +1,6 @@
 #pragma once
 // How many threads the BLAS behind CHOLMOD may use in the `hmlattice` program.
-namespace hm::verification {
+namespace hm::cases {
 
 /// Sets OpenBLAS to one thread unless the user chose (OPENBLAS_NUM_THREADS, OMP_NUM_THREADS): the
 /// toolkit's own OpenMP loops (triangular solves, stress scans) and CHOLMOD's use the cores, and Debian's
@@ -11,4 +11,4 @@ namespace hm::verification {
 /// Returns whether it set the threads.
 bool limit_blas_threads();
 
-}  // namespace hm::verification
+}  // namespace hm::cases

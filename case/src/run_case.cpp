@@ -1,4 +1,4 @@
-#include "hm/verification/run_case.hpp"
+#include "hm/case/run_case.hpp"
 
 #include <sstream>
 
@@ -6,7 +6,7 @@
 #include "hm/analytic/validation.hpp"
 #include "hm/lattice2d/calibration.hpp"
 
-namespace hm::verification {
+namespace hm::cases {
 
 namespace lt = hm::lattice2d;
 
@@ -250,4 +250,4 @@ std::string run_case_to_toml(const RunCase& c, const std::string& provenance_tom
   return os.str();
 }
 
-}  // namespace hm::verification
+}  // namespace hm::cases

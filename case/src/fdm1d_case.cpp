@@ -1,4 +1,4 @@
-#include "hm/verification/fdm1d_case.hpp"
+#include "hm/case/fdm1d_case.hpp"
 
 #include <cstring>
 #include <sstream>
@@ -6,7 +6,7 @@
 #include "hm/core/input_error.hpp"
 #include "hm/analytic/validation.hpp"
 
-namespace hm::verification {
+namespace hm::cases {
 
 namespace {
 
@@ -73,4 +73,4 @@ std::string fdm1d_case_to_toml(const Fdm1dCase& c, const std::string& provenance
   return os.str();
 }
 
-}  // namespace hm::verification
+}  // namespace hm::cases

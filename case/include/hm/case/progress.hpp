@@ -6,7 +6,7 @@
 #include <ostream>
 #include <string>
 
-namespace hm::verification {
+namespace hm::cases {
 
 class ProgressReporter {
  public:
@@ -22,4 +22,4 @@ class ProgressReporter {
   std::chrono::steady_clock::time_point start_, last_;
 };
 
-}  // namespace hm::verification
+}  // namespace hm::cases

@@ -1,9 +1,9 @@
-#include "hm/verification/csv_writer.hpp"
+#include "hm/case/csv_writer.hpp"
 
 #include <cassert>
 #include <cstdio>
 
-namespace hm::verification {
+namespace hm::cases {
 
 CsvWriter::CsvWriter(std::ostream& out, const std::vector<std::string>& columns)
     : out_(out), n_columns_(columns.size()) {
@@ -21,4 +21,4 @@ void CsvWriter::row(const std::vector<double>& values) {
   out_ << "\n";
 }
 
-}  // namespace hm::verification
+}  // namespace hm::cases

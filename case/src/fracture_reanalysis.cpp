@@ -1,4 +1,4 @@
-#include "hm/verification/fracture_reanalysis.hpp"
+#include "hm/case/fracture_reanalysis.hpp"
 
 #include <array>
 #include <cmath>
@@ -12,10 +12,10 @@
 #include "hm/lattice2d/failure.hpp"
 #include "hm/lattice2d/lattice.hpp"
 #include "hm/lattice2d/vtk_writer.hpp"
-#include "hm/verification/provenance.hpp"
-#include "hm/verification/run_case.hpp"
+#include "hm/case/provenance.hpp"
+#include "hm/case/run_case.hpp"
 
-namespace hm::verification {
+namespace hm::cases {
 
 namespace lt = hm::lattice2d;
 
@@ -103,4 +103,4 @@ FractureReanalysis recompute_fracture_statistics(const std::filesystem::path& ru
   return {static_cast<int>(snapshots.size()), static_cast<int>(log.size())};
 }
 
-}  // namespace hm::verification
+}  // namespace hm::cases

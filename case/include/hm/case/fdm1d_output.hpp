@@ -11,9 +11,9 @@
 #include "hm/analytic/physical_parameters.hpp"
 #include "hm/fdm1d/fdm1d.hpp"
 
-namespace hm::verification {
+namespace hm::cases {
 
 void write_fdm1d_results(const std::filesystem::path& dir, const hm::fdm1d::Fdm1dResult& result,
                          const hm::analytic::DimensionlessParameters& params);
 
-}  // namespace hm::verification
+}  // namespace hm::cases

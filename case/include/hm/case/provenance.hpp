@@ -3,7 +3,7 @@
 /// What is written beside every result so a run can be traced and repeated.
 #include <string>
 
-namespace hm::verification {
+namespace hm::cases {
 
 struct Provenance {
   std::string version;       ///< toolkit version
@@ -18,4 +18,4 @@ Provenance make_provenance(const std::string& command_line);
 /// A TOML fragment ([provenance] table) for resolved-config files.
 std::string to_toml(const Provenance& p);
 
-}  // namespace hm::verification
+}  // namespace hm::cases

@@ -12,7 +12,7 @@
 
 #include "hm/analytic/physical_parameters.hpp"
 
-namespace hm::verification {
+namespace hm::cases {
 
 /// One TOML table being read; remembers which keys were used.
 class CaseTable {
@@ -74,4 +74,4 @@ CasePhysics read_physics(CaseTable& root);
 /// comments if the case gave [physics_si]. Written beside results; itself a valid case section.
 std::string physics_to_toml(const CasePhysics& physics);
 
-}  // namespace hm::verification
+}  // namespace hm::cases

@@ -7,7 +7,7 @@
 
 #include "hm/lattice2d/fracture_statistics.hpp"
 
-namespace hm::verification {
+namespace hm::cases {
 
 /// What recompute_fracture_statistics found.
 struct FractureReanalysis {
@@ -26,4 +26,4 @@ struct FractureReanalysis {
 FractureReanalysis recompute_fracture_statistics(const std::filesystem::path& run_dir, hm::lattice2d::FractureLink link,
                                                  const std::string& command_line);
 
-}  // namespace hm::verification
+}  // namespace hm::cases

@@ -1,9 +1,9 @@
-#include "hm/verification/provenance.hpp"
+#include "hm/case/provenance.hpp"
 
 #include <ctime>
 #include <sstream>
 
-namespace hm::verification {
+namespace hm::cases {
 
 namespace {
 std::string quoted(const std::string& s) {
@@ -36,4 +36,4 @@ std::string to_toml(const Provenance& p) {
   return os.str();
 }
 
-}  // namespace hm::verification
+}  // namespace hm::cases

@@ -1,9 +1,9 @@
-#include "hm/verification/run_output.hpp"
+#include "hm/case/run_output.hpp"
 
 #include "hm/core/file_output.hpp"
 #include "hm/lattice2d/radial_average.hpp"
 
-namespace hm::verification {
+namespace hm::cases {
 
 namespace lt = hm::lattice2d;
 
@@ -96,9 +96,9 @@ void RunRecorder::record(const lt::CoupledModel& model, const lt::CoupledStepSum
   }
 }
 
-}  // namespace hm::verification
+}  // namespace hm::cases
 
-namespace hm::verification {
+namespace hm::cases {
 
 void RunRecorder::finish() {
   core::close_checked(series_file_, dir_ / "series.csv");
@@ -114,4 +114,4 @@ void RunRecorder::finish() {
   });
 }
 
-}  // namespace hm::verification
+}  // namespace hm::cases

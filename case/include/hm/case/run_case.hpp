@@ -26,9 +26,9 @@
 #include "hm/lattice2d/fracture_statistics.hpp"
 #include "hm/lattice2d/lattice.hpp"
 #include "hm/lattice2d/mechanics.hpp"
-#include "hm/verification/case_file.hpp"
+#include "hm/case/case_file.hpp"
 
-namespace hm::verification {
+namespace hm::cases {
 
 /// What [output] asks for.
 struct RunOutput {
@@ -76,4 +76,4 @@ RunCase read_run_case(const std::filesystem::path& file);
 /// The resolved case as TOML (itself a valid case file), with a [provenance] table.
 std::string run_case_to_toml(const RunCase& c, const std::string& provenance_toml);
 
-}  // namespace hm::verification
+}  // namespace hm::cases

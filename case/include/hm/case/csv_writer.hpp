@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace hm::verification {
+namespace hm::cases {
 
 class CsvWriter {
  public:
@@ -20,4 +20,4 @@ class CsvWriter {
   std::size_t n_columns_;
 };
 
-}  // namespace hm::verification
+}  // namespace hm::cases

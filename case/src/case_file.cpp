@@ -1,4 +1,4 @@
-#include "hm/verification/case_file.hpp"
+#include "hm/case/case_file.hpp"
 
 #include <cstdio>
 #include <regex>
@@ -8,7 +8,7 @@
 #include "hm/core/input_error.hpp"
 #include "hm/analytic/validation.hpp"
 
-namespace hm::verification {
+namespace hm::cases {
 
 using hm::analytic::format_value;
 
@@ -223,4 +223,4 @@ std::string physics_to_toml(const CasePhysics& c) {
   return os.str();
 }
 
-}  // namespace hm::verification
+}  // namespace hm::cases

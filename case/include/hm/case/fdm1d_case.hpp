@@ -5,9 +5,9 @@
 #include <string>
 
 #include "hm/fdm1d/fdm1d.hpp"
-#include "hm/verification/case_file.hpp"
+#include "hm/case/case_file.hpp"
 
-namespace hm::verification {
+namespace hm::cases {
 
 struct Fdm1dCase {
   CasePhysics physics;
@@ -20,4 +20,4 @@ Fdm1dCase read_fdm1d_case(const std::filesystem::path& file);
 /// The resolved case as TOML (itself a valid case file), with a [provenance] table.
 std::string fdm1d_case_to_toml(const Fdm1dCase& c, const std::string& provenance_toml);
 
-}  // namespace hm::verification
+}  // namespace hm::cases

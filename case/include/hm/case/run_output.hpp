@@ -32,10 +32,10 @@
 #include "hm/lattice2d/coupled_model.hpp"
 #include "hm/lattice2d/fracture_statistics.hpp"
 #include "hm/lattice2d/vtk_writer.hpp"
-#include "hm/verification/csv_writer.hpp"
-#include "hm/verification/run_case.hpp"
+#include "hm/case/csv_writer.hpp"
+#include "hm/case/run_case.hpp"
 
-namespace hm::verification {
+namespace hm::cases {
 
 /// Writes the files above into `dir` (created by the caller) while a CoupledModel runs; pass
 /// record() as the model's observer. Nothing here decides anything about the run.
@@ -76,4 +76,4 @@ RadialFields radial_fields(const hm::lattice2d::CoupledModel& model, const std::
 /// The borehole pressure (annulus) or the source triangle's pressure (disk).
 double injection_pressure(const hm::lattice2d::CoupledModel& model);
 
-}  // namespace hm::verification
+}  // namespace hm::cases

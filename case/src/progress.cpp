@@ -1,8 +1,8 @@
-#include "hm/verification/progress.hpp"
+#include "hm/case/progress.hpp"
 
 #include <cstdio>
 
-namespace hm::verification {
+namespace hm::cases {
 
 ProgressReporter::ProgressReporter(std::ostream& out, std::string label, double interval_s)
     : out_(out), label_(std::move(label)), interval_s_(interval_s),
@@ -28,4 +28,4 @@ void ProgressReporter::finish(const std::string& summary) {
   out_ << "[" << label_ << "] " << summary << line << std::endl;
 }
 
-}  // namespace hm::verification
+}  // namespace hm::cases

@@ -1,12 +1,12 @@
-#include "hm/verification/fdm1d_output.hpp"
+#include "hm/case/fdm1d_output.hpp"
 
 #include "hm/analytic/failure_criteria.hpp"
 #include "hm/analytic/steady_borehole.hpp"
 #include "hm/analytic/validation.hpp"
 #include "hm/core/file_output.hpp"
-#include "hm/verification/csv_writer.hpp"
+#include "hm/case/csv_writer.hpp"
 
-namespace hm::verification {
+namespace hm::cases {
 
 void write_fdm1d_results(const std::filesystem::path& dir, const hm::fdm1d::Fdm1dResult& res,
                          const hm::analytic::DimensionlessParameters& params) {
@@ -44,4 +44,4 @@ void write_fdm1d_results(const std::filesystem::path& dir, const hm::fdm1d::Fdm1
   });
 }
 
-}  // namespace hm::verification
+}  // namespace hm::cases

@@ -1,11 +1,11 @@
 // See blas_threads.hpp.
-#include "hm/verification/blas_threads.hpp"
+#include "hm/case/blas_threads.hpp"
 
 #include <dlfcn.h>
 
 #include <cstdlib>
 
-namespace hm::verification {
+namespace hm::cases {
 
 bool limit_blas_threads() {
   if (std::getenv("OPENBLAS_NUM_THREADS") || std::getenv("OMP_NUM_THREADS")) return false;
@@ -17,4 +17,4 @@ bool limit_blas_threads() {
   return true;
 }
 
-}  // namespace hm::verification
+}  // namespace hm::cases
