@@ -31,7 +31,9 @@ std::string draw_figure(const Figure& figure, const fs::path& data_dir, const fs
   const std::string python = figure_python();
   if (python.empty()) return "no python3 with matplotlib and numpy (run scripts/install-deps.sh)";
   const fs::path script = fs::path(HM_SOURCE_DIR) / "figures" / figure.script;
-  const fs::path log = figure_dir / (figure.file + ".log");
+  // The script's output goes beside its folder, not into it: the script may only write into a new or
+  // empty folder or one that holds the toolkit's marker (figures/hmplot.py).
+  const fs::path log = figure_dir.parent_path() / (figure_dir.filename().string() + "." + figure.file + ".log");
   const std::string cmd = shell_quote(python) + " " + shell_quote(script.string()) + " --data " +
                           shell_quote((data_dir / figure.data_subdir).string()) + " --out " + shell_quote(figure_dir.string()) +
                           " > " + shell_quote(log.string()) + " 2>&1";
