@@ -18,11 +18,11 @@
 #include <iostream>
 
 #include "commands.hpp"
+#include "hm/case/coupled_model_of_case.hpp"
 #include "hm/core/file_output.hpp"
 #include "hm/core/result_folder.hpp"
 #include "hm/lattice2d/calibration.hpp"
 #include "hm/lattice2d/coupled_model.hpp"
-#include "hm/lattice2d/strength.hpp"
 #include "hm/case/progress.hpp"
 #include "hm/case/provenance.hpp"
 #include "hm/case/run_case.hpp"
@@ -70,14 +70,11 @@ void add_run_command(CLI::App& app, int& exit_code, const std::string& command_l
     //    calibrated_continuum().poisson_ratio, docs/lattice.md), whatever [physics] nu says: nu there
     //    enters E/M (Eq. 22) only.
     const auto setup_start = std::chrono::steady_clock::now();
-    lattice2d::CoupledModel model(lattice2d::generate_lattice(c.lattice), c.beams(),
-                                  c.boundary, c.mechanics, c.flow_parameters(), c.coupling);
-    if (c.fracture_enabled)
-      model.enable_fracture(lattice2d::draw_beam_strengths(c.strength, model.lattice().n_beams()), c.break_loop);
+    const auto model = cases::make_coupled_model(c);
     const double setup_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_start).count();
-    std::cout << "lattice: " << model.lattice().n_particles() << " particles, " << model.lattice().n_beams()
-              << " beams, " << model.lattice().n_triangles() << " triangles\n";
+    std::cout << "lattice: " << model->lattice().n_particles() << " particles, " << model->lattice().n_beams()
+              << " beams, " << model->lattice().n_triangles() << " triangles\n";
 
     // 3. Run: the initial state, then while time remains a coupled step; each step is recorded.
     cases::RunRecorder recorder(out.path(), c);
@@ -86,8 +83,8 @@ void add_run_command(CLI::App& app, int& exit_code, const std::string& command_l
     double step_seconds = 0.0, mechanics_seconds = 0.0, geometry_seconds = 0.0, flow_seconds = 0.0,
            stress_seconds = 0.0, break_seconds = 0.0;
     long long n_solves = 0, n_contact_changes = 0, n_refactorizations = 0, n_update_failures = 0;
-    const auto run = model.run(c.stepping, [&](const lattice2d::CoupledModel& m, const lattice2d::CoupledStepSummary& s,
-                                               bool is_output) {
+    const auto run = model->run(c.stepping, [&](const lattice2d::CoupledModel& m, const lattice2d::CoupledStepSummary& s,
+                                                bool is_output) {
       recorder.record(m, s, is_output);
       step_seconds += s.seconds;
       mechanics_seconds += s.mechanics_seconds;
@@ -118,13 +115,13 @@ void add_run_command(CLI::App& app, int& exit_code, const std::string& command_l
                   "refactorisations (%lld after failed updates), max volume-balance error %.2e; set-up %.1f s, "
                   "mechanics solves %.1f s, stresses and failure checks %.1f s, downdates %.1f s, geometry %.1f s, "
                   "flow %.1f s",
-                  run.n_steps, run.n_step_halvings, run.total_iterations, model.n_broken(), n_solves,
+                  run.n_steps, run.n_step_halvings, run.total_iterations, model->n_broken(), n_solves,
                   n_contact_changes, n_refactorizations, n_update_failures, run.max_balance_error, setup_seconds, mechanics_seconds,
                   stress_seconds, break_seconds,
                   geometry_seconds, flow_seconds);
     progress.finish(summary);
     if (n_update_failures > 0)  // each cost a refactorisation: say what CHOLMOD reported (docs/borehole_fracture.md)
-      std::cout << "last failed update: " << model.mechanics().solver().report().last_update_failure << "\n";
+      std::cout << "last failed update: " << model->mechanics().solver().report().last_update_failure << "\n";
     if (!run.is_ok()) {
       std::cerr << "hmlattice run: numerical failure: " << run.message << "\n";
       exit_code = 1;

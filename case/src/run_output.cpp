@@ -62,21 +62,22 @@ void RunRecorder::record(const lt::CoupledModel& model, const lt::CoupledStepSum
                 step.flow.balance_error, static_cast<double>(model.n_broken()), static_cast<double>(step.iterations),
                 step.pressure_residual, step.displacement_residual});
   const double p_h = injection_pressure(model);
-  if (p_h > p_peak_) {
-    p_peak_ = p_h;
-    t_peak_ = model.time();
+  Breakdown& b = breakdown_;
+  if (p_h > b.p_peak) {
+    b.p_peak = p_h;
+    b.t_peak = model.time();
   }
   if (fracture_) {
     const auto& log = model.break_log();
     if (breaks_.empty() && !log.empty()) {
-      t_first_ = model.time();
-      p_before_ = last_p_h_;
-      p_first_ = p_h;
-      x_first_ = log.front().position.x();
-      y_first_ = log.front().position.y();
+      b.t_first = model.time();
+      b.p_before = last_p_h_;
+      b.p_first = p_h;
+      b.x_first = log.front().position.x();
+      b.y_first = log.front().position.y();
     }
     breaks_.insert(breaks_.end(), log.begin() + static_cast<std::ptrdiff_t>(breaks_.size()), log.end());
-    n_broken_ = model.n_broken();
+    b.n_broken = model.n_broken();
   }
   last_p_h_ = p_h;
   if (!is_output) return;
@@ -110,7 +111,9 @@ void RunRecorder::finish() {
   core::write_file_atomically(dir_ / "breakdown.csv", [&](std::ostream& file) {
     CsvWriter breakdown(file, {"t_first_break", "p_h_before", "p_h_first_break", "x_first_break", "y_first_break",
                                "t_peak", "p_h_peak", "n_broken"});
-    breakdown.row({t_first_, p_before_, p_first_, x_first_, y_first_, t_peak_, p_peak_, static_cast<double>(n_broken_)});
+    const Breakdown& b = breakdown_;
+    breakdown.row({b.t_first, b.p_before, b.p_first, b.x_first, b.y_first, b.t_peak, b.p_peak,
+                   static_cast<double>(b.n_broken)});
   });
 }
 

@@ -17,6 +17,7 @@
 
 #include "hm/analytic/rudnicki.hpp"
 #include "hm/core/file_output.hpp"
+#include "hm/case/coupled_model_of_case.hpp"
 #include "hm/lattice2d/calibration.hpp"
 #include "hm/lattice2d/coupled_model.hpp"
 #include "hm/lattice2d/radial_average.hpp"
@@ -94,12 +95,11 @@ struct RudnickiOutcome {
 
 RudnickiOutcome run_variant(const RudnickiVariant& v, const BenchmarkContext& ctx, Table& table) {
   const RunCase c = rudnicki_case(v);
-  lt::CoupledModel model(lt::generate_lattice(c.lattice), c.beams(), c.boundary, c.mechanics,
-                         c.flow_parameters(), c.coupling);
+  const auto model = cases::make_coupled_model(c);
   const std::filesystem::path dir = ctx.data_dir / ("rudnicki_" + v.label);
   std::filesystem::create_directories(dir);
   RunRecorder recorder(dir, c);
-  const auto run = model.run(c.stepping, [&](const lt::CoupledModel& m, const lt::CoupledStepSummary& s, bool out) {
+  const auto run = model->run(c.stepping, [&](const lt::CoupledModel& m, const lt::CoupledStepSummary& s, bool out) {
     recorder.record(m, s, out);
   });
   recorder.finish();
@@ -110,7 +110,7 @@ RudnickiOutcome run_variant(const RudnickiVariant& v, const BenchmarkContext& ct
   o.n_steps = run.n_steps;
   o.total_iterations = run.total_iterations;
   o.seconds = run.seconds;
-  o.fields = radial_fields(model, lt::uniform_shell_edges(0.0, c.output.radial_max, c.output.radial_bins));
+  o.fields = radial_fields(*model, lt::uniform_shell_edges(0.0, c.output.radial_max, c.output.radial_bins));
   analytic::PoroelasticParameters continuum = c.physics.parameters.material;
   continuum.nu = lt::calibrated_continuum().poisson_ratio;
   continuum.vol_strain = analytic::VolStrain::plane_strain;
@@ -130,7 +130,7 @@ RudnickiOutcome run_variant(const RudnickiVariant& v, const BenchmarkContext& ct
     const double p_a = exact.pressure(r, c.stepping.t_end), u_a = exact.radial_displacement(r, c.stepping.t_end);
     o.max_error_p = std::max(o.max_error_p, std::abs(o.fields.p[k] - p_a) / p_a);
     o.max_error_u = std::max(o.max_error_u, std::abs(o.fields.u_r[k] - u_a) / u_a);
-    table.rows.push_back({v.label, std::to_string(model.lattice().n_particles()), fmt(r), fmt(o.fields.p[k]), fmt(p_a),
+    table.rows.push_back({v.label, std::to_string(model->lattice().n_particles()), fmt(r), fmt(o.fields.p[k]), fmt(p_a),
                           fmt(o.fields.u_r[k]), fmt(u_a)});
   }
   return o;
@@ -303,25 +303,23 @@ BenchmarkResult psi_study(const BenchmarkContext& ctx) {
                             .split = psi == 0.0 ? lt::CouplingSplit::drained : lt::CouplingSplit::undrained, .psi = psi};
     const RunCase c = rudnicki_case(v);
     {  // the whole run
-      lt::CoupledModel model(lattice, c.beams(), c.boundary, c.mechanics, c.flow_parameters(),
-                             c.coupling);
-      const auto run = model.run(c.stepping);
+      const auto model = cases::make_coupled_model(c, lattice);
+      const auto run = model->run(c.stepping);
       run_passes.push_back(run.is_ok() ? run.total_iterations : -1);
       run_seconds.push_back(run.seconds);
     }
     {  // one step from rest: the shell pressure against the pass number (Fig. 8)
-      lt::CouplingOptions options = c.coupling;
-      options.max_iterations = 500;
-      lt::CoupledModel model(lattice, c.beams(), c.boundary, c.mechanics, c.flow_parameters(),
-                             options);
+      RunCase long_passes = c;
+      long_passes.coupling.max_iterations = 500;
+      const auto model = cases::make_coupled_model(long_passes, lattice);
       std::vector<double> history;
-      model.set_pass_observer([&](int pass, const Eigen::VectorXd& p, const Eigen::VectorXd&) {
+      model->set_pass_observer([&](int pass, const Eigen::VectorXd& p, const Eigen::VectorXd&) {
         double sum = 0.0;
         for (int s : shell) sum += p[s] * dual.triangle_area[s];
         history.push_back(sum / shell_area);
         passes.row({psi, static_cast<double>(pass), sum / shell_area});
       });
-      const auto step = model.step(3e-4);
+      const auto step = model->step(3e-4);
       step_passes.push_back(step.is_ok() ? step.iterations : -1);
       // Overshoots: sign changes of the pass-to-pass change over the first 5 passes, counting only
       // changes above 1e-4 of the shell pressure (visible in Fig. 8; the drained split's are 2e-4 to

@@ -33,6 +33,7 @@
 
 #include "hm/analytic/physical_parameters.hpp"
 #include "hm/core/file_output.hpp"
+#include "hm/case/coupled_model_of_case.hpp"
 #include "hm/fdm1d/fdm1d.hpp"
 #include "hm/lattice2d/calibration.hpp"
 #include "hm/lattice2d/coupled_model.hpp"
@@ -194,13 +195,12 @@ Outcome compare(const Comparison1d& v, const fs::path& root, CsvWriter& ph_csv,
 
   // The 2D run, written as `hmlattice run` writes it.
   const RunCase c = lattice_case(v);
-  lt::CoupledModel model(lt::generate_lattice(c.lattice), c.beams(), c.boundary, c.mechanics,
-                         c.flow_parameters(), c.coupling);
+  const auto model = cases::make_coupled_model(c);
   const fs::path dir = root / run_label(v.b, v.n_particles);
   fs::create_directories(dir);
   RunRecorder recorder(dir, c);
   const std::vector<double> edges = lt::uniform_shell_edges(c.physics.parameters.R_i, 1.0, kShells);
-  const auto run = model.run(c.stepping, [&](const lt::CoupledModel& m, const lt::CoupledStepSummary& s, bool out) {
+  const auto run = model->run(c.stepping, [&](const lt::CoupledModel& m, const lt::CoupledStepSummary& s, bool out) {
     recorder.record(m, s, out);
     const double t = m.time();
     if (t <= 0.0) return;

@@ -8,10 +8,10 @@
 #include <stdexcept>
 
 #include "fdm1d_sampling.hpp"
+#include "hm/case/coupled_model_of_case.hpp"
 #include "hm/core/file_output.hpp"
 #include "hm/lattice2d/calibration.hpp"
 #include "hm/lattice2d/radial_average.hpp"
-#include "hm/lattice2d/strength.hpp"
 #include "hm/case/fdm1d_output.hpp"
 #include "hm/case/progress.hpp"
 #include "hm/case/provenance.hpp"
@@ -136,22 +136,18 @@ RunOutcome run_case(const RunCase& c, const std::string& label, const fs::path& 
   o.R_i = c.physics.parameters.R_i;
   o.eq16_node = c.borehole_storage == lt::BoreholeStorage::biot_modulus &&
                 c.borehole_deformation == lt::BoreholeDeformation::biot;
-  // As app/cmd_run.cpp: calibrated beams, strengths drawn per beam, the case's break loop.
-  lt::CoupledModel model(lt::generate_lattice(c.lattice), c.beams(), c.boundary, c.mechanics,
-                         c.flow_parameters(), c.coupling);
-  model.enable_fracture(lt::draw_beam_strengths(c.strength, model.lattice().n_beams()), c.break_loop);
+  const auto model = cases::make_coupled_model(c);
   const fs::path dir = root / label;
   fs::create_directories(dir);
   RunRecorder recorder(dir, c);
   const std::vector<double> edges =
       lt::uniform_shell_edges(o.R_i, c.output.radial_max, c.output.radial_bins);
-  std::vector<bool> was_broken(static_cast<std::size_t>(model.lattice().n_beams()), false);
+  std::vector<bool> was_broken(static_cast<std::size_t>(model->lattice().n_beams()), false);
   int last_n_broken = 0;
-  double last_p_h = 0.0;
   double pre_last_t = kNaN, pre_last_ratio = kNaN;
   std::optional<ProgressReporter> reporter;
   if (progress) reporter.emplace(*progress, label, 60.0);
-  const auto run = model.run(c.stepping, [&](const lt::CoupledModel& m, const lt::CoupledStepSummary& s, bool out) {
+  const auto run = model->run(c.stepping, [&](const lt::CoupledModel& m, const lt::CoupledStepSummary& s, bool out) {
     recorder.record(m, s, out);
     const double t = m.time(), p_h = injection_pressure(m);
     if (reporter) reporter->update(t, c.stepping.t_end, "broken " + std::to_string(m.n_broken()));
@@ -160,7 +156,6 @@ RunOutcome run_case(const RunCase& c, const std::string& label, const fs::path& 
     o.fracture += s.stress_seconds + s.break_seconds;
     o.geometry += s.geometry_seconds;
     o.flow += s.flow_seconds;
-    if (p_h > o.p_peak) o.p_peak = p_h, o.t_peak = t;
     // Never heal: a beam once broken is never intact again, and the count never falls.
     const auto& states = m.mechanics().states();
     for (std::size_t e = 0; e < states.size(); ++e) {
@@ -171,11 +166,11 @@ RunOutcome run_case(const RunCase& c, const std::string& label, const fs::path& 
     if (m.n_broken() < last_n_broken) ++o.n_broken_decreases;
     last_n_broken = m.n_broken();
     const auto& log = m.break_log();
-    if (std::isnan(o.t_first) && !log.empty()) {
+    if (std::isnan(o.t_first) && recorder.breakdown().has_broken()) {
       const lt::BreakEvent& e = log.front();
-      o.t_first = t;
-      o.p_before = last_p_h;
-      o.p_first = p_h;
+      o.t_first = recorder.breakdown().t_first;
+      o.p_before = recorder.breakdown().p_before;
+      o.p_first = recorder.breakdown().p_first;
       o.r_first = e.position.norm();
       o.length_first = m.lattice().length[e.beam];
       o.mode_first = e.mode;
@@ -187,7 +182,6 @@ RunOutcome run_case(const RunCase& c, const std::string& label, const fs::path& 
       if (t >= kWindow * (1 - 1e-12) && (std::isnan(o.pre_max) || std::abs(ratio) > o.pre_max))
         o.pre_max = std::abs(ratio), o.pre_max_t = t;
     }
-    last_p_h = p_h;
     if (!out || t <= 0.0) return;
     Snapshot snap;
     snap.t = t;
@@ -207,9 +201,11 @@ RunOutcome run_case(const RunCase& c, const std::string& label, const fs::path& 
   o.passes = run.total_iterations;
   o.n_halvings = run.n_step_halvings;
   o.max_balance = run.max_balance_error;
+  o.p_peak = recorder.breakdown().p_peak;
+  o.t_peak = recorder.breakdown().t_peak;
   if (reporter)
     reporter->finish(o.ok ? std::to_string(o.n_steps) + " steps, " + std::to_string(o.passes) + " passes, " +
-                                std::to_string(model.n_broken()) + " broken"
+                                std::to_string(model->n_broken()) + " broken"
                           : "failed: " + o.message);
   if (!o.ok) return o;  // the folder stays, with the series up to the failure, for a look
   recorder.finish();
@@ -231,14 +227,13 @@ TwinOutcome run_flux_twin(const RunCase& c, const std::string& label, const fs::
   tc.output.vtk = false;
   TwinOutcome o;
   o.t_end = tc.stepping.t_end;
-  lt::CoupledModel model(lt::generate_lattice(tc.lattice), tc.beams(), tc.boundary,
-                         tc.mechanics, tc.flow_parameters(), tc.coupling);
+  const auto model = cases::make_coupled_model(tc);
   const fs::path dir = root / label;
   fs::create_directories(dir);
   RunRecorder recorder(dir, tc);
   const std::vector<double> edges = lt::uniform_shell_edges(c.physics.parameters.R_i, tc.output.radial_max,
                                                             tc.output.radial_bins);
-  const auto run = model.run(tc.stepping, [&](const lt::CoupledModel& m, const lt::CoupledStepSummary& s, bool out) {
+  const auto run = model->run(tc.stepping, [&](const lt::CoupledModel& m, const lt::CoupledStepSummary& s, bool out) {
     recorder.record(m, s, out);
     const double t = m.time();
     if (t >= kWindow * (1 - 1e-12)) {

@@ -23,6 +23,7 @@
 ///                  radial|secondary, extent, angle, modes;
 ///   fracture_summary.csv  per output time: counts of fractures, radial ones, those reaching the outer
 ///                  boundary, secondary ones, arms crossing r = R_i + (1 - R_i)/4, tensile/shear breaks.
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -37,6 +38,18 @@
 
 namespace hm::cases {
 
+/// Section 3.5's breakdown of a run so far: the first break and the peak borehole pressure p_h.
+struct Breakdown {
+  static constexpr double none = std::numeric_limits<double>::quiet_NaN();
+  double t_first = none;   ///< time of the step that broke the first beam (NaN while nothing broke)
+  double p_before = none;  ///< p_h^n of that step
+  double p_first = none;   ///< its converged p_h^{n+1}: the breakdown pressure
+  double x_first = none, y_first = none;  ///< midpoint of the first broken beam
+  double t_peak = 0.0, p_peak = -std::numeric_limits<double>::infinity();  ///< largest p_h so far
+  int n_broken = 0;
+  bool has_broken() const { return !std::isnan(t_first); }
+};
+
 /// Writes the files above into `dir` (created by the caller) while a CoupledModel runs; pass
 /// record() as the model's observer. Nothing here decides anything about the run.
 class RunRecorder {
@@ -45,6 +58,8 @@ class RunRecorder {
   void record(const hm::lattice2d::CoupledModel& model, const hm::lattice2d::CoupledStepSummary& step, bool is_output);
   /// Closes the CSV files and writes the fracture files; throws std::runtime_error if a write failed.
   void finish();
+  /// The breakdown up to the last record() (first break only with fracture enabled).
+  const Breakdown& breakdown() const { return breakdown_; }
 
  private:
   RunOutput output_;
@@ -52,12 +67,8 @@ class RunRecorder {
   std::filesystem::path dir_;
   bool fracture_ = false;
   hm::lattice2d::FractureStatisticsOptions statistics_options_;
-  // Breakdown (Section 3.5): first break and peak borehole pressure.
+  Breakdown breakdown_;
   double last_p_h_ = 0.0;
-  double t_first_ = std::numeric_limits<double>::quiet_NaN(), p_before_ = t_first_, p_first_ = t_first_;
-  double x_first_ = t_first_, y_first_ = t_first_;
-  double t_peak_ = 0.0, p_peak_ = -std::numeric_limits<double>::infinity();
-  int n_broken_ = 0;
   std::vector<hm::lattice2d::BreakEvent> breaks_;
   std::vector<hm::lattice2d::FractureSnapshot> fractures_;
   std::ofstream series_file_, radial_file_;
