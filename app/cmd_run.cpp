@@ -80,22 +80,11 @@ void add_run_command(CLI::App& app, int& exit_code, const std::string& command_l
     cases::RunRecorder recorder(out.path(), c);
     cases::ProgressReporter progress(std::cout, "run");
     int step = 0;
-    double step_seconds = 0.0, mechanics_seconds = 0.0, geometry_seconds = 0.0, flow_seconds = 0.0,
-           stress_seconds = 0.0, break_seconds = 0.0;
-    long long n_solves = 0, n_contact_changes = 0, n_refactorizations = 0, n_update_failures = 0;
+    double step_seconds = 0.0;  // for the ETA of the progress line
     const auto run = model->run(c.stepping, [&](const lattice2d::CoupledModel& m, const lattice2d::CoupledStepSummary& s,
                                                 bool is_output) {
       recorder.record(m, s, is_output);
       step_seconds += s.seconds;
-      mechanics_seconds += s.mechanics_seconds;
-      geometry_seconds += s.geometry_seconds;
-      flow_seconds += s.flow_seconds;
-      stress_seconds += s.stress_seconds;
-      break_seconds += s.break_seconds;
-      n_solves += s.n_mechanics_solves;
-      n_contact_changes += s.n_contact_changes;
-      n_refactorizations += s.n_mechanics_factorizations;
-      n_update_failures += s.n_mechanics_update_failures;
       const int remaining = remaining_steps(m.time(), s.dt, c.stepping);
       progress.update(m.time(), c.stepping.t_end,
                       "step " + std::to_string(step) + ", broken " + std::to_string(m.n_broken()) + ", iterations " +
@@ -115,12 +104,12 @@ void add_run_command(CLI::App& app, int& exit_code, const std::string& command_l
                   "refactorisations (%lld after failed updates), max volume-balance error %.2e; set-up %.1f s, "
                   "mechanics solves %.1f s, stresses and failure checks %.1f s, downdates %.1f s, geometry %.1f s, "
                   "flow %.1f s",
-                  run.n_steps, run.n_step_halvings, run.total_iterations, model->n_broken(), n_solves,
-                  n_contact_changes, n_refactorizations, n_update_failures, run.max_balance_error, setup_seconds, mechanics_seconds,
-                  stress_seconds, break_seconds,
-                  geometry_seconds, flow_seconds);
+                  run.n_steps, run.n_step_halvings, run.total_iterations, model->n_broken(), run.n_mechanics_solves,
+                  run.n_contact_changes, run.n_mechanics_factorizations, run.n_mechanics_update_failures,
+                  run.max_balance_error, setup_seconds, run.mechanics_seconds, run.stress_seconds, run.break_seconds,
+                  run.geometry_seconds, run.flow_seconds);
     progress.finish(summary);
-    if (n_update_failures > 0)  // each cost a refactorisation: say what CHOLMOD reported (docs/borehole_fracture.md)
+    if (run.n_mechanics_update_failures > 0)  // each cost a refactorisation: say what CHOLMOD reported (docs/borehole_fracture.md)
       std::cout << "last failed update: " << model->mechanics().solver().report().last_update_failure << "\n";
     if (!run.is_ok()) {
       std::cerr << "hmlattice run: numerical failure: " << run.message << "\n";

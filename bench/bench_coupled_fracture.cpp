@@ -53,19 +53,13 @@ int main(int argc, char** argv) {
   stepping.dt_growth = 1.2;
   stepping.dt_max = 5e-4;
   stepping.t_end = 0.0272;
-  double mechanics = 0.0, stress = 0.0, downdates = 0.0, geometry = 0.0, flow_seconds = 0.0;
-  const CoupledRunSummary run = model.run(stepping, [&](const CoupledModel&, const CoupledStepSummary& s, bool) {
-    mechanics += s.mechanics_seconds;
-    stress += s.stress_seconds;
-    downdates += s.break_seconds;
-    geometry += s.geometry_seconds;
-    flow_seconds += s.flow_seconds;
-  });
+  const CoupledRunSummary run = model.run(stepping);
   const double total = seconds_since(start);
   std::printf("Fig. 12 b = 0.2 to t* = 0.0272 at N = %d particles: %s, %d steps, %d passes, %d beams broken\n",
               lattice.n_particles(), to_string(run.status).c_str(), run.n_steps, run.total_iterations, model.n_broken());
   std::printf("  %-40s %9s %7s\n", "part", "seconds", "share");
-  const double parts[] = {setup, mechanics, stress, downdates, geometry, flow_seconds, total};
+  const double parts[] = {setup,           run.mechanics_seconds, run.stress_seconds, run.break_seconds,
+                          run.geometry_seconds, run.flow_seconds,  total};
   const char* names[] = {"set-up (lattice, factorisations)", "mechanical solves", "stresses and failure checks",
                          "factor downdates (breaks)", "deformed geometry", "flow (factorise/refine, solve)",
                          "whole run"};

@@ -358,6 +358,19 @@ CoupledStepSummary CoupledModel::step(double dt) {
   return summary;
 }
 
+void CoupledRunSummary::add_accepted_step(const CoupledStepSummary& s) {
+  step_seconds += s.seconds;
+  mechanics_seconds += s.mechanics_seconds;
+  stress_seconds += s.stress_seconds;
+  break_seconds += s.break_seconds;
+  geometry_seconds += s.geometry_seconds;
+  flow_seconds += s.flow_seconds;
+  n_mechanics_solves += s.n_mechanics_solves;
+  n_contact_changes += s.n_contact_changes;
+  n_mechanics_factorizations += s.n_mechanics_factorizations;
+  n_mechanics_update_failures += s.n_mechanics_update_failures;
+}
+
 CoupledRunSummary CoupledModel::run(const TimeStepping& stepping, const Observer& observer) {
   stepping.validate();
   const auto start = std::chrono::steady_clock::now();
@@ -393,6 +406,7 @@ CoupledRunSummary CoupledModel::run(const TimeStepping& stepping, const Observer
     }
     ++run.n_steps;
     run.max_balance_error = std::max(run.max_balance_error, s.flow.balance_error);
+    run.add_accepted_step(s);
     const bool is_output = std::abs(time() - t_out) <= snap;
     if (is_output) ++next_output;
     if (observer) observer(*this, s, is_output);

@@ -122,13 +122,23 @@ TEST_CASE("The fluid volume balance of every coupled step closes to 1e-8", "[lat
     stepping.dt_initial = 2e-6;
     stepping.dt_growth = 1.5;
     stepping.t_end = 1e-4;
-    double worst = 0.0;
+    double worst = 0.0, flow_seconds = 0.0;
+    long long n_solves = 0;
+    int n_observed = 0;
     const CoupledRunSummary run = model.run(stepping, [&](const CoupledModel&, const CoupledStepSummary& s, bool) {
       worst = std::max(worst, s.flow.balance_error);
+      flow_seconds += s.flow_seconds;
+      n_solves += s.n_mechanics_solves;
+      ++n_observed;
     });
     REQUIRE(run.is_ok());
     CHECK(worst <= 1e-8);
     CHECK(run.max_balance_error == worst);
+    // The run's time split and counters are the accepted steps' (the observer also sees t = 0, empty).
+    CHECK(n_observed == run.n_steps + 1);
+    CHECK(run.n_mechanics_solves == n_solves);
+    CHECK(run.n_mechanics_solves >= run.total_iterations);  // one solve per pass at least
+    CHECK(run.flow_seconds == flow_seconds);                 // the same sums in the same order: exact
     // The totals add up as well.
     const FlowTotals& t = model.flow().totals();
     CHECK(std::abs(t.injected - t.storage - t.deformation - t.outflow) <= 1e-8 * t.injected);

@@ -151,11 +151,6 @@ RunOutcome run_case(const RunCase& c, const std::string& label, const fs::path& 
     recorder.record(m, s, out);
     const double t = m.time(), p_h = injection_pressure(m);
     if (reporter) reporter->update(t, c.stepping.t_end, "broken " + std::to_string(m.n_broken()));
-    o.seconds += s.seconds;
-    o.mechanics += s.mechanics_seconds;
-    o.fracture += s.stress_seconds + s.break_seconds;
-    o.geometry += s.geometry_seconds;
-    o.flow += s.flow_seconds;
     // Never heal: a beam once broken is never intact again, and the count never falls.
     const auto& states = m.mechanics().states();
     for (std::size_t e = 0; e < states.size(); ++e) {
@@ -201,6 +196,11 @@ RunOutcome run_case(const RunCase& c, const std::string& label, const fs::path& 
   o.passes = run.total_iterations;
   o.n_halvings = run.n_step_halvings;
   o.max_balance = run.max_balance_error;
+  o.seconds = run.step_seconds;
+  o.mechanics = run.mechanics_seconds;
+  o.fracture = run.stress_seconds + run.break_seconds;
+  o.geometry = run.geometry_seconds;
+  o.flow = run.flow_seconds;
   o.p_peak = recorder.breakdown().p_peak;
   o.t_peak = recorder.breakdown().t_peak;
   if (reporter)

@@ -187,7 +187,14 @@ struct CoupledRunSummary {
   double seconds = 0.0;
   double max_balance_error = 0.0;
   std::string message;
+  /// The accepted steps' time split and counters (CoupledStepSummary's), summed.
+  double step_seconds = 0.0, mechanics_seconds = 0.0, stress_seconds = 0.0, break_seconds = 0.0,
+         geometry_seconds = 0.0, flow_seconds = 0.0;
+  long long n_mechanics_solves = 0, n_contact_changes = 0, n_mechanics_factorizations = 0,
+            n_mechanics_update_failures = 0;
   bool is_ok() const { return status == CoupledStatus::converged || status == CoupledStatus::accepted_unconverged; }
+  /// Adds one accepted step to the sums above.
+  void add_accepted_step(const CoupledStepSummary& s);
 };
 
 /// The coupled lattice (Fig. 5): per time step
