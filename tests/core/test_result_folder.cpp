@@ -21,7 +21,7 @@ using hm::test::folder_snapshot;
 
 namespace {
 
-// A fresh folder for one test, removed afterwards; the test runs with it as working directory's sibling.
+// A fresh folder for one test under the system temp folder, removed afterwards.
 struct Sandbox {
   fs::path root = fs::temp_directory_path() / ("hmlattice-core-" + std::to_string(::getpid()));
   Sandbox() {
