@@ -10,14 +10,14 @@
 #include "hm/analytic/sneddon.hpp"
 #include "hm/analytic/steady_borehole.hpp"
 #include "hm/analytic/validation.hpp"
-#include "hm/case/csv_writer.hpp"
+#include "hm/core/csv_writer.hpp"
 
 namespace hm::app {
 
 namespace {
 
 using namespace hm::analytic;
-using cases::CsvWriter;
+using core::CsvWriter;
 
 const std::vector<std::string> radial_columns = {"r", "p", "u_r", "sigma_r", "sigma_theta", "sigma_z"};
 

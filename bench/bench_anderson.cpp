@@ -12,7 +12,7 @@
 
 #include <Eigen/Core>
 
-#include "hm/lattice2d/anderson_acceleration.hpp"
+#include "hm/lattice2d/coupled/anderson_acceleration.hpp"
 
 using hm::lattice2d::AndersonAcceleration;
 

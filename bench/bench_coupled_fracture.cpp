@@ -11,9 +11,9 @@
 #include <cstdlib>
 
 #include "hm/analytic/biot_modulus.hpp"
-#include "hm/lattice2d/calibration.hpp"
-#include "hm/lattice2d/coupled_model.hpp"
-#include "hm/lattice2d/strength.hpp"
+#include "hm/lattice2d/mechanics/calibration.hpp"
+#include "hm/lattice2d/coupled/coupled_model.hpp"
+#include "hm/lattice2d/fracture/strength.hpp"
 
 using namespace hm::lattice2d;
 

@@ -24,9 +24,9 @@
 #include <Eigen/SparseCore>
 
 #include "hm/analytic/biot_modulus.hpp"
-#include "hm/lattice2d/dual_graph.hpp"
-#include "hm/lattice2d/flow_network.hpp"
-#include "hm/lattice2d/lattice.hpp"
+#include "hm/lattice2d/geometry/dual_graph.hpp"
+#include "hm/lattice2d/flow/flow_network.hpp"
+#include "hm/lattice2d/geometry/lattice.hpp"
 
 using namespace hm::lattice2d;
 using Matrix = Eigen::SparseMatrix<double>;

@@ -21,8 +21,8 @@
 #include <string>
 #include <vector>
 
-#include "hm/lattice2d/calibration.hpp"
-#include "hm/lattice2d/mechanics.hpp"
+#include "hm/lattice2d/mechanics/calibration.hpp"
+#include "hm/lattice2d/mechanics/mechanics.hpp"
 
 using namespace hm::lattice2d;
 

@@ -1,6 +1,6 @@
 #include "hm/case/coupled_model_of_case.hpp"
 
-#include "hm/lattice2d/strength.hpp"
+#include "hm/lattice2d/fracture/strength.hpp"
 
 namespace hm::cases {
 

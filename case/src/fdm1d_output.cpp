@@ -4,9 +4,11 @@
 #include "hm/analytic/steady_borehole.hpp"
 #include "hm/analytic/validation.hpp"
 #include "hm/core/file_output.hpp"
-#include "hm/case/csv_writer.hpp"
+#include "hm/core/csv_writer.hpp"
 
 namespace hm::cases {
+
+using core::CsvWriter;
 
 void write_fdm1d_results(const std::filesystem::path& dir, const hm::fdm1d::Fdm1dResult& res,
                          const hm::analytic::DimensionlessParameters& params) {

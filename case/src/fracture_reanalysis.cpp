@@ -9,11 +9,13 @@
 
 #include "hm/core/file_output.hpp"
 #include "hm/core/input_error.hpp"
-#include "hm/lattice2d/failure.hpp"
-#include "hm/lattice2d/lattice.hpp"
-#include "hm/lattice2d/vtk_writer.hpp"
+#include "hm/lattice2d/fracture/failure.hpp"
+#include "hm/lattice2d/geometry/lattice.hpp"
+#include "hm/lattice2d/io/vtk_writer.hpp"
 #include "hm/case/provenance.hpp"
 #include "hm/case/run_case.hpp"
+#include "hm/lattice2d/io/break_log.hpp"
+#include "hm/lattice2d/io/fracture_tables.hpp"
 
 namespace hm::cases {
 

@@ -4,7 +4,7 @@
 
 #include "hm/core/input_error.hpp"
 #include "hm/analytic/validation.hpp"
-#include "hm/lattice2d/calibration.hpp"
+#include "hm/lattice2d/mechanics/calibration.hpp"
 
 namespace hm::cases {
 

@@ -1,9 +1,13 @@
 #include "hm/case/run_output.hpp"
 
 #include "hm/core/file_output.hpp"
-#include "hm/lattice2d/radial_average.hpp"
+#include "hm/lattice2d/io/radial_average.hpp"
+#include "hm/lattice2d/io/break_log.hpp"
+#include "hm/lattice2d/io/fracture_tables.hpp"
 
 namespace hm::cases {
+
+using core::CsvWriter;
 
 namespace lt = hm::lattice2d;
 

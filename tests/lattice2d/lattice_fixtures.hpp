@@ -14,7 +14,7 @@
 
 #include <Eigen/Core>
 
-#include "hm/lattice2d/lattice.hpp"
+#include "hm/lattice2d/geometry/lattice.hpp"
 
 namespace hm::test {
 

@@ -3,7 +3,7 @@
 #include <Eigen/Dense>
 
 #include "hm/core/input_error.hpp"
-#include "hm/lattice2d/anderson_acceleration.hpp"
+#include "hm/lattice2d/coupled/anderson_acceleration.hpp"
 
 using hm::lattice2d::AndersonAcceleration;
 

@@ -9,7 +9,7 @@
 
 #include "approx.hpp"
 #include "hm/core/input_error.hpp"
-#include "hm/lattice2d/calibration.hpp"
+#include "hm/lattice2d/mechanics/calibration.hpp"
 #include "lattice2d/lattice_fixtures.hpp"
 
 using namespace hm::lattice2d;

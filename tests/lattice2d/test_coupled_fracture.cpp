@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "hm/core/input_error.hpp"
-#include "hm/lattice2d/calibration.hpp"
-#include "hm/lattice2d/coupled_model.hpp"
-#include "hm/lattice2d/strength.hpp"
+#include "hm/lattice2d/mechanics/calibration.hpp"
+#include "hm/lattice2d/coupled/coupled_model.hpp"
+#include "hm/lattice2d/fracture/strength.hpp"
 #include "lattice2d/lattice_fixtures.hpp"
 
 using namespace hm::lattice2d;

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "hm/core/input_error.hpp"
-#include "hm/lattice2d/coupled_model.hpp"
+#include "hm/lattice2d/coupled/coupled_model.hpp"
 #include "lattice2d/lattice_fixtures.hpp"
 
 using namespace hm::lattice2d;

@@ -8,10 +8,10 @@
 
 #include "approx.hpp"
 #include "hm/core/input_error.hpp"
-#include "hm/lattice2d/beam_stiffness.hpp"
-#include "hm/lattice2d/coupling.hpp"
-#include "hm/lattice2d/mechanics.hpp"
-#include "hm/lattice2d/spd_solver.hpp"
+#include "hm/lattice2d/mechanics/beam_stiffness.hpp"
+#include "hm/lattice2d/coupled/coupling.hpp"
+#include "hm/lattice2d/mechanics/mechanics.hpp"
+#include "hm/lattice2d/linalg/spd_solver.hpp"
 #include "lattice2d/lattice_fixtures.hpp"
 
 using namespace hm::lattice2d;

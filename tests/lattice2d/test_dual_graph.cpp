@@ -6,8 +6,8 @@
 
 #include "approx.hpp"
 #include "hm/core/input_error.hpp"
-#include "hm/lattice2d/dual_graph.hpp"
-#include "hm/lattice2d/lattice.hpp"
+#include "hm/lattice2d/geometry/dual_graph.hpp"
+#include "hm/lattice2d/geometry/lattice.hpp"
 #include "lattice2d/lattice_fixtures.hpp"
 
 using namespace hm::lattice2d;

@@ -9,8 +9,9 @@
 #include <vector>
 
 #include "approx.hpp"
-#include "hm/lattice2d/failure.hpp"
-#include "hm/lattice2d/lattice.hpp"
+#include "hm/lattice2d/fracture/failure.hpp"
+#include "hm/lattice2d/geometry/lattice.hpp"
+#include "hm/lattice2d/io/break_log.hpp"
 #include "lattice2d/lattice_fixtures.hpp"
 
 using namespace hm::lattice2d;

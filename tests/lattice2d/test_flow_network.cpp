@@ -10,8 +10,8 @@
 #include "hm/core/input_error.hpp"
 #include "hm/analytic/rudnicki.hpp"
 #include "hm/analytic/steady_borehole.hpp"
-#include "hm/lattice2d/flow_network.hpp"
-#include "hm/lattice2d/radial_average.hpp"
+#include "hm/lattice2d/flow/flow_network.hpp"
+#include "hm/lattice2d/io/radial_average.hpp"
 #include "lattice2d/lattice_fixtures.hpp"
 
 using namespace hm::lattice2d;

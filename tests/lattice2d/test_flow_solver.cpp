@@ -13,7 +13,7 @@
 #include <Eigen/Dense>
 
 #include "hm/core/input_error.hpp"
-#include "hm/lattice2d/flow_network.hpp"
+#include "hm/lattice2d/flow/flow_network.hpp"
 #include "lattice2d/lattice_fixtures.hpp"
 
 using namespace hm::lattice2d;

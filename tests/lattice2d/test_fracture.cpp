@@ -6,7 +6,7 @@
 
 #include "approx.hpp"
 #include "hm/core/input_error.hpp"
-#include "hm/lattice2d/fracture.hpp"
+#include "hm/lattice2d/fracture/fracture.hpp"
 
 using namespace hm::lattice2d;
 

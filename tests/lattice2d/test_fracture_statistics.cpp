@@ -11,8 +11,9 @@
 
 #include "approx.hpp"
 #include "hm/core/input_error.hpp"
-#include "hm/lattice2d/fracture.hpp"
-#include "hm/lattice2d/fracture_statistics.hpp"
+#include "hm/lattice2d/fracture/fracture.hpp"
+#include "hm/lattice2d/fracture/fracture_statistics.hpp"
+#include "hm/lattice2d/io/fracture_tables.hpp"
 #include "lattice_fixtures.hpp"
 
 using namespace hm::lattice2d;

@@ -7,7 +7,7 @@
 
 #include "approx.hpp"
 #include "hm/core/input_error.hpp"
-#include "hm/lattice2d/lattice.hpp"
+#include "hm/lattice2d/geometry/lattice.hpp"
 #include "lattice2d/lattice_fixtures.hpp"
 
 using namespace hm::lattice2d;

@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "hm/core/input_error.hpp"
-#include "hm/lattice2d/mechanics.hpp"
-#include "hm/lattice2d/particle_stress.hpp"
+#include "hm/lattice2d/mechanics/mechanics.hpp"
+#include "hm/lattice2d/mechanics/particle_stress.hpp"
 
 using namespace hm::lattice2d;
 

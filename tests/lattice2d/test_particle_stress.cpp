@@ -9,10 +9,10 @@
 
 #include "approx.hpp"
 #include "hm/core/input_error.hpp"
-#include "hm/lattice2d/beam_stiffness.hpp"
-#include "hm/lattice2d/dual_graph.hpp"
-#include "hm/lattice2d/lattice.hpp"
-#include "hm/lattice2d/particle_stress.hpp"
+#include "hm/lattice2d/mechanics/beam_stiffness.hpp"
+#include "hm/lattice2d/geometry/dual_graph.hpp"
+#include "hm/lattice2d/geometry/lattice.hpp"
+#include "hm/lattice2d/mechanics/particle_stress.hpp"
 
 using namespace hm::lattice2d;
 

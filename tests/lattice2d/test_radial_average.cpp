@@ -5,9 +5,9 @@
 #include <vector>
 
 #include "approx.hpp"
-#include "hm/lattice2d/dual_graph.hpp"
-#include "hm/lattice2d/lattice.hpp"
-#include "hm/lattice2d/radial_average.hpp"
+#include "hm/lattice2d/geometry/dual_graph.hpp"
+#include "hm/lattice2d/geometry/lattice.hpp"
+#include "hm/lattice2d/io/radial_average.hpp"
 
 using namespace hm::lattice2d;
 

@@ -9,10 +9,10 @@
 #include <omp.h>
 
 #include "hm/core/input_error.hpp"
-#include "hm/lattice2d/beam_stiffness.hpp"
-#include "hm/lattice2d/lattice.hpp"
-#include "hm/lattice2d/spd_solver.hpp"
-#include "subtree_solve.hpp"
+#include "hm/lattice2d/mechanics/beam_stiffness.hpp"
+#include "hm/lattice2d/geometry/lattice.hpp"
+#include "hm/lattice2d/linalg/spd_solver.hpp"
+#include "linalg/subtree_solve.hpp"
 
 using namespace hm::lattice2d;
 using Matrix = SpdSolver::Matrix;

@@ -4,7 +4,7 @@
 
 #include "approx.hpp"
 #include "hm/core/input_error.hpp"
-#include "hm/lattice2d/strength.hpp"
+#include "hm/lattice2d/fracture/strength.hpp"
 
 using namespace hm::lattice2d;
 

@@ -10,9 +10,9 @@
 #include <unistd.h>
 #include <vector>
 
-#include "hm/lattice2d/dual_graph.hpp"
-#include "hm/lattice2d/lattice.hpp"
-#include "hm/lattice2d/vtk_writer.hpp"
+#include "hm/lattice2d/geometry/dual_graph.hpp"
+#include "hm/lattice2d/geometry/lattice.hpp"
+#include "hm/lattice2d/io/vtk_writer.hpp"
 
 using namespace hm::lattice2d;
 namespace fs = std::filesystem;

@@ -26,11 +26,11 @@
 #include <catch2/catch.hpp>
 
 #include "hm/analytic/lame.hpp"
-#include "hm/lattice2d/beam_stiffness.hpp"
-#include "hm/lattice2d/dual_graph.hpp"
-#include "hm/lattice2d/lattice.hpp"
-#include "hm/lattice2d/mechanics.hpp"
-#include "hm/lattice2d/particle_stress.hpp"
+#include "hm/lattice2d/mechanics/beam_stiffness.hpp"
+#include "hm/lattice2d/geometry/dual_graph.hpp"
+#include "hm/lattice2d/geometry/lattice.hpp"
+#include "hm/lattice2d/mechanics/mechanics.hpp"
+#include "hm/lattice2d/mechanics/particle_stress.hpp"
 #include "lattice2d/lattice_fixtures.hpp"
 
 using namespace hm::lattice2d;

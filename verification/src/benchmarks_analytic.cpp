@@ -18,11 +18,11 @@
 #include "hm/analytic/steady_borehole.hpp"
 #include "hm/core/file_output.hpp"
 #include "hm/verification/benchmark.hpp"
-#include "hm/case/csv_writer.hpp"
+#include "hm/core/csv_writer.hpp"
 
 namespace hm::verification {
 
-using cases::CsvWriter;
+using core::CsvWriter;
 
 namespace {
 

@@ -14,18 +14,18 @@
 
 #include "hm/analytic/lame.hpp"
 #include "hm/core/file_output.hpp"
-#include "hm/lattice2d/calibration.hpp"
-#include "hm/lattice2d/dual_graph.hpp"
-#include "hm/lattice2d/mechanics.hpp"
-#include "hm/lattice2d/particle_stress.hpp"
-#include "hm/lattice2d/radial_average.hpp"
+#include "hm/lattice2d/mechanics/calibration.hpp"
+#include "hm/lattice2d/geometry/dual_graph.hpp"
+#include "hm/lattice2d/mechanics/mechanics.hpp"
+#include "hm/lattice2d/mechanics/particle_stress.hpp"
+#include "hm/lattice2d/io/radial_average.hpp"
 #include "hm/verification/benchmark.hpp"
-#include "hm/case/csv_writer.hpp"
+#include "hm/core/csv_writer.hpp"
 #include "report_writer.hpp"
 
 namespace hm::verification {
 
-using cases::CsvWriter;
+using core::CsvWriter;
 
 namespace {
 

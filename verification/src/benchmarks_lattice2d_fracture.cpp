@@ -16,16 +16,17 @@
 
 #include "hm/analytic/sneddon.hpp"
 #include "hm/core/file_output.hpp"
-#include "hm/lattice2d/calibration.hpp"
-#include "hm/lattice2d/fracture.hpp"
-#include "hm/lattice2d/vtk_writer.hpp"
+#include "hm/lattice2d/mechanics/calibration.hpp"
+#include "hm/lattice2d/fracture/fracture.hpp"
+#include "hm/lattice2d/io/vtk_writer.hpp"
 #include "hm/verification/benchmark.hpp"
-#include "hm/case/csv_writer.hpp"
+#include "hm/core/csv_writer.hpp"
+#include "hm/lattice2d/io/break_log.hpp"
 #include "report_writer.hpp"
 
 namespace hm::verification {
 
-using cases::CsvWriter;
+using core::CsvWriter;
 
 namespace {
 

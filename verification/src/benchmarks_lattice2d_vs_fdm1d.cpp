@@ -35,11 +35,11 @@
 #include "hm/core/file_output.hpp"
 #include "hm/case/coupled_model_of_case.hpp"
 #include "hm/fdm1d/fdm1d.hpp"
-#include "hm/lattice2d/calibration.hpp"
-#include "hm/lattice2d/coupled_model.hpp"
-#include "hm/lattice2d/radial_average.hpp"
+#include "hm/lattice2d/mechanics/calibration.hpp"
+#include "hm/lattice2d/coupled/coupled_model.hpp"
+#include "hm/lattice2d/io/radial_average.hpp"
 #include "hm/verification/benchmark.hpp"
-#include "hm/case/csv_writer.hpp"
+#include "hm/core/csv_writer.hpp"
 #include "hm/case/fdm1d_output.hpp"
 #include "hm/case/run_case.hpp"
 #include "hm/case/run_output.hpp"
@@ -48,7 +48,7 @@
 
 namespace hm::verification {
 
-using cases::CsvWriter;
+using core::CsvWriter;
 using cases::RadialFields;
 using cases::RunCase;
 using cases::RunRecorder;

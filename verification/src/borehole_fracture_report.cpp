@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "hm/core/file_output.hpp"
-#include "hm/lattice2d/calibration.hpp"
+#include "hm/lattice2d/mechanics/calibration.hpp"
 #include "report_writer.hpp"
 
 namespace hm::verification::borehole_fracture {

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "hm/fdm1d/fdm1d.hpp"
-#include "hm/lattice2d/coupled_model.hpp"
-#include "hm/lattice2d/fracture_statistics.hpp"
+#include "hm/lattice2d/coupled/coupled_model.hpp"
+#include "hm/lattice2d/fracture/fracture_statistics.hpp"
 #include "hm/case/run_case.hpp"
 
 namespace hm::verification::borehole_fracture {

@@ -6,8 +6,8 @@
 #include <memory>
 
 #include "hm/case/run_case.hpp"
-#include "hm/lattice2d/coupled_model.hpp"
-#include "hm/lattice2d/lattice.hpp"
+#include "hm/lattice2d/coupled/coupled_model.hpp"
+#include "hm/lattice2d/geometry/lattice.hpp"
 
 namespace hm::cases {
 

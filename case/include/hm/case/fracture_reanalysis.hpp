@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <string>
 
-#include "hm/lattice2d/fracture_statistics.hpp"
+#include "hm/lattice2d/fracture/fracture_statistics.hpp"
 
 namespace hm::cases {
 

@@ -20,12 +20,12 @@
 #include <string>
 #include <vector>
 
-#include "hm/lattice2d/beam_stiffness.hpp"
-#include "hm/lattice2d/coupled_model.hpp"
-#include "hm/lattice2d/flow_network.hpp"
-#include "hm/lattice2d/fracture_statistics.hpp"
-#include "hm/lattice2d/lattice.hpp"
-#include "hm/lattice2d/mechanics.hpp"
+#include "hm/lattice2d/mechanics/beam_stiffness.hpp"
+#include "hm/lattice2d/coupled/coupled_model.hpp"
+#include "hm/lattice2d/flow/flow_network.hpp"
+#include "hm/lattice2d/fracture/fracture_statistics.hpp"
+#include "hm/lattice2d/geometry/lattice.hpp"
+#include "hm/lattice2d/mechanics/mechanics.hpp"
 #include "hm/case/case_file.hpp"
 
 namespace hm::cases {

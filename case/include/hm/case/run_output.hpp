@@ -30,10 +30,10 @@
 #include <memory>
 #include <vector>
 
-#include "hm/lattice2d/coupled_model.hpp"
-#include "hm/lattice2d/fracture_statistics.hpp"
-#include "hm/lattice2d/vtk_writer.hpp"
-#include "hm/case/csv_writer.hpp"
+#include "hm/lattice2d/coupled/coupled_model.hpp"
+#include "hm/lattice2d/fracture/fracture_statistics.hpp"
+#include "hm/lattice2d/io/vtk_writer.hpp"
+#include "hm/core/csv_writer.hpp"
 #include "hm/case/run_case.hpp"
 
 namespace hm::cases {
@@ -72,7 +72,7 @@ class RunRecorder {
   std::vector<hm::lattice2d::BreakEvent> breaks_;
   std::vector<hm::lattice2d::FractureSnapshot> fractures_;
   std::ofstream series_file_, radial_file_;
-  std::unique_ptr<CsvWriter> series_, radial_;
+  std::unique_ptr<core::CsvWriter> series_, radial_;
   std::unique_ptr<hm::lattice2d::VtkSeries> vtk_;
 };
 

@@ -1,0 +1,288 @@
+#pragma once
+/// \file
+/// The two-way coupled lattice model of Section 2.3 (Fig. 5): beam mechanics (mechanics.hpp) and the
+/// dual-graph flow network (flow_network.hpp) advanced together in time by the drained or undrained
+/// operator split, iterated inside each time step until the pressure and the displacement both stop
+/// changing. Dimensionless. Choices the paper leaves open: docs/coupling.md.
+#include <functional>
+#include <limits>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "hm/lattice2d/mechanics/beam_stiffness.hpp"
+#include "hm/lattice2d/coupled/coupling.hpp"
+#include "hm/lattice2d/geometry/dual_graph.hpp"
+#include "hm/lattice2d/fracture/failure.hpp"
+#include "hm/lattice2d/flow/flow_network.hpp"
+#include "hm/lattice2d/fracture/fracture.hpp"
+#include "hm/lattice2d/geometry/lattice.hpp"
+#include "hm/lattice2d/mechanics/mechanics.hpp"
+#include "hm/lattice2d/fracture/strength.hpp"
+
+namespace hm::lattice2d {
+
+/// The two splits of Section 2.3.
+enum class CouplingSplit {
+  undrained,  ///< the mechanical step sees the undrained pressure predictor (Eq. 20, Psi > 0 allowed)
+  drained,    ///< the mechanical step sees the last pressure only (Psi = 0)
+};
+/// "undrained" or "drained".
+std::string to_string(CouplingSplit split);
+/// Inverse of to_string; throws hm::InputError "coupling.split = 'x', allowed: undrained, drained".
+CouplingSplit coupling_split_from_string(std::string_view name);
+
+/// How the pressure guess of the next pass is formed from the flow's result.
+enum class CouplingRelaxation {
+  none,    ///< the flow's pressure as it is (the paper's Fig. 5)
+  aitken,  ///< Aitken's dynamic relaxation of the pressure update (same fixed point; our addition)
+  anderson,  ///< Anderson acceleration of the pressure update (same fixed point; our addition)
+};
+/// "none", "aitken" or "anderson".
+std::string to_string(CouplingRelaxation relaxation);
+/// Inverse of to_string; throws hm::InputError "coupling.relaxation = 'x', allowed: none, aitken, anderson".
+CouplingRelaxation coupling_relaxation_from_string(std::string_view name);
+
+/// When the coupling loop looks for failing beams (with fracture enabled).
+enum class FractureCheck {
+  /// After every pass's mechanical solve (the paper's Fig. 5): beams can break on an unconverged
+  /// iterate, so the pattern depends a little on the iteration's path (docs/coupling.md, section 6).
+  every_pass,
+  /// Only once the passes have converged without breaking; after breaks the loop converges again
+  /// and checks again, until a converged state breaks nothing. Our addition: breaks are decided on
+  /// coupled equilibria only.
+  at_convergence,
+};
+/// "every_pass" or "at_convergence".
+std::string to_string(FractureCheck check);
+/// Inverse of to_string; throws hm::InputError "coupling.fracture_check = 'x', allowed: every_pass, at_convergence".
+FractureCheck fracture_check_from_string(std::string_view name);
+
+/// Where the first pass of a step starts.
+enum class CouplingPredictor {
+  /// From the last accepted state, p^n and u^n (the paper's loop).
+  previous,
+  /// From the straight line through the last two accepted states, p^n + (dt / dt_prev)(p^n - p^{n-1})
+  /// and likewise u, when the last step broke no beam (a crack's jump is not a trend); otherwise as
+  /// previous. Our addition: fewer passes on the smooth part of a run; same fixed point.
+  linear,
+};
+/// "previous" or "linear".
+std::string to_string(CouplingPredictor predictor);
+/// Inverse of to_string; throws hm::InputError "coupling.predictor = 'x', allowed: previous, linear".
+CouplingPredictor coupling_predictor_from_string(std::string_view name);
+
+/// Options of the coupling iteration (Fig. 5). Every default is set here.
+struct CouplingOptions {
+  /// The split. Default undrained (the paper's primary scheme).
+  CouplingSplit split = CouplingSplit::undrained;
+  /// Psi, feedback of the undrained split (Eq. 20). Our choice 1.3, the paper's near-optimum (Fig. 8).
+  /// Allowed: >= 0, finite; must be 0 for the drained split.
+  double psi = 1.3;
+  /// xi, scaling of the pressure force (Eq. 17). Our choice 1 (divergence theorem; docs/coupling.md).
+  /// Allowed: > 0, finite.
+  double xi = 1.0;
+  /// Iterations stop when max|p^k - p^{k-1}| <= pressure_tolerance * max|p^k| ... Our choice 1e-6.
+  /// Allowed: 0 < pressure_tolerance < 1.
+  double pressure_tolerance = 1e-6;
+  /// ... and max|u^k - u^{k-1}| <= displacement_tolerance * max|u^k| (x, y components). Our choice 1e-6.
+  /// Allowed: 0 < displacement_tolerance < 1.
+  double displacement_tolerance = 1e-6;
+  /// Cap on the mechanics -> flow iterations of one step (with fracture_check = at_convergence: since
+  /// the last breaks). Allowed: >= 1.
+  int max_iterations = 100;
+  /// When beams are checked for failure. Default every_pass (the paper's Fig. 5).
+  FractureCheck fracture_check = FractureCheck::every_pass;
+  /// The first pass's guess. Default previous (the paper's loop).
+  CouplingPredictor predictor = CouplingPredictor::previous;
+  /// Relaxation of the pressure guess between passes. Default none (the paper's loop). Our addition for
+  /// the borehole, whose stiff feedback makes the plain loop diverge (docs/coupling.md, section 3).
+  CouplingRelaxation relaxation = CouplingRelaxation::none;
+  /// First relaxation factor of the aitken variant, mixing factor of the anderson one. Our choice 0.5.
+  /// Allowed: 0 < initial_relaxation <= 1.
+  double initial_relaxation = 0.5;
+  /// Number of past residual differences the anderson variant combines. Our choice 5. Allowed: 1 ... 50.
+  int anderson_depth = 5;
+  /// Accept a step that hit max_iterations (the paper's "one iteration of both systems" with
+  /// max_iterations = 1). Default false: such a step is a numerical failure (status not_converged).
+  bool accept_unconverged = false;
+  /// The borehole wall carries the full borehole pressure (CouplingParameters::borehole_wall_traction).
+  bool borehole_wall_traction = true;
+
+  /// Throws hm::InputError "coupling.field = value, allowed: rule".
+  void validate() const;
+};
+
+/// Time stepping of CoupledModel::run. Every default is set here.
+struct TimeStepping {
+  /// First time step. Allowed: > 0, finite, <= t_end.
+  double dt_initial = 1e-6;
+  /// Factor between consecutive steps (1 = fixed dt). Allowed: >= 1, finite.
+  double dt_growth = 1.0;
+  /// Largest time step. Allowed: >= dt_initial, finite.
+  double dt_max = std::numeric_limits<double>::max();
+  /// End time t*. Allowed: > 0, finite.
+  double t_end = 1e-4;
+  /// A step whose coupling loop does not converge (status not_converged) is retried with half the
+  /// step, at most this many times, before run() stops; the nominal dt then grows again from there.
+  /// Our choice 8 (dt / 256). Breaks made by a failed attempt stay (broken beams never heal).
+  /// Allowed: 0 ... 50.
+  int max_step_halvings = 8;
+  /// Times at which run() calls its observer besides t = 0 (steps are shortened to land on them).
+  /// Allowed: strictly increasing, in (0, t_end]; t_end is always an output.
+  std::vector<double> output_times;
+
+  /// Throws hm::InputError "numerics.field = value, allowed: rule".
+  void validate() const;
+};
+
+/// How a step or a run ended.
+enum class CoupledStatus {
+  converged,       ///< both residuals below tolerance
+  accepted_unconverged,  ///< max_iterations hit and accept_unconverged set
+  not_converged,   ///< max_iterations hit: the step was not taken
+  solver_failure,  ///< the mechanics or the flow solve failed: the step was not taken
+};
+std::string to_string(CoupledStatus status);
+
+/// What one coupled time step did (Ceres' Summary in small).
+struct CoupledStepSummary {
+  CoupledStatus status = CoupledStatus::converged;
+  double time = 0.0;  ///< t^{n+1}
+  double dt = 0.0;
+  int iterations = 0;                  ///< mechanics -> flow passes
+  double pressure_residual = 0.0;      ///< max|p^k - p^{k-1}| / max|p^k| at the last pass
+  double displacement_residual = 0.0;  ///< max|u^k - u^{k-1}| / max|u^k| at the last pass
+  /// The pressure residual after each pass (for the Psi study, Fig. 8).
+  std::vector<double> pressure_history;
+  FlowStepSummary flow;                ///< the last flow solve (volumes of this step, balance)
+  int n_breaks = 0;                    ///< beams broken in this step (all passes)
+  int n_broken = 0;                    ///< beams broken since t = 0, after this step
+  double seconds = 0.0;             ///< wall time of the step, of which:
+  double mechanics_seconds = 0.0;   ///< BeamMechanics::solve (back-substitutions), also inside break loops
+  double stress_seconds = 0.0;      ///< break loops: beam stresses and failure checks
+  double break_seconds = 0.0;       ///< break loops: BeamMechanics::break_beam (factor downdates)
+  int n_mechanics_solves = 0;       ///< mechanical solves (one per pass plus one per break)
+  int n_contact_changes = 0;        ///< open <-> contact switches of broken beams (each a factor modification)
+  int n_mechanics_factorizations = 0;  ///< full refactorisations of the mechanical factor (after
+                                       ///< max_modifications modifications, or a failed update)
+  int n_mechanics_update_failures = 0;  ///< of which after a failed low-rank update (cholmod_updown)
+  double geometry_seconds = 0.0;    ///< deformed dual graph and FlowNetwork::update_geometry
+  double flow_seconds = 0.0;        ///< FlowNetwork::solve (refactorisation and solve)
+  std::string message;  ///< empty when converged
+  bool is_ok() const { return status == CoupledStatus::converged || status == CoupledStatus::accepted_unconverged; }
+};
+
+/// What run() did.
+struct CoupledRunSummary {
+  CoupledStatus status = CoupledStatus::converged;  ///< of the last step
+  int n_steps = 0;
+  int total_iterations = 0;
+  int n_step_halvings = 0;  ///< retries with half the step after a coupling loop did not converge
+  double time = 0.0;
+  double seconds = 0.0;
+  double max_balance_error = 0.0;
+  std::string message;
+  /// The accepted steps' time split and counters (CoupledStepSummary's), summed.
+  double step_seconds = 0.0, mechanics_seconds = 0.0, stress_seconds = 0.0, break_seconds = 0.0,
+         geometry_seconds = 0.0, flow_seconds = 0.0;
+  long long n_mechanics_solves = 0, n_contact_changes = 0, n_mechanics_factorizations = 0,
+            n_mechanics_update_failures = 0;
+  bool is_ok() const { return status == CoupledStatus::converged || status == CoupledStatus::accepted_unconverged; }
+  /// Adds one accepted step to the sums above.
+  void add_accepted_step(const CoupledStepSummary& s);
+};
+
+/// The coupled lattice (Fig. 5): per time step
+///   1. mechanics with the current pressure guess: forces of Eq. 17 plus, for the undrained split,
+///      the springs of Eq. 20 relaxed at the previous iterate;
+///   2. the deformed geometry (triangle areas, conductances) from the new displacement;
+///   3. the flow step of Eqs. 15-16 with b (V^{n+1} - V^n);
+///   4. repeat until both residuals are below tolerance (or max_iterations).
+/// At convergence the spring term vanishes, so every Psi converges to the drained split's fixed point.
+/// With fracture enabled (enable_fracture), step 1 is the break loop of Section 2.1 (fracture.hpp):
+/// solve, break the one beam most over its strength, re-solve, until none fails; the broken beams' flow
+/// segments get iota before step 3, and a pass that broke a beam never ends the iteration (Fig. 5: "if
+/// the system is changed during the solver steps, a new iteration is necessary"). Broken beams stay
+/// broken, also when a later pass or a failed step would not have broken them.
+/// Limits: geometrically linear mechanics, no re-meshing.
+class CoupledModel {
+ public:
+  /// Validates everything (hm::InputError), builds mechanics and flow. b and E/M are the flow's.
+  CoupledModel(Lattice lattice, const BeamParameters& beams, const BoundaryConditions& conditions,
+               const MechanicsOptions& mechanics_options, const FlowParameters& flow, const CouplingOptions& options);
+  ~CoupledModel();
+
+  /// Turns fracture on (Fig. 5's grey boxes) with one strength per beam and the break loop's options
+  /// (crack-tip factor, cap per call). Throws hm::InputError for strengths not sized n_beams or invalid
+  /// options. Call before the first step.
+  void enable_fracture(BeamStrengths strengths, const BreakLoopOptions& options = {});
+  bool fracture_enabled() const { return fracture_ != nullptr; }
+  /// Every break so far, in order; BreakEvent::load is the time t^{n+1} of the step that broke it.
+  const std::vector<BreakEvent>& break_log() const { return break_log_; }
+
+  /// One coupled step of length dt > 0. On failure (status not_converged or solver_failure) the state
+  /// is left at t^n; the summary says why.
+  CoupledStepSummary step(double dt);
+
+  /// Observer of run(): called after every accepted step, with `is_output` true at t = 0, at each
+  /// output time and at t_end.
+  using Observer = std::function<void(const CoupledModel&, const CoupledStepSummary&, bool is_output)>;
+  /// Initial state (observer at t = 0), then while time remains, a step. Stops at the first failed step.
+  CoupledRunSummary run(const TimeStepping& stepping, const Observer& observer = {});
+
+  /// Called after every pass of step() with the pass number (1-based), that pass's flow pressure
+  /// (trial, size n_unknowns) and displacement: for studies of the iteration itself (Fig. 8).
+  using PassObserver = std::function<void(int pass, const Eigen::VectorXd& pressure, const Eigen::VectorXd& displacement)>;
+  void set_pass_observer(PassObserver observer) { pass_observer_ = std::move(observer); }
+
+  double time() const { return flow_->time(); }
+  const Lattice& lattice() const { return mechanics_->lattice(); }
+  /// Displacement u^n (3 n_particles) of the last accepted step.
+  const Eigen::VectorXd& displacement() const { return displacement_; }
+  /// Pressures p^n (triangles, then the borehole node).
+  const Eigen::VectorXd& pressure() const { return flow_->pressure(); }
+  /// Dual graph of the deformed configuration at t^n (triangle areas and centroids for averages).
+  const DualGraph& current_dual() const { return current_dual_; }
+  /// Dual graph of the undeformed lattice (the coupling terms' geometry).
+  const DualGraph& reference_dual() const { return reference_dual_; }
+  const FlowNetwork& flow() const { return *flow_; }
+  const BeamMechanics& mechanics() const { return *mechanics_; }
+  const CouplingParameters& coupling_parameters() const { return coupling_; }
+  const CouplingOptions& options() const { return options_; }
+  /// Per-beam spring stiffness of Eq. 20 (zero for the drained split).
+  const Eigen::VectorXd& spring_stiffness() const { return springs_; }
+  int n_broken() const;
+
+ private:
+  Eigen::Matrix2Xd positions(const Eigen::VectorXd& u) const;
+  Eigen::VectorXd unknown_volumes(const DualGraph& dual) const;  // V_s, then V_h
+
+  CouplingOptions options_;
+  CouplingParameters coupling_;
+  std::unique_ptr<BeamMechanics> mechanics_;
+  std::unique_ptr<FlowNetwork> flow_;
+  DualGraph reference_dual_;
+  DualGraph current_dual_;
+  Eigen::VectorXd springs_;
+  Eigen::VectorXd displacement_;
+  Eigen::VectorXd volume_;  // V^n per unknown
+  // p^{n-1}, u^{n-1} and t^n - t^{n-1} for the linear predictor; previous_dt_ = 0 when the last step
+  // broke beams (or there is none).
+  Eigen::VectorXd previous_pressure_;
+  Eigen::VectorXd previous_displacement_;
+  double previous_dt_ = 0.0;
+  PassObserver pass_observer_;
+  struct FractureSetup {
+    BeamStrengths strengths;
+    BreakLoopOptions options;
+  };
+  std::unique_ptr<FractureSetup> fracture_;
+  std::vector<BreakEvent> break_log_;
+};
+
+}  // namespace hm::lattice2d

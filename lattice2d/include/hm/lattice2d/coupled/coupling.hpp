@@ -1,0 +1,66 @@
+#pragma once
+/// \file
+/// The hydromechanical coupling terms of Section 2.3 on the lattice's Voronoi dual: the pore-pressure
+/// forces on particles (Eq. 17) and the undrained split's normal spring (Eqs. 18-20). Dimensionless
+/// (forces and pressures over E, lengths over R). Derivations and boundary rules: docs/coupling.md.
+///
+/// Geometry: like the beam mechanics (mechanics.hpp), the terms are linearised about the undeformed
+/// lattice: d_st, n_ij and L_ij are those of build_dual_graph(lattice) and Lattice. The flow network
+/// is the part that sees the deformed geometry (V^{n+1} - V^n).
+#include <Eigen/Core>
+
+#include "hm/lattice2d/geometry/dual_graph.hpp"
+#include "hm/lattice2d/geometry/lattice.hpp"
+
+namespace hm::lattice2d {
+
+/// Constants of the coupling terms. Every default is set here.
+struct CouplingParameters {
+  /// b, Biot coefficient multiplying the pressure force (Eq. 17) and the spring (Eq. 20).
+  /// Allowed: 0 <= b <= 1.
+  double b = 0.5;
+  /// xi, scaling of the pressure force (Eq. 17). Our choice 1: by the divergence theorem xi = 1
+  /// reproduces the continuum body force -b grad p (docs/coupling.md, tested). Allowed: > 0, finite.
+  double xi = 1.0;
+  /// Psi, feedback of the undrained split (Eq. 20); 0 is the drained split. Our choice 1.3, the
+  /// paper's near-optimum (Section 3.1, Fig. 8). Allowed: >= 0, finite.
+  double psi = 1.3;
+  /// E/M, inverse dimensionless Biot modulus (Eqs. 14, 22); the spring carries M/E. Allowed: > 0, finite.
+  double E_over_M = 0.75;
+  /// The borehole wall (annulus) carries the full borehole pressure p_h as a normal traction (the
+  /// total-stress boundary condition), lumped half to each end of a wall beam, besides the b-weighted
+  /// Voronoi-segment forces. Our choice true; see docs/coupling.md. No effect without a borehole.
+  bool borehole_wall_traction = true;
+
+  /// Throws hm::InputError "coupling.field = value, allowed: rule".
+  void validate() const;
+};
+
+/// Nodal forces (3 n_particles, dof = 3 i + component; rotations 0) of the pore pressure, Eq. 17:
+/// for the Voronoi segment of beam ij (n_ij from i to j), p_st = (p_s + p_t)/2 and
+///   F_i = -xi b d_st p_st n_ij,  F_j = -F_i.
+/// `pressure` holds one value per triangle, optionally followed by the borehole pressure p_h (the
+/// FlowNetwork layout); p_h = 0 if absent. Boundary segments (d_su, from the dual point to the
+/// boundary beam): p_t is the surface pressure, 0 on the outer boundary, p_h on the borehole wall.
+/// With borehole_wall_traction, each wall beam also gets -p_h L/2 m on each end (m the outward normal
+/// of the solid), as BoundaryConditions::inner_pressure would.
+/// Properties (tested): a uniform pressure gives zero force on every interior particle; a linear
+/// pressure sampled at the dual points gives -xi b V_i grad p on interior particles to round-off.
+/// Limits: pressures are cell constants; the signed dual lengths are used as they are (a slightly
+/// negative d_st of a nearly co-circular pair keeps the cells closed).
+Eigen::VectorXd pressure_forces(const Lattice& lattice, const DualGraph& dual, const Eigen::VectorXd& pressure,
+                                const CouplingParameters& parameters);
+
+/// Stiffness per beam of the undrained split's normal spring (Eq. 20 linearised, docs/coupling.md):
+///   k_ij = Psi xi b^2 (M/E) max(d_st, 0) / L_ij,
+/// all zero for Psi = 0 (the drained split). Feed it to BeamMechanics::set_normal_springs.
+Eigen::VectorXd undrained_spring_stiffness(const Lattice& lattice, const DualGraph& dual,
+                                           const CouplingParameters& parameters);
+
+/// The spring's right-hand side K_psi u_ref (3 n_particles): the springs are relaxed at the reference
+/// displacement u_ref (the previous coupling iterate), so that (K + K_psi) u = f + K_psi u_ref has the
+/// drained solution K u = f as its fixed point. For each beam: -k (u_j - u_i).n n on i, +... on j.
+Eigen::VectorXd spring_preload(const Lattice& lattice, const Eigen::VectorXd& stiffness,
+                               const Eigen::VectorXd& u_reference);
+
+}  // namespace hm::lattice2d

@@ -1,0 +1,261 @@
+#pragma once
+/// \file
+/// The dual-graph flow network of Section 2.2 (Eqs. 15-16, Fig. 4): one pressure per Delaunay
+/// triangle at its Voronoi connection point, Darcy flow along the Voronoi segments, implicit Euler in
+/// time, p = 0 at the outer surface, the borehole as one node (annulus) or a point source in the
+/// triangle holding the source point (disk, rectangle). Dimensionless (Eq. 14); choices the paper
+/// leaves open are in docs/flow.md.
+#include <array>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "hm/analytic/physical_parameters.hpp"
+#include "hm/lattice2d/geometry/dual_graph.hpp"
+#include "hm/lattice2d/geometry/lattice.hpp"
+
+namespace hm::lattice2d {
+
+/// Whether the borehole node stores fluid through pressure (the storage term of Eq. 16).
+enum class BoreholeStorage {
+  biot_modulus,  ///< (E/M) V_h (p_h^{n+1} - p_h^n), Eq. 16 as printed (dimensionless form); default
+  none,          ///< no storage term: the borehole only passes Q on (Appendix A / fdm1d's choice)
+};
+/// "biot-modulus" or "none".
+std::string to_string(BoreholeStorage storage);
+/// Inverse of to_string; throws hm::InputError "borehole_storage = 'x', allowed: biot-modulus, none".
+BoreholeStorage borehole_storage_from_string(std::string_view name);
+
+/// Whether the borehole node takes the deformation term of Eq. 16, -b (V_h^{n+1} - V_h^n).
+enum class BoreholeDeformation {
+  biot,  ///< Eq. 16 as printed: the borehole's area change weighted by b, like a triangle's; default
+  none,  ///< no term: the borehole is a flux boundary that passes Q on (Appendix A / fdm1d's choice)
+};
+/// "biot" or "none".
+std::string to_string(BoreholeDeformation deformation);
+/// Inverse of to_string; throws hm::InputError "borehole_deformation = 'x', allowed: biot, none".
+BoreholeDeformation borehole_deformation_from_string(std::string_view name);
+
+/// Parameters of the flow network. Every default is set here; validate() checks each rule.
+struct FlowParameters {
+  /// Q, dimensionless injection rate (Eq. 14, Q = mu q/(k E)), into the borehole node (annulus) or
+  /// the source triangle (disk, rectangle). Allowed: finite, >= 0.
+  double Q = 0.01;
+  /// E/M, storage coefficient of Eqs. 14-16 (the paper prints V/M; Eq. 14 and docs/errata.md E11
+  /// give E/M in dimensionless form). Default: Eq. 22 with Table 1 at b = 0.5. Allowed: > 0, finite.
+  double E_over_M = hm::analytic::E_over_M_table1(0.5, 0.25);
+  /// b, Biot coefficient multiplying the volume change V^{n+1} - V^n in Eqs. 15-16.
+  /// Allowed: 0 <= b <= 1.
+  double b = 0.5;
+  /// iota = k_f/k, conductance factor of Voronoi segments crossing broken beams (Section 2.2).
+  /// Allowed: > 0, finite.
+  double iota = 1.0;
+  /// Delta t, the default time step of step() (Eq. 15). Allowed: > 0, finite.
+  double time_step = 1e-5;
+  /// Borehole storage (Eq. 16). Default: the paper's Eq. 16; see docs/flow.md.
+  BoreholeStorage borehole_storage = BoreholeStorage::biot_modulus;
+  /// After a geometry or iota change with the same dt (every pass of the coupling loop), solve by
+  /// conjugate gradients on the current matrix preconditioned by the last factorisation instead of
+  /// refactorising (a refactorisation follows when max_refinements iterations do not reach the
+  /// tolerance). Default false: measured on the Fig. 12 run at N = 1e4 (bench_coupled_fracture), flow
+  /// 15.3 s refactorising every pass against 20.5 s reusing (~8 iterations per solve once cracks open
+  /// and change their triangles' areas); it pays only while the geometry hardly changes.
+  bool reuse_factorisation = false;
+  /// Stop iterating at ||rhs - A p|| <= refinement_tolerance ||rhs||. Our choice 1e-10 (the volume
+  /// balance then closes to ~1e-11). Allowed: 0 < refinement_tolerance < 1e-6.
+  double refinement_tolerance = 1e-10;
+  /// Iterations before falling back to a refactorisation. Our choice 20. Allowed: >= 1.
+  int max_refinements = 20;
+  /// With reuse_factorisation: a solve that needed more iterations than this refactorises at the next
+  /// solve, so the factor follows the geometry instead of aging until max_refinements. Our choice 4:
+  /// the Fig. 12 run at N = 1e4 spends 12.4 s in the flow refactorising every pass, 10.2 s reusing with
+  /// no refresh (the old factor ages: ~8 iterations), 7.8 / 6.5 / 7.8 s with 2 / 4 / 8 (same breaks in
+  /// the same order; volume balance <= 5e-12). Allowed: >= 0.
+  int refresh_after_refinements = 4;
+  /// Borehole deformation term (Eq. 16). Default: the paper's Eq. 16. With borehole_storage = none
+  /// and this = none the borehole node is the 1D model's flux boundary; see docs/flow.md.
+  BoreholeDeformation borehole_deformation = BoreholeDeformation::biot;
+  /// Point-source position (x, y) for a domain without borehole (Section 3.1: r = 0). Our choice to
+  /// make it a field; the source goes into the triangle containing it. Allowed: finite, inside the
+  /// lattice (checked by FlowNetwork).
+  double source_x = 0.0;
+  double source_y = 0.0;
+
+  /// Throws hm::InputError "field = value, allowed: rule" for the first violated rule.
+  void validate() const;
+};
+
+/// The flow parameters of a shared dimensionless parameter set (Q, iota, E/M, b) with time step dt.
+FlowParameters flow_parameters_of(const hm::analytic::DimensionlessParameters& parameters, double dt);
+
+/// Volumes moved in one step, all >= 0 unless said otherwise (dimensionless areas, Eq. 12's
+/// "volume per unit length"). injected = storage + deformation + outflow up to round-off.
+struct FlowStepSummary {
+  double time = 0.0;         ///< t^{n+1}
+  double dt = 0.0;           ///< Delta t of this step
+  double injected = 0.0;     ///< Q dt
+  double storage = 0.0;      ///< sum (E/M) V^{n+1} (p^{n+1} - p^n), borehole included if it stores (signed)
+  double deformation = 0.0;  ///< b sum (V^{n+1} - V^n), triangles and (unless its term is off) borehole (signed)
+  double outflow = 0.0;      ///< sum over outer segments dt (A/d_su) (p_s^{n+1} - 0) (signed)
+  /// |injected - storage - deformation - outflow| / (|injected| + |storage| + |deformation| + |outflow|),
+  /// 0 when all four vanish.
+  double balance_error = 0.0;
+  bool solved = false;  ///< the factorisation and solve succeeded
+  bool factorised = false;  ///< this solve factorised the matrix (else it reused the last factor)
+  int refinements = 0;      ///< preconditioned CG iterations with a reused factor
+  std::string message;  ///< empty when solved, else what went wrong (numerical trouble, not thrown)
+  bool is_ok() const { return solved; }
+};
+
+/// Running totals since the initial state (sums of the accepted steps' FlowStepSummary fields).
+struct FlowTotals {
+  double time = 0.0;
+  double injected = 0.0;  ///< = Q t
+  double storage = 0.0;
+  double deformation = 0.0;
+  double outflow = 0.0;
+  int n_steps = 0;
+};
+
+/// Steady state (no storage, no deformation): K p = source with the same conductances.
+struct FlowSteadyState {
+  Eigen::VectorXd pressure;    ///< one value per unknown (triangles, then the borehole node)
+  double injected_rate = 0.0;  ///< Q
+  double outflow_rate = 0.0;   ///< sum over outer segments (A/d_su) p_s
+  double balance_error = 0.0;  ///< |Q - outflow| / Q (0 if Q = 0)
+  bool solved = false;
+  std::string message;
+};
+
+/// The linear system of Eqs. 15-16 on a fixed lattice topology.
+///
+/// Unknowns: p_s for every triangle s (index s), then p_h of the borehole (index n_triangles) when the
+/// lattice has beams tagged inner. Row s of the implicit Euler step reads
+///   (E/M) V_s (p_s - p_s^n) + dt sum_t iota_st (A_st/d_st) (p_s - p_t) + dt sum_u iota_su (A_su/d_su) p_s
+///     = -b dV_s + source_s dt,
+/// with A = beam length, d = DualGraph::flow_distance (the Voronoi segment, floored), the t-sum over
+/// interior beams and the borehole wall (p_t = p_h there), the u-sum over outer beams (p = 0), and
+/// iota_e = iota on broken beams, 1 otherwise. Every interior flux appears in two rows with opposite
+/// signs, so the scheme conserves volume exactly up to round-off.
+///
+/// Usage (Fig. 5): construct; optionally set_pressure(); per step and coupling iteration call
+/// update_geometry() / set_broken() if the mechanics moved or broke something, solve(dt, dV), then
+/// accept() once the coupling has converged. step() = solve() + accept().
+///
+/// Linear algebra: the sparsity pattern depends only on the topology (a broken beam changes a value,
+/// not the pattern), so the symbolic analysis is done once; the numeric factorisation is redone only
+/// when dt, the geometry or the broken set changed since the last one.
+///
+/// Limits: the pattern is that of the initial triangulation (no re-meshing); p = 0 on the whole
+/// outer boundary (no other boundary conditions yet); at most one source (borehole or one point);
+/// fracture aperture is ignored (constant iota, as the paper); the borehole node has no volume of
+/// its own unless borehole_storage says so.
+class FlowNetwork {
+ public:
+  /// Validates `parameters` (hm::InputError) and builds the network on `lattice` with the geometry
+  /// `dual` (build_dual_graph of the same lattice). Throws hm::InputError "source_x, source_y = ..."
+  /// if a point source lies in no triangle. All beams intact, p = 0 at t = 0.
+  FlowNetwork(const Lattice& lattice, const DualGraph& dual, const FlowParameters& parameters);
+  ~FlowNetwork();
+  FlowNetwork(FlowNetwork&&) noexcept;
+  FlowNetwork& operator=(FlowNetwork&&) noexcept;
+  FlowNetwork(const FlowNetwork&) = delete;
+  FlowNetwork& operator=(const FlowNetwork&) = delete;
+
+  const FlowParameters& parameters() const { return parameters_; }
+  int n_triangles() const { return n_triangles_; }
+  /// n_triangles, plus 1 with a borehole.
+  int n_unknowns() const { return n_triangles_ + (has_borehole() ? 1 : 0); }
+  bool has_borehole() const { return has_borehole_; }
+  /// Index of the borehole node (n_triangles), or -1.
+  int borehole_index() const { return has_borehole_ ? n_triangles_ : -1; }
+  /// Triangle receiving the point source, or -1 with a borehole.
+  int source_triangle() const { return source_triangle_; }
+  /// V_h, area of the polygon the wall particles enclose at the current geometry (0 without borehole).
+  double borehole_volume() const { return borehole_volume_; }
+
+  /// Replaces the geometry (V_s^{n+1}, A/d) by that of a deformed configuration: `dual` must be
+  /// build_dual_graph(lattice, positions). V_h is recomputed from `positions`.
+  void update_geometry(const DualGraph& dual, const Eigen::Matrix2Xd& positions);
+  /// Marks broken beams (size n_beams); their conductance is multiplied by iota.
+  void set_broken(const std::vector<bool>& broken);
+  const std::vector<bool>& broken() const { return broken_; }
+
+  /// Sets p^n (size n_unknowns), e.g. an initial condition. Does not change time or totals.
+  void set_pressure(const Eigen::VectorXd& pressure);
+  /// p^n, the last accepted pressures (size n_unknowns).
+  const Eigen::VectorXd& pressure() const { return pressure_; }
+  /// p_h^n (0 without borehole).
+  double borehole_pressure() const { return has_borehole_ ? pressure_[n_triangles_] : 0.0; }
+  double time() const { return totals_.time; }
+  const FlowTotals& totals() const { return totals_; }
+
+  /// Solves one implicit Euler step of length dt > 0 from p^n (hm::InputError if dt is not > 0).
+  /// volume_change: V^{n+1} - V^n per unknown (triangles, then the borehole), from the mechanics;
+  /// empty means zero. Does not change p^n: the result is trial_pressure() until accept().
+  FlowStepSummary solve(double dt, const Eigen::VectorXd& volume_change = {});
+  /// The pressure of the last solve().
+  const Eigen::VectorXd& trial_pressure() const { return trial_pressure_; }
+  /// Makes the last successful solve() the new state (p^n, time, totals). Precondition: a solve()
+  /// that succeeded and was not yet accepted.
+  void accept();
+  /// solve(parameters().time_step or dt, volume_change), accepted if it succeeded.
+  FlowStepSummary step(const Eigen::VectorXd& volume_change = {});
+  FlowStepSummary step(double dt, const Eigen::VectorXd& volume_change = {});
+
+  /// Steady state of the current conductances: storage and deformation dropped, the source Q per
+  /// unit time. Does not change the state.
+  FlowSteadyState solve_steady_state() const;
+
+  /// Flow rate per beam (volume per unit time, no dt) for `pressure` (size n_unknowns): from
+  /// beam_triangles[0] into beam_triangles[1], into the borehole for a wall beam, out of the domain
+  /// for an outer beam. Includes iota.
+  Eigen::VectorXd beam_flow_rate(const Eigen::VectorXd& pressure) const;
+  /// Net inflow rate from the neighbours (and the surface at p = 0) into each unknown, the sum of
+  /// the signed beam_flow_rate terms; exactly 0 for a node whose neighbours share its pressure.
+  Eigen::VectorXd net_inflow_rate(const Eigen::VectorXd& pressure) const;
+  /// Sum over outer segments of (A/d_su) iota p_s: the outflow rate through the outer surface.
+  double outflow_rate(const Eigen::VectorXd& pressure) const;
+
+ private:
+  struct Solver;  // the one place that names the sparse factorisation (flow_network.cpp)
+
+  // One flow connection per beam: between triangles s and t, triangle s and the borehole (t = h),
+  // or triangle s and the outer surface (t = -1).
+  struct Connection {
+    int s = -1;
+    int t = -1;
+  };
+
+  double conductance(int beam) const;  // A/d times iota if broken
+  void assemble_values(double dt, double storage_scale, Eigen::VectorXd& values) const;
+  std::string factorise_if_needed(double dt);  // empty on success
+  std::string factorise(double dt);            // assemble and factorise for dt; empty on success
+
+  FlowParameters parameters_;
+  int n_triangles_ = 0;
+  bool has_borehole_ = false;
+  int source_triangle_ = -1;
+  std::vector<Connection> connections_;
+  std::vector<std::array<int, 2>> wall_beams_;  // particle pairs of the borehole wall
+  Eigen::VectorXd triangle_area_;              // V_s^{n+1}
+  Eigen::VectorXd base_conductance_;           // A/d_flow per beam
+  double borehole_volume_ = 0.0;
+  std::vector<bool> broken_;
+
+  Eigen::VectorXd pressure_;
+  Eigen::VectorXd trial_pressure_;
+  FlowStepSummary trial_summary_;
+  bool has_trial_ = false;
+  FlowTotals totals_;
+
+  std::unique_ptr<Solver> solver_;
+  double factorised_dt_ = -1.0;  // dt of the current numeric factorisation; < 0: none
+  bool factor_stale_ = false;    // geometry or iota changed since: refine with the old factor
+  bool refresh_factor_ = false;  // the last refinement was slow: refactorise at the next solve
+};
+
+}  // namespace hm::lattice2d

@@ -1,0 +1,31 @@
+#pragma once
+/// \file
+/// The break log of a run (breaks.csv): one row per broken beam, in breaking order, written once
+/// and read back by the fracture re-analysis and the figure scripts.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "hm/lattice2d/fracture/failure.hpp"
+
+namespace hm::lattice2d {
+
+/// Writes the break log as CSV, one header row and one row per event, via a temporary file renamed
+/// into place (a crash leaves the previous file or none, never half of one). Columns:
+///   sequence, beam, particle_i, particle_j  integers;
+///   x, y                                    beam midpoint (over R);
+///   <load_column>                           load or time, named by the caller ("load", "time");
+///   sigma_1, sigma_3                        in-plane principal beam stresses (over E, tension positive);
+///   ratio                                   max(sigma_1/T_u, sigma_CC/C_u) >= 1;
+///   crack_tip_factor                        (L/2L_m)^(1/2) or 1;
+///   mode                                    "tensile" or "shear".
+/// Numbers with 10 significant digits. Throws std::runtime_error naming the path if it cannot write.
+void write_break_log(const std::filesystem::path& path, const std::vector<BreakEvent>& events,
+                     const std::string& load_column = "load");
+
+/// Reads a log written by write_break_log (any load column name; numbers as written, so 10
+/// significant digits). Throws std::runtime_error "<path>:<line>: ..." if the file cannot be read,
+/// its header is not write_break_log's, or a row is malformed.
+std::vector<BreakEvent> read_break_log(const std::filesystem::path& path);
+
+}  // namespace hm::lattice2d

@@ -1,0 +1,224 @@
+#pragma once
+/// \file
+/// The quasi-static mechanical solve of the dry lattice (Section 2.1): particles with (x, y, rotation)
+/// displacements, intact beams (Eqs. 3-7), broken beams as compression-only contacts (Eqs. 8-10) with
+/// an active-set loop, boundary conditions (free, fixed, pressure, prescribed displacement or
+/// homogeneous boundary strain), and a fast re-solve after each broken beam through a rank-<=3
+/// modification of the kept factor (spd_solver.hpp). Dimensionless: lengths over R, forces and
+/// pressures over E (per unit thickness). Displacements are small (geometrically linear, about the
+/// undeformed lattice). Rules and reasons: docs/lattice.md, "Mechanical solve".
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "hm/lattice2d/mechanics/beam_stiffness.hpp"
+#include "hm/lattice2d/geometry/lattice.hpp"
+#include "hm/lattice2d/linalg/spd_solver.hpp"
+
+namespace hm::lattice2d {
+
+/// Support of a whole boundary curve (Section 2.1, last paragraph but one).
+enum class BoundarySupport {
+  free,   ///< no constraint (the paper's default: "mechanically free unless confinement is included")
+  fixed,  ///< x and y of the boundary particles held at 0; rotation free (the paper fixes "x- and y-coordinates")
+};
+/// "free" or "fixed".
+std::string to_string(BoundarySupport support);
+/// Inverse of to_string; throws hm::InputError "<field> = 'x', allowed: free, fixed".
+BoundarySupport boundary_support_from_string(std::string_view name,
+                                             std::string_view field = "boundary_conditions.outer");
+
+/// One prescribed displacement component of one particle.
+struct PrescribedDisplacement {
+  int particle = 0;    ///< particle index. Allowed: 0 <= particle < n_particles.
+  int component = 0;   ///< 0 = x, 1 = y, 2 = rotation. Allowed: 0, 1, 2.
+  double value = 0.0;  ///< displacement (over R) or rotation (radians). Allowed: finite.
+};
+
+/// Boundary conditions of the mechanical problem. Order of application: supports, boundary strain,
+/// then `prescribed` (a later entry overrides an earlier value of the same degree of freedom).
+/// Without any held degree of freedom (pure traction) the solve pins the rigid-body modes itself
+/// (see BeamMechanics); held degrees of freedom that leave a rigid-body mode free are rejected.
+struct BoundaryConditions {
+  /// Support of the outer boundary (r = 1, or all four sides of a rectangle). Default free.
+  BoundarySupport outer = BoundarySupport::free;
+  /// Support of the borehole wall r = R_i (annulus only). Default free.
+  BoundarySupport inner = BoundarySupport::free;
+  /// Normal pressure on the borehole wall (Fig. 1; Lamé); positive pushes into the solid (radially
+  /// outward). Over E; a deviation from p0, so any finite value. Annulus only (else must be 0).
+  double inner_pressure = 0.0;
+  /// Normal pressure on the outer boundary; positive pushes into the solid (inward). Any finite value.
+  /// On a fixed boundary a pressure only adds to the reactions (loads at held DOFs do nothing).
+  double outer_pressure = 0.0;
+  /// Hold x, y of every boundary particle (inner and outer) at u = boundary_strain * x (homogeneous
+  /// strain, for calibration and patch tests); rotations stay free. Needs both supports free.
+  bool prescribe_boundary_strain = false;
+  /// The homogeneous strain (symmetric; tension positive). Allowed: finite, symmetric.
+  Eigen::Matrix2d boundary_strain = Eigen::Matrix2d::Zero();
+  /// Further prescribed components (tests, calibration), applied last.
+  std::vector<PrescribedDisplacement> prescribed;
+
+  /// Throws hm::InputError "boundary_conditions.field = value, allowed: rule".
+  void validate(const Lattice& lattice) const;
+};
+
+/// Numerical options of the mechanical solve.
+struct MechanicsOptions {
+  /// Linear solver (spd_solver.hpp). Default: CHOLMOD with low-rank modifications.
+  SpdSolverKind solver = SpdSolverKind::cholmod;
+  /// Options of that solver (ordering, refactorisation triggers, CG tolerance); validated with these.
+  SpdSolverOptions solver_options;
+  /// Cap on the contact active-set iterations of one solve() (Eqs. 8-10). Allowed: >= 1.
+  int max_contact_iterations = 50;
+  /// A broken beam closes when its elongation (u_j - u_i).n < -contact_tolerance * max|u| and opens
+  /// when > +contact_tolerance * max|u| (a round-off hysteresis against flip-flopping). Our choice
+  /// 1e-10. Allowed: 0 <= contact_tolerance < 1.
+  double contact_tolerance = 1e-10;
+
+  /// Throws hm::InputError "mechanics_options.field = value, allowed: rule".
+  void validate() const;
+};
+
+/// The force a beam or contact exerts on its particle i (Eqs. 3, 4, 8), and its components.
+/// On particle j it exerts -force_on_i and moment_j. For the particle stress of Section 2.1,
+/// sigma_i = 1/2 V_i^-1 sum_j F_ij (x) L_ij with F_ij = force_on_i and L_ij = x_j - x_i (for particle j
+/// use -force_on_i and -L_ij: the same outer product). Tension positive.
+struct BeamForce {
+  Eigen::Vector2d force_on_i = Eigen::Vector2d::Zero();  ///< F_ij, global components
+  double normal = 0.0;    ///< F_ij . n_ij = k_n (u_j - u_i).n_ij: > 0 in tension, <= 0 for a contact
+  double shear = 0.0;     ///< F_ij . s_ij, s_ij = n_ij rotated by +90 degrees
+  double moment_i = 0.0;  ///< moment on particle i (Eq. 4, counter-clockwise positive)
+  double moment_j = 0.0;  ///< moment on particle j
+};
+
+/// Forces of every beam for displacements u (3 n_particles, dof = 3 i + component) and the given beam
+/// states: intact beams by Eqs. 3-4 (linearised), contacts by Eq. 9-10's normal spring, open beams zero.
+/// Evaluated in each beam's local frame; equal to -K_e u_e to round-off (tested), so the particle sums
+/// are exactly -K u. particle_stress.hpp's compute_beam_forces(lattice, parameters, u, states) gives the
+/// same F_ij and moments in its BeamForces layout (tested against this one); this one adds the normal and
+/// shear components. Limits: like the stiffness, geometrically linear.
+std::vector<BeamForce> connection_forces(const Lattice& lattice, const BeamParameters& parameters,
+                                           const std::vector<BeamState>& states, const Eigen::VectorXd& u);
+
+/// What one BeamMechanics::solve did (Ceres' Summary in small).
+struct MechanicsSummary {
+  Eigen::ComputationInfo info = Eigen::Success;  ///< linear solver status (Success, NumericalIssue, ...)
+  bool contact_converged = false;   ///< the contact set was stable at the last iteration
+  int contact_iterations = 0;       ///< linear solves in the active-set loop
+  int n_contact_changes = 0;        ///< open <-> contact switches in this solve
+  int n_contacts = 0;               ///< broken beams in contact after the solve
+  int n_open = 0;                   ///< broken beams open after the solve
+  int n_detached_particles = 0;     ///< particles held because they lost their anchoring (all so far)
+  double solver_residual = 0.0;     ///< ||A x - b|| / ||b|| of the last linear solve
+  /// max |K u - f| over free degrees of freedom, over max |f| (f the loads incl. held-DOF terms).
+  /// NaN after solve(false), which skips it.
+  double equilibrium_residual = 0.0;
+  double solve_seconds = 0.0;       ///< wall time of this solve()
+  std::string message;              ///< why, when not converged
+  bool is_converged() const { return info == Eigen::Success && contact_converged; }
+};
+
+/// The dry lattice's mechanics: assembles and factorises once, then solve() / break_beam() / solve().
+///
+/// Rules (docs/lattice.md):
+///  - Prescribed degrees of freedom are eliminated (not penalised): the solver sees K_ff, the rhs
+///    f_f - K_fh u_h, so the system stays SPD and as well-conditioned as the lattice.
+///  - Pure traction (no held degree of freedom): x, y, rotation of the particle nearest the lattice's
+///    centroid are pinned at 0 and, after each solve, the least-squares rigid motion of all particles
+///    is subtracted from the reported displacement (the gauge: zero mean translation and rotation).
+///    Exact when the loads are self-equilibrated, as boundary pressures are; pin_reaction reports
+///    what the pin carries otherwise.
+///  - Detachment: a particle or cluster whose intact (or sprung, set_normal_springs) beams no longer connect it to held degrees of
+///    freedom that stop all three rigid motions (a particle with only contacts left has a free
+///    rotation) is frozen at the least-squares rigid motion of its last displacement (so it carries no
+///    force), all its broken beams are forced open, and the system is re-assembled and refactorised.
+///  - break_beam: intact -> contact if the beam is currently shortened, else open; the factor is
+///    downdated with columns of beam_element_factor (rank 2 or 3). solve() then runs the active set.
+/// Limits: linear, small displacements; contacts are frictionless normal springs with the intact
+/// beam's k_n (Eq. 9-10); loads are fixed nodal forces on the undeformed geometry.
+class BeamMechanics {
+ public:
+  /// Validates everything (throws hm::InputError), assembles and factorises. Does not solve.
+  BeamMechanics(Lattice lattice, const BeamParameters& parameters, const BoundaryConditions& conditions,
+                const MechanicsOptions& options = {});
+
+  /// Solve for the current loads and beam states, with the contact active-set loop.
+  MechanicsSummary solve();
+  /// The same; equilibrium_check = false skips the O(n_beams) re-evaluation of every beam behind
+  /// summary.equilibrium_residual (then NaN), for callers that do not read it (the break loop, which
+  /// re-solves after every broken beam; the linear solver still checks its own residual). The
+  /// displacement and everything else are the same as solve()'s.
+  MechanicsSummary solve(bool equilibrium_check);
+  /// Break an intact beam (no-op for a broken one); returns its new state. Throws hm::InputError
+  /// "beam = b, allowed: 0 <= beam < n_beams" for a bad index.
+  BeamState break_beam(int beam);
+  /// Additional nodal forces (3 n_particles; e.g. pore-pressure forces, crack-face pressure), added
+  /// to the boundary pressures. Components at held degrees of freedom are ignored.
+  void set_external_forces(const Eigen::VectorXd& forces);
+  /// Extra translational normal springs, one stiffness per beam (size n_beams, each >= 0 and finite):
+  /// beam e adds k_e n n^T (u_j - u_i) between its particles' x, y, whatever the beam's state. Used by
+  /// the undrained split of the coupling (Eq. 20, coupling.hpp); empty or all zero: none. Part of the
+  /// matrix (re-assembled and refactorised once here), of reactions() and of the equilibrium residual;
+  /// not part of beam_forces() (the springs are a numerical device, not a bond). Throws hm::InputError.
+  void set_normal_springs(const Eigen::VectorXd& stiffness);
+  /// The springs of set_normal_springs (empty if none).
+  const Eigen::VectorXd& normal_springs() const { return springs_; }
+
+  /// Displacements (3 n_particles, dof = 3 i + component) of the last solve (0 before).
+  const Eigen::VectorXd& displacement() const { return displacement_; }
+  /// Forces of every beam at the current displacement (connection_forces). For particle stresses use
+  /// compute_beam_forces(lattice(), parameters(), displacement(), states()) of particle_stress.hpp.
+  std::vector<BeamForce> beam_forces() const;
+  /// The same into `forces` (resized to n_beams), reusing its storage across calls.
+  void beam_forces(std::vector<BeamForce>& forces) const;
+  /// Nodal loads: boundary pressures plus set_external_forces (3 n_particles).
+  Eigen::VectorXd loads() const { return pressure_loads_ + extra_loads_; }
+  /// K u - loads (3 n_particles): ~0 at free degrees of freedom, the reactions at held ones.
+  Eigen::VectorXd reactions() const;
+
+  const Lattice& lattice() const { return lattice_; }
+  const BeamParameters& parameters() const { return parameters_; }
+  const std::vector<BeamState>& states() const { return states_; }
+  const std::vector<bool>& held_dofs() const { return held_; }
+  const std::vector<bool>& detached_particles() const { return detached_; }
+  int n_detached_particles() const { return n_detached_; }
+  int n_free_dofs() const { return static_cast<int>(free_dofs_.size()); }
+  /// True when the rigid-body modes were pinned automatically (pure traction).
+  bool is_pinned() const { return pinned_particle_ >= 0; }
+  int pinned_particle() const { return pinned_particle_; }
+  const SpdSolver& solver() const { return *solver_; }
+
+ private:
+  void setup_system();  // free-DOF map, reduced matrix, held-term vector, factorisation
+  BeamParameters beam_parameters(int beam) const;  // = beam_parameters_for(lattice_, parameters_, beam), cached k_n
+  void change_state(int beam, BeamState to);
+  void check_detachment(int i, int j);
+  Eigen::VectorXd full_vector(const Eigen::VectorXd& x_free) const;
+
+  Lattice lattice_;
+  BeamParameters parameters_;
+  BoundaryConditions conditions_;
+  MechanicsOptions options_;
+  std::vector<BeamState> states_;
+  std::vector<double> normal_stiffness_;  // per beam: beam_parameters_for(...).normal_stiffness (facet scaling)
+  std::vector<bool> held_;       // per dof
+  Eigen::VectorXd held_value_;   // per dof (0 where free)
+  std::vector<bool> detached_;   // per particle
+  int n_detached_ = 0;
+  int pinned_particle_ = -1;
+  std::vector<int> free_index_;  // per dof: index in the reduced system or -1
+  std::vector<int> free_dofs_;
+  std::vector<int> adjacency_start_, adjacency_beam_;  // CSR particle -> beams
+  Eigen::VectorXd pressure_loads_, extra_loads_;
+  Eigen::VectorXd held_term_;    // K u_h (3 n), kept current under state changes
+  Eigen::VectorXd raw_;          // last solution incl. held values, before the gauge shift
+  Eigen::VectorXd displacement_;
+  std::vector<int> broken_;      // beams not intact
+  Eigen::VectorXd springs_;      // set_normal_springs, per beam (empty: none)
+  std::unique_ptr<SpdSolver> solver_;
+};
+
+}  // namespace hm::lattice2d

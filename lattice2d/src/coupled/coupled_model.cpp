@@ -1,0 +1,420 @@
+#include "hm/lattice2d/coupled/coupled_model.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <utility>
+
+#include "hm/core/input_error.hpp"
+#include "hm/analytic/validation.hpp"
+#include "hm/lattice2d/coupled/anderson_acceleration.hpp"
+
+namespace hm::lattice2d {
+
+std::string to_string(CouplingSplit split) { return split == CouplingSplit::undrained ? "undrained" : "drained"; }
+
+CouplingSplit coupling_split_from_string(std::string_view name) {
+  if (name == "undrained") return CouplingSplit::undrained;
+  if (name == "drained") return CouplingSplit::drained;
+  throw hm::InputError("coupling.split = '" + std::string(name) + "', allowed: undrained, drained");
+}
+
+std::string to_string(CouplingRelaxation relaxation) {
+  switch (relaxation) {
+    case CouplingRelaxation::none: return "none";
+    case CouplingRelaxation::aitken: return "aitken";
+    case CouplingRelaxation::anderson: return "anderson";
+  }
+  return "?";
+}
+
+CouplingRelaxation coupling_relaxation_from_string(std::string_view name) {
+  if (name == "none") return CouplingRelaxation::none;
+  if (name == "aitken") return CouplingRelaxation::aitken;
+  if (name == "anderson") return CouplingRelaxation::anderson;
+  throw hm::InputError("coupling.relaxation = '" + std::string(name) + "', allowed: none, aitken, anderson");
+}
+
+std::string to_string(CouplingPredictor predictor) {
+  return predictor == CouplingPredictor::previous ? "previous" : "linear";
+}
+
+CouplingPredictor coupling_predictor_from_string(std::string_view name) {
+  if (name == "previous") return CouplingPredictor::previous;
+  if (name == "linear") return CouplingPredictor::linear;
+  throw hm::InputError("coupling.predictor = '" + std::string(name) + "', allowed: previous, linear");
+}
+
+std::string to_string(FractureCheck check) {
+  return check == FractureCheck::every_pass ? "every_pass" : "at_convergence";
+}
+
+FractureCheck fracture_check_from_string(std::string_view name) {
+  if (name == "every_pass") return FractureCheck::every_pass;
+  if (name == "at_convergence") return FractureCheck::at_convergence;
+  throw hm::InputError("coupling.fracture_check = '" + std::string(name) + "', allowed: every_pass, at_convergence");
+}
+
+std::string to_string(CoupledStatus status) {
+  switch (status) {
+    case CoupledStatus::converged: return "converged";
+    case CoupledStatus::accepted_unconverged: return "accepted unconverged";
+    case CoupledStatus::not_converged: return "not converged";
+    case CoupledStatus::solver_failure: return "solver failure";
+  }
+  return "?";
+}
+
+void CouplingOptions::validate() const {
+  using namespace hm::analytic;
+  require_finite(psi, "coupling.psi");
+  require_non_negative(psi, "coupling.psi");
+  if (split == CouplingSplit::drained && psi != 0.0)
+    throw hm::InputError("coupling.psi = " + format_value(psi) + ", allowed: 0 for split = drained");
+  require_finite(xi, "coupling.xi");
+  require_positive(xi, "coupling.xi");
+  require_open(pressure_tolerance, "coupling.pressure_tolerance", 0.0, 1.0);
+  require_open(displacement_tolerance, "coupling.displacement_tolerance", 0.0, 1.0);
+  require_at_least(max_iterations, "coupling.max_iterations", 1);
+  if (anderson_depth < 1 || anderson_depth > 50)
+    throw hm::InputError("coupling.anderson_depth = " + std::to_string(anderson_depth) + ", allowed: 1 ... 50");
+  if (!(initial_relaxation > 0.0 && initial_relaxation <= 1.0))
+    throw hm::InputError("coupling.initial_relaxation = " + format_value(initial_relaxation) + ", allowed: 0 < initial_relaxation <= 1");
+}
+
+void TimeStepping::validate() const {
+  using namespace hm::analytic;
+  require_finite(t_end, "numerics.t_end");
+  require_positive(t_end, "numerics.t_end");
+  require_finite(dt_initial, "numerics.dt_initial");
+  require_positive(dt_initial, "numerics.dt_initial");
+  if (dt_initial > t_end)
+    throw hm::InputError("numerics.dt_initial = " + format_value(dt_initial) + ", allowed: <= t_end = " + format_value(t_end));
+  require_finite(dt_growth, "numerics.dt_growth");
+  if (!(dt_growth >= 1.0))
+    throw hm::InputError("numerics.dt_growth = " + format_value(dt_growth) + ", allowed: >= 1");
+  if (max_step_halvings < 0 || max_step_halvings > 50)
+    throw hm::InputError("numerics.max_step_halvings = " + std::to_string(max_step_halvings) + ", allowed: 0 ... 50");
+  if (!(dt_max >= dt_initial))
+    throw hm::InputError("numerics.dt_max = " + format_value(dt_max) + ", allowed: >= dt_initial = " + format_value(dt_initial));
+  for (std::size_t k = 0; k < output_times.size(); ++k) {
+    const double t = output_times[k];
+    if (!(t > 0.0 && t <= t_end))
+      throw hm::InputError("output.times[" + std::to_string(k) + "] = " + format_value(t) + ", allowed: 0 < t <= t_end = " +
+                           format_value(t_end));
+    if (k > 0 && !(t > output_times[k - 1]))
+      throw hm::InputError("output.times[" + std::to_string(k) + "] = " + format_value(t) + ", allowed: strictly increasing");
+  }
+}
+
+namespace {
+
+// max|a - b| / max|a| (0 when both vanish), over entries selected by `stride` pattern (all for 0).
+double relative_change(const Eigen::VectorXd& a, const Eigen::VectorXd& b, bool translations_only) {
+  double num = 0.0, den = 0.0;
+  for (Eigen::Index k = 0; k < a.size(); ++k) {
+    if (translations_only && k % 3 == 2) continue;
+    num = std::max(num, std::abs(a[k] - b[k]));
+    den = std::max(den, std::abs(a[k]));
+  }
+  return den > 0.0 ? num / den : (num > 0.0 ? 1.0 : 0.0);
+}
+
+}  // namespace
+
+CoupledModel::CoupledModel(Lattice lattice, const BeamParameters& beams, const BoundaryConditions& conditions,
+                           const MechanicsOptions& mechanics_options, const FlowParameters& flow,
+                           const CouplingOptions& options)
+    : options_(options) {
+  options_.validate();
+  flow.validate();
+  coupling_.b = flow.b;
+  coupling_.xi = options_.xi;
+  coupling_.psi = options_.split == CouplingSplit::drained ? 0.0 : options_.psi;
+  coupling_.E_over_M = flow.E_over_M;
+  coupling_.borehole_wall_traction = options_.borehole_wall_traction;
+  coupling_.validate();
+  reference_dual_ = build_dual_graph(lattice);
+  current_dual_ = reference_dual_;
+  flow_ = std::make_unique<FlowNetwork>(lattice, reference_dual_, flow);
+  mechanics_ = std::make_unique<BeamMechanics>(std::move(lattice), beams, conditions, mechanics_options);
+  springs_ = undrained_spring_stiffness(mechanics_->lattice(), reference_dual_, coupling_);
+  // The springs go into the matrix once (one refactorisation); Psi = 0 leaves the dry matrix as it is.
+  if (coupling_.psi > 0.0) mechanics_->set_normal_springs(springs_);
+  displacement_ = Eigen::VectorXd::Zero(3 * mechanics_->lattice().n_particles());
+  volume_ = unknown_volumes(reference_dual_);
+}
+
+CoupledModel::~CoupledModel() = default;
+
+void CoupledModel::enable_fracture(BeamStrengths strengths, const BreakLoopOptions& options) {
+  options.validate();
+  const int n = lattice().n_beams();
+  if (strengths.n_beams() != n || strengths.compressive.size() != n)
+    throw hm::InputError("fracture.strengths: " + std::to_string(strengths.n_beams()) +
+                         " values, allowed: one per beam (" + std::to_string(n) + ")");
+  fracture_ = std::make_unique<FractureSetup>(FractureSetup{std::move(strengths), options});
+}
+
+int CoupledModel::n_broken() const {
+  return static_cast<int>(std::count_if(mechanics_->states().begin(), mechanics_->states().end(),
+                                        [](BeamState s) { return s != BeamState::intact; }));
+}
+
+Eigen::Matrix2Xd CoupledModel::positions(const Eigen::VectorXd& u) const {
+  Eigen::Matrix2Xd x = lattice().points;
+  for (Eigen::Index i = 0; i < x.cols(); ++i) {
+    x(0, i) += u[3 * i];
+    x(1, i) += u[3 * i + 1];
+  }
+  return x;
+}
+
+Eigen::VectorXd CoupledModel::unknown_volumes(const DualGraph& dual) const {
+  Eigen::VectorXd v(flow_->n_unknowns());
+  v.head(dual.triangle_area.size()) = dual.triangle_area;
+  if (flow_->has_borehole()) v[flow_->borehole_index()] = flow_->borehole_volume();
+  return v;
+}
+
+CoupledStepSummary CoupledModel::step(double dt) {
+  const auto start = std::chrono::steady_clock::now();
+  if (!(dt > 0.0 && std::isfinite(dt)))
+    throw hm::InputError("dt = " + hm::analytic::format_value(dt) + ", allowed: > 0, finite");
+  CoupledStepSummary summary;
+  summary.dt = dt;
+  summary.time = time() + dt;
+  const int factorizations_before = mechanics_->solver().report().n_factorizations;
+  const int update_failures_before = mechanics_->solver().report().n_update_failures;
+  const Lattice& l = lattice();
+  Eigen::VectorXd p_guess = flow_->pressure();  // p^n: the drained split's frozen pressure
+  Eigen::VectorXd u_prev = displacement_;       // u^n: where the springs are relaxed at the first pass
+  if (options_.predictor == CouplingPredictor::linear && previous_dt_ > 0.0) {
+    const double ratio = dt / previous_dt_;
+    p_guess += ratio * (flow_->pressure() - previous_pressure_);
+    u_prev += ratio * (displacement_ - previous_displacement_);
+  }
+  DualGraph dual;
+  bool converged = false;
+  double omega = 1.0;     // Aitken relaxation factor
+  Eigen::VectorXd r_prev;  // last pressure residual (Aitken)
+  AndersonAcceleration anderson(options_.anderson_depth, options_.initial_relaxation);
+  double u_scale = 1.0;
+  bool u_scaled = false;
+  const bool check_every_pass = fracture_ && options_.fracture_check == FractureCheck::every_pass;
+  // Runs the break loop at the current forces; false (and the summary says why) if it failed.
+  const auto break_beams = [&](int pass, int& n_breaks) {
+    const BreakLoopSummary bs = break_until_stable(*mechanics_, reference_dual_, fracture_->strengths,
+                                                   fracture_->options, summary.time, break_log_);
+    summary.mechanics_seconds += bs.solve_seconds;
+    summary.stress_seconds += bs.stress_seconds;
+    summary.break_seconds += bs.break_seconds;
+    summary.n_mechanics_solves += bs.n_solves;
+    summary.n_contact_changes += bs.n_contact_changes;
+    n_breaks = bs.n_breaks;
+    summary.n_breaks += bs.n_breaks;
+    if (!bs.is_stable()) {
+      summary.status = CoupledStatus::solver_failure;
+      summary.message = "break loop at t = " + hm::analytic::format_value(summary.time) + ", pass " +
+                        std::to_string(pass) + ": " + to_string(bs.status) + " " + bs.message;
+      return false;
+    }
+    if (n_breaks > 0) flow_->set_broken(broken_flags(mechanics_->states()));
+    return true;
+  };
+  int last_break_pass = 0;  // at_convergence: max_iterations counts from here
+  for (int k = 1; k - last_break_pass <= options_.max_iterations; ++k) {
+    summary.iterations = k;
+    // 1. Mechanics with the current pressure guess (Eq. 17) and the undrained predictor (Eq. 20).
+    Eigen::VectorXd f = pressure_forces(l, reference_dual_, p_guess, coupling_);
+    if (coupling_.psi > 0.0) f += spring_preload(l, springs_, u_prev);
+    mechanics_->set_external_forces(f);
+    int breaks_this_pass = 0;
+    if (check_every_pass) {
+      // Solve, then break one beam at a time until none fails (the stresses of the effective, i.e.
+      // beam, forces; V_i of the undeformed dual like the rest of the linear mechanics).
+      if (!break_beams(k, breaks_this_pass)) break;
+    } else {
+      const MechanicsSummary ms = mechanics_->solve();
+      summary.mechanics_seconds += ms.solve_seconds;
+      ++summary.n_mechanics_solves;
+      summary.n_contact_changes += ms.n_contact_changes;
+      if (!ms.is_converged()) {
+        summary.status = CoupledStatus::solver_failure;
+        summary.message = "mechanics at t = " + hm::analytic::format_value(summary.time) + ", pass " +
+                          std::to_string(k) + ": " + ms.message;
+        break;
+      }
+    }
+    const Eigen::VectorXd& u = mechanics_->displacement();
+    // 2. The deformed flow geometry.
+    auto tick = std::chrono::steady_clock::now();
+    const Eigen::Matrix2Xd x = positions(u);
+    dual = build_dual_graph(l, x, reference_dual_.options);
+    flow_->update_geometry(dual, x);
+    auto tock = std::chrono::steady_clock::now();
+    summary.geometry_seconds += std::chrono::duration<double>(tock - tick).count();
+    // 3. The flow step with b (V^{n+1} - V^n).
+    summary.flow = flow_->solve(dt, unknown_volumes(dual) - volume_);
+    summary.flow_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - tock).count();
+    if (!summary.flow.is_ok()) {
+      summary.status = CoupledStatus::solver_failure;
+      summary.message = "flow at t = " + hm::analytic::format_value(summary.time) + ", pass " + std::to_string(k) +
+                        ": " + summary.flow.message;
+      break;
+    }
+    // 4. Residuals between passes.
+    const Eigen::VectorXd& p = flow_->trial_pressure();
+    summary.pressure_residual = relative_change(p, p_guess, false);
+    summary.displacement_residual = relative_change(u, u_prev, true);
+    summary.pressure_history.push_back(summary.pressure_residual);
+    if (pass_observer_) pass_observer_(k, p, u);
+    // Next pressure guess: the flow result, or with Aitken's dynamic relaxation (Kuettler & Wall 2008)
+    // p_guess += omega (p - p_guess), omega from the last two residuals r = p - p_guess. It changes the
+    // path, not the fixed point; it tames the borehole's feedback (docs/coupling.md, section 3).
+    if (options_.relaxation == CouplingRelaxation::aitken) {
+      const Eigen::VectorXd r = p - p_guess;
+      if (k == 1 || breaks_this_pass > 0 || k == last_break_pass + 1) {
+        // A break changed the system: the last residual belongs to another map, start afresh.
+        omega = options_.initial_relaxation;
+      } else {
+        const Eigen::VectorXd dr = r - r_prev;
+        const double dr2 = dr.squaredNorm();
+        if (dr2 > 0.0) omega = std::clamp(-omega * r_prev.dot(dr) / dr2, -1.0, 1.0);
+      }
+      r_prev = r;
+      p_guess += omega * r;
+    } else if (options_.relaxation == CouplingRelaxation::anderson) {
+      // The pass maps (p_guess, u_prev) -> (p, u) (u_prev through the springs), so both are the state;
+      // u is scaled to the pressure's magnitude, fixed for the step so that secants stay consistent.
+      if (breaks_this_pass > 0) anderson.reset();  // the map changed: old differences mislead
+      const double u_max = u.cwiseAbs().maxCoeff(), p_max = p.cwiseAbs().maxCoeff();
+      if (!u_scaled && u_max > 0.0 && p_max > 0.0) {  // first pass with a non-zero u (from rest: pass 2)
+        u_scale = p_max / u_max;
+        u_scaled = true;
+        anderson.reset();
+      }
+      const Eigen::Index np = p.size(), nu = u.size();
+      Eigen::VectorXd state(np + nu), mapped(np + nu);
+      state << p_guess, u_scale * u_prev;
+      mapped << p, u_scale * u;
+      const Eigen::VectorXd next = anderson.next(state, mapped);
+      p_guess = next.head(np);
+      u_prev = next.tail(nu) / u_scale;
+    } else {
+      p_guess = p;
+    }
+    if (options_.relaxation != CouplingRelaxation::anderson) u_prev = u;
+    if (breaks_this_pass == 0 && summary.pressure_residual <= options_.pressure_tolerance &&
+        summary.displacement_residual <= options_.displacement_tolerance) {
+      if (fracture_ && !check_every_pass) {
+        // A coupled equilibrium: break what fails under its forces, then converge again from the
+        // broken state (springs relaxed there, a fresh Anderson history: the map changed).
+        int n_breaks = 0;
+        if (!break_beams(k, n_breaks)) break;
+        if (n_breaks > 0) {
+          u_prev = mechanics_->displacement();
+          anderson.reset();
+          last_break_pass = k;  // Aitken restarts at the next pass
+          continue;
+        }
+      }
+      converged = true;
+      break;
+    }
+  }
+  if (summary.status != CoupledStatus::solver_failure) {
+    if (converged) {
+      summary.status = CoupledStatus::converged;
+    } else if (options_.accept_unconverged) {
+      summary.status = CoupledStatus::accepted_unconverged;
+    } else {
+      summary.status = CoupledStatus::not_converged;
+      summary.message = "coupling at t = " + hm::analytic::format_value(summary.time) + ": not converged after " +
+                        std::to_string(options_.max_iterations) + " passes (max_iterations); pressure residual " +
+                        hm::analytic::format_value(summary.pressure_residual) + ", displacement residual " +
+                        hm::analytic::format_value(summary.displacement_residual);
+    }
+  }
+  if (summary.is_ok()) {
+    if (options_.predictor == CouplingPredictor::linear) {
+      previous_pressure_ = flow_->pressure();
+      previous_displacement_ = displacement_;
+      previous_dt_ = summary.n_breaks == 0 ? dt : 0.0;
+    }
+    flow_->accept();
+    displacement_ = mechanics_->displacement();  // the last pass's u, which the accepted flow saw
+    current_dual_ = std::move(dual);
+    volume_ = unknown_volumes(current_dual_);
+  } else {
+    // Back to the geometry of t^n so that a retry (e.g. with a smaller dt) starts from a clean state.
+    flow_->update_geometry(current_dual_, positions(displacement_));
+  }
+  summary.n_broken = n_broken();
+  summary.n_mechanics_factorizations = mechanics_->solver().report().n_factorizations - factorizations_before;
+  summary.n_mechanics_update_failures = mechanics_->solver().report().n_update_failures - update_failures_before;
+  summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return summary;
+}
+
+void CoupledRunSummary::add_accepted_step(const CoupledStepSummary& s) {
+  step_seconds += s.seconds;
+  mechanics_seconds += s.mechanics_seconds;
+  stress_seconds += s.stress_seconds;
+  break_seconds += s.break_seconds;
+  geometry_seconds += s.geometry_seconds;
+  flow_seconds += s.flow_seconds;
+  n_mechanics_solves += s.n_mechanics_solves;
+  n_contact_changes += s.n_contact_changes;
+  n_mechanics_factorizations += s.n_mechanics_factorizations;
+  n_mechanics_update_failures += s.n_mechanics_update_failures;
+}
+
+CoupledRunSummary CoupledModel::run(const TimeStepping& stepping, const Observer& observer) {
+  stepping.validate();
+  const auto start = std::chrono::steady_clock::now();
+  CoupledRunSummary run;
+  std::vector<double> outputs = stepping.output_times;
+  if (outputs.empty() || outputs.back() < stepping.t_end) outputs.push_back(stepping.t_end);
+  // Times closer than this to an output are snapped onto it (no sliver steps).
+  const double snap = 1e-9 * stepping.t_end;
+
+  // Initial step: the unloaded lattice at t = 0.
+  if (observer) observer(*this, CoupledStepSummary{}, true);
+  std::size_t next_output = 0;
+  double dt_nominal = stepping.dt_initial;
+  while (time() < stepping.t_end - snap) {
+    const double t_out = outputs[next_output];
+    double dt = std::min(dt_nominal, t_out - time());
+    if (t_out - (time() + dt) < snap) dt = t_out - time();
+    CoupledStepSummary s = step(dt);
+    run.total_iterations += s.iterations;
+    // A coupling loop that did not converge is retried with half the step (fewer breaks per step,
+    // a milder change of the contact set), up to max_step_halvings times.
+    for (int h = 0; s.status == CoupledStatus::not_converged && h < stepping.max_step_halvings; ++h) {
+      dt *= 0.5;
+      dt_nominal = dt;
+      ++run.n_step_halvings;
+      s = step(dt);
+      run.total_iterations += s.iterations;
+    }
+    run.status = s.status;
+    if (!s.is_ok()) {
+      run.message = s.message;
+      break;
+    }
+    ++run.n_steps;
+    run.max_balance_error = std::max(run.max_balance_error, s.flow.balance_error);
+    run.add_accepted_step(s);
+    const bool is_output = std::abs(time() - t_out) <= snap;
+    if (is_output) ++next_output;
+    if (observer) observer(*this, s, is_output);
+    // Geometric growth of the nominal step; a step shortened to hit an output does not reset it.
+    if (dt >= dt_nominal * (1.0 - 1e-12)) dt_nominal = std::min(dt_nominal * stepping.dt_growth, stepping.dt_max);
+  }
+  run.time = time();
+  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return run;
+}
+
+}  // namespace hm::lattice2d

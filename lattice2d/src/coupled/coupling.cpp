@@ -1,0 +1,88 @@
+#include "hm/lattice2d/coupled/coupling.hpp"
+
+#include <algorithm>
+#include <cassert>
+
+#include "hm/analytic/validation.hpp"
+#include "hm/lattice2d/mechanics/beam_stiffness.hpp"
+
+namespace hm::lattice2d {
+
+void CouplingParameters::validate() const {
+  using namespace hm::analytic;
+  require_closed(b, "coupling.b", 0.0, 1.0);
+  require_finite(xi, "coupling.xi");
+  require_positive(xi, "coupling.xi");
+  require_finite(psi, "coupling.psi");
+  require_non_negative(psi, "coupling.psi");
+  require_finite(E_over_M, "coupling.E_over_M");
+  require_positive(E_over_M, "coupling.E_over_M");
+}
+
+Eigen::VectorXd pressure_forces(const Lattice& lattice, const DualGraph& dual, const Eigen::VectorXd& pressure,
+                                const CouplingParameters& parameters) {
+  const int n_t = lattice.n_triangles();
+  assert((pressure.size() == n_t || pressure.size() == n_t + 1) && "pressure_forces: one value per triangle (+ p_h)");
+  assert(dual.dual_length.size() == lattice.n_beams() && "pressure_forces: dual graph of another lattice");
+  const double p_h = pressure.size() > n_t ? pressure[n_t] : 0.0;
+  const double scale = parameters.xi * parameters.b;
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(3 * lattice.n_particles());
+  for (int e = 0; e < lattice.n_beams(); ++e) {
+    const auto [s, t] = lattice.beam_triangles[static_cast<std::size_t>(e)];
+    const BoundaryTag tag = lattice.beam_boundary[static_cast<std::size_t>(e)];
+    const double p_t = t >= 0 ? pressure[t] : (tag == BoundaryTag::inner ? p_h : 0.0);
+    const double p_st = 0.5 * (pressure[s] + p_t);
+    const Eigen::Vector2d F_i = -scale * dual.dual_length[e] * p_st * lattice.direction.col(e);
+    const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
+    f[dof_index(i, 0)] += F_i.x();
+    f[dof_index(i, 1)] += F_i.y();
+    f[dof_index(j, 0)] -= F_i.x();
+    f[dof_index(j, 1)] -= F_i.y();
+    if (tag == BoundaryTag::inner && parameters.borehole_wall_traction && p_h != 0.0) {
+      // Outward normal of the solid: away from the wall triangle's third vertex.
+      const auto& tri = lattice.triangles[static_cast<std::size_t>(s)];
+      const int k = tri[0] != i && tri[0] != j ? tri[0] : tri[1] != i && tri[1] != j ? tri[1] : tri[2];
+      const Eigen::Vector2d n = lattice.direction.col(e);
+      Eigen::Vector2d m(-n.y(), n.x());
+      if (m.dot(lattice.points.col(k) - lattice.points.col(i)) > 0.0) m = -m;
+      const Eigen::Vector2d w = -0.5 * p_h * lattice.length[e] * m;
+      for (int q : {i, j}) {
+        f[dof_index(q, 0)] += w.x();
+        f[dof_index(q, 1)] += w.y();
+      }
+    }
+  }
+  return f;
+}
+
+Eigen::VectorXd undrained_spring_stiffness(const Lattice& lattice, const DualGraph& dual,
+                                           const CouplingParameters& parameters) {
+  const double c = parameters.psi * parameters.xi * parameters.b * parameters.b / parameters.E_over_M;
+  Eigen::VectorXd k(lattice.n_beams());
+  // A negative d_st (round-off on a nearly co-circular pair) would make the spring negative and the
+  // matrix possibly indefinite; such a segment carries no pressure area anyway.
+  for (int e = 0; e < lattice.n_beams(); ++e) k[e] = c * std::max(dual.dual_length[e], 0.0) / lattice.length[e];
+  return k;
+}
+
+Eigen::VectorXd spring_preload(const Lattice& lattice, const Eigen::VectorXd& stiffness,
+                               const Eigen::VectorXd& u_reference) {
+  assert(stiffness.size() == lattice.n_beams() && "spring_preload: one stiffness per beam");
+  assert(u_reference.size() == 3 * lattice.n_particles() && "spring_preload: 3 dofs per particle");
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(3 * lattice.n_particles());
+  for (int e = 0; e < lattice.n_beams(); ++e) {
+    if (stiffness[e] == 0.0) continue;
+    const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
+    const Eigen::Vector2d n = lattice.direction.col(e);
+    const double elongation = (u_reference[dof_index(j, 0)] - u_reference[dof_index(i, 0)]) * n.x() +
+                              (u_reference[dof_index(j, 1)] - u_reference[dof_index(i, 1)]) * n.y();
+    const Eigen::Vector2d g = stiffness[e] * elongation * n;
+    f[dof_index(i, 0)] -= g.x();
+    f[dof_index(i, 1)] -= g.y();
+    f[dof_index(j, 0)] += g.x();
+    f[dof_index(j, 1)] += g.y();
+  }
+  return f;
+}
+
+}  // namespace hm::lattice2d

@@ -1,0 +1,442 @@
+#include "hm/lattice2d/flow/flow_network.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <utility>
+
+#include <Eigen/CholmodSupport>
+
+#include <Eigen/SparseCore>
+
+#include "hm/core/input_error.hpp"
+#include "hm/analytic/validation.hpp"
+#include "linalg/subtree_solve.hpp"
+
+namespace hm::lattice2d {
+
+namespace {
+
+using hm::analytic::format_value;
+
+// |a - b - c - d| over the sum of the magnitudes; 0 if everything vanishes.
+double relative_imbalance(double injected, double storage, double deformation, double outflow) {
+  const double scale = std::abs(injected) + std::abs(storage) + std::abs(deformation) + std::abs(outflow);
+  return scale > 0.0 ? std::abs(injected - storage - deformation - outflow) / scale : 0.0;
+}
+
+}  // namespace
+
+std::string to_string(BoreholeStorage storage) {
+  return storage == BoreholeStorage::biot_modulus ? "biot-modulus" : "none";
+}
+
+BoreholeStorage borehole_storage_from_string(std::string_view name) {
+  if (name == "biot-modulus") return BoreholeStorage::biot_modulus;
+  if (name == "none") return BoreholeStorage::none;
+  throw InputError("borehole_storage = '" + std::string(name) + "', allowed: biot-modulus, none");
+}
+
+std::string to_string(BoreholeDeformation deformation) {
+  return deformation == BoreholeDeformation::biot ? "biot" : "none";
+}
+
+BoreholeDeformation borehole_deformation_from_string(std::string_view name) {
+  if (name == "biot") return BoreholeDeformation::biot;
+  if (name == "none") return BoreholeDeformation::none;
+  throw InputError("borehole_deformation = '" + std::string(name) + "', allowed: biot, none");
+}
+
+void FlowParameters::validate() const {
+  using namespace hm::analytic;
+  require_non_negative(Q, "Q");
+  require_positive(E_over_M, "E_over_M");
+  require_closed(b, "b", 0.0, 1.0);
+  require_positive(iota, "iota");
+  require_positive(time_step, "time_step");
+  if (!(refinement_tolerance > 0.0 && refinement_tolerance < 1e-6))
+    throw InputError("refinement_tolerance = " + format_value(refinement_tolerance) + ", allowed: 0 < value < 1e-6");
+  if (max_refinements < 1) throw InputError("max_refinements = " + std::to_string(max_refinements) + ", allowed: >= 1");
+  if (refresh_after_refinements < 0)
+    throw InputError("refresh_after_refinements = " + std::to_string(refresh_after_refinements) + ", allowed: >= 0");
+  if (borehole_storage != BoreholeStorage::biot_modulus && borehole_storage != BoreholeStorage::none)
+    throw InputError("borehole_storage = " + std::to_string(static_cast<int>(borehole_storage)) +
+                     ", allowed: biot-modulus, none");
+  if (borehole_deformation != BoreholeDeformation::biot && borehole_deformation != BoreholeDeformation::none)
+    throw InputError("borehole_deformation = " + std::to_string(static_cast<int>(borehole_deformation)) +
+                     ", allowed: biot, none");
+  require_finite(source_x, "source_x");
+  require_finite(source_y, "source_y");
+}
+
+FlowParameters flow_parameters_of(const hm::analytic::DimensionlessParameters& parameters, double dt) {
+  FlowParameters flow;
+  flow.Q = parameters.Q;
+  flow.E_over_M = parameters.material.E_over_M;
+  flow.b = parameters.material.b;
+  flow.iota = parameters.iota;
+  flow.time_step = dt;
+  return flow;
+}
+
+// The one place that names the sparse factorisation: CHOLMOD's simplicial LDL' (through Eigen's
+// CholmodSupport) with CHOLMOD's nested-dissection ordering; ordering and symbolic analysis once per
+// pattern, a numeric refactorisation with the new values on every factorise(). Measured with
+// bench_flow_solve on the Fig. 12 annulus (medians, seconds per factorisation + solve): N = 1e5
+// (2e5 unknowns) 0.20 against 0.29 for Eigen's SimplicialLDLT (AMD ordering, 20% more nonzeros in L);
+// N = 1e4 0.008, the same as Eigen. The gain is the ordering: CHOLMOD's supernodal LL' with the same
+// ordering factorises as fast at N = 1e5 but solves 1.7x slower and factorises 2x slower at N = 1e4.
+// The matrix keeps the full symmetric pattern (both triangles) so that matrix-vector products need no
+// symmetry handling; the factorisation reads the lower half.
+struct FlowNetwork::Solver {
+  using Matrix = Eigen::SparseMatrix<double>;
+  // Eigen's wrapper, opened to hand its CHOLMOD factor to SubtreeSolve.
+  struct Factorisation : Eigen::CholmodSimplicialLDLT<Matrix, Eigen::Lower> {
+    const cholmod_factor& factor() const { return *m_cholmodFactor; }
+  };
+
+  Matrix matrix;
+  std::vector<int> diagonal_slot;                // value index of (k, k)
+  std::vector<std::array<int, 4>> connection_slot;  // (s,s), (t,t), (s,t), (t,s); -1 where absent
+  Factorisation factorisation;
+  SubtreeSolve subtree;
+
+  // factorisation.solve(b), with the triangular solves on all threads (bitwise the same x on any
+  // number of them; subtree_solve.hpp): the flow's share of a run halves with the mechanics'.
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) {
+    Eigen::VectorXd x(b.size());
+    subtree.solve(factorisation.factor(), b.data(), x.data());
+    return x;
+  }
+
+  // Ordering and symbolic analysis on `matrix`'s pattern (once).
+  void analyse(Factorisation& f) const {
+    cholmod_common& c = f.cholmod();
+    c.print = 0;  // trouble is reported through info() and the summary's message, not printed
+    c.nmethods = 1;
+    c.method[0].ordering = CHOLMOD_NESDIS;
+    c.postorder = 1;
+    f.analyzePattern(matrix);
+    if (c.status < CHOLMOD_OK)  // out of memory: nothing to factorise later
+      throw std::runtime_error("flow matrix: cholmod_analyze failed (status " + std::to_string(c.status) + ")");
+  }
+  // Numeric factorisation with `values` (same pattern); an empty string on success.
+  std::string factorise(Factorisation& f, Matrix& a, const Eigen::VectorXd& values) const {
+    std::copy(values.data(), values.data() + values.size(), a.valuePtr());
+    f.factorize(a);
+    if (f.info() != Eigen::Success) return "flow matrix factorisation failed (not positive definite?)";
+    return {};
+  }
+};
+
+FlowNetwork::FlowNetwork(const Lattice& lattice, const DualGraph& dual, const FlowParameters& parameters)
+    : parameters_(parameters) {
+  parameters_.validate();
+  n_triangles_ = lattice.n_triangles();
+  const int n_beams = lattice.n_beams();
+  assert(dual.triangle_area.size() == n_triangles_ && dual.conductance.size() == n_beams &&
+         "dual graph of another lattice");
+  broken_.assign(static_cast<std::size_t>(n_beams), false);
+
+  // Wall beams, with their particles in the counter-clockwise order of their triangle (the hole on
+  // the right), which makes the shoelace of the reversed edges the hole's area.
+  for (int s = 0; s < n_triangles_; ++s)
+    for (int k = 0; k < 3; ++k) {
+      const int e = lattice.triangle_beams[static_cast<std::size_t>(s)][static_cast<std::size_t>(k)];
+      if (lattice.is_boundary_beam(e) && lattice.beam_boundary[static_cast<std::size_t>(e)] == BoundaryTag::inner) {
+        const auto& tri = lattice.triangles[static_cast<std::size_t>(s)];
+        wall_beams_.push_back({tri[static_cast<std::size_t>((k + 1) % 3)], tri[static_cast<std::size_t>((k + 2) % 3)]});
+      }
+    }
+  has_borehole_ = !wall_beams_.empty();
+  const int h = has_borehole_ ? n_triangles_ : -1;
+
+  connections_.resize(static_cast<std::size_t>(n_beams));
+  for (int e = 0; e < n_beams; ++e) {
+    const auto [s, t] = lattice.beam_triangles[static_cast<std::size_t>(e)];
+    Connection& c = connections_[static_cast<std::size_t>(e)];
+    c.s = s;
+    c.t = t >= 0 ? t : (lattice.beam_boundary[static_cast<std::size_t>(e)] == BoundaryTag::inner ? h : -1);
+  }
+
+  if (!has_borehole_) {
+    // The triangle that holds the source point: the one in which its smallest barycentric coordinate
+    // is largest, so a point on an edge or vertex picks one triangle deterministically.
+    const Eigen::Vector2d x0(parameters_.source_x, parameters_.source_y);
+    double best = -std::numeric_limits<double>::infinity();
+    for (int s = 0; s < n_triangles_; ++s) {
+      const auto& tri = lattice.triangles[static_cast<std::size_t>(s)];
+      const Eigen::Vector2d a = lattice.points.col(tri[0]), b = lattice.points.col(tri[1]), c = lattice.points.col(tri[2]);
+      auto cross = [](const Eigen::Vector2d& u, const Eigen::Vector2d& v) { return u.x() * v.y() - u.y() * v.x(); };
+      const double twice_area = cross(b - a, c - a);
+      const double lambda = std::min({cross(b - x0, c - x0), cross(c - x0, a - x0), cross(a - x0, b - x0)}) / twice_area;
+      if (lambda > best) {
+        best = lambda;
+        source_triangle_ = s;
+      }
+    }
+    // Relative round-off of the barycentric coordinates; anything more negative is outside.
+    if (best < -1e-12)
+      throw InputError("source_x, source_y = " + format_value(x0.x()) + ", " + format_value(x0.y()) +
+                       ", allowed: a point inside the lattice");
+  }
+
+  // Sparsity pattern: diagonal plus one symmetric pair per triangle-triangle or triangle-borehole
+  // connection. Fixed for the life of the network.
+  const int n = n_unknowns();
+  solver_ = std::make_unique<Solver>();
+  std::vector<Eigen::Triplet<double>> pattern;
+  pattern.reserve(static_cast<std::size_t>(n + 2 * n_beams));
+  for (int k = 0; k < n; ++k) pattern.emplace_back(k, k, 1.0);
+  for (const Connection& c : connections_)
+    if (c.t >= 0) {
+      pattern.emplace_back(c.s, c.t, 1.0);
+      pattern.emplace_back(c.t, c.s, 1.0);
+    }
+  Solver::Matrix& a = solver_->matrix;
+  a.resize(n, n);
+  a.setFromTriplets(pattern.begin(), pattern.end());
+  a.makeCompressed();
+  auto slot = [&a](int row, int col) { return static_cast<int>(&a.coeffRef(row, col) - a.valuePtr()); };
+  solver_->diagonal_slot.resize(static_cast<std::size_t>(n));
+  for (int k = 0; k < n; ++k) solver_->diagonal_slot[static_cast<std::size_t>(k)] = slot(k, k);
+  solver_->connection_slot.resize(connections_.size());
+  for (std::size_t e = 0; e < connections_.size(); ++e) {
+    const Connection& c = connections_[e];
+    solver_->connection_slot[e] = c.t >= 0 ? std::array<int, 4>{slot(c.s, c.s), slot(c.t, c.t), slot(c.s, c.t), slot(c.t, c.s)}
+                                           : std::array<int, 4>{slot(c.s, c.s), -1, -1, -1};
+  }
+  solver_->analyse(solver_->factorisation);
+
+  update_geometry(dual, lattice.points);
+  pressure_ = Eigen::VectorXd::Zero(n);
+  trial_pressure_ = pressure_;
+}
+
+FlowNetwork::~FlowNetwork() = default;
+FlowNetwork::FlowNetwork(FlowNetwork&&) noexcept = default;
+FlowNetwork& FlowNetwork::operator=(FlowNetwork&&) noexcept = default;
+
+void FlowNetwork::update_geometry(const DualGraph& dual, const Eigen::Matrix2Xd& positions) {
+  assert(dual.triangle_area.size() == n_triangles_ && "dual graph of another lattice");
+  assert(dual.conductance.size() == static_cast<Eigen::Index>(connections_.size()) && "dual graph of another lattice");
+  assert(std::all_of(wall_beams_.begin(), wall_beams_.end(),
+                     [&](const auto& w) { return std::max(w[0], w[1]) < positions.cols(); }) &&
+         "one position per particle");
+  triangle_area_ = dual.triangle_area;
+  base_conductance_ = dual.conductance;
+  borehole_volume_ = 0.0;
+  for (const auto& [i, j] : wall_beams_)
+    borehole_volume_ += 0.5 * (positions(0, j) * positions(1, i) - positions(1, j) * positions(0, i));
+  factor_stale_ = true;
+}
+
+void FlowNetwork::set_broken(const std::vector<bool>& broken) {
+  assert(broken.size() == connections_.size() && "one flag per beam");
+  if (broken == broken_) return;
+  broken_ = broken;
+  factor_stale_ = true;
+}
+
+void FlowNetwork::set_pressure(const Eigen::VectorXd& pressure) {
+  assert(pressure.size() == n_unknowns() && "one pressure per unknown");
+  pressure_ = pressure;
+  has_trial_ = false;
+}
+
+double FlowNetwork::conductance(int beam) const {
+  const double c = base_conductance_[beam];
+  return broken_[static_cast<std::size_t>(beam)] ? parameters_.iota * c : c;
+}
+
+void FlowNetwork::assemble_values(double dt, double storage_scale, Eigen::VectorXd& values) const {
+  values = Eigen::VectorXd::Zero(solver_->matrix.nonZeros());
+  for (int s = 0; s < n_triangles_; ++s)
+    values[solver_->diagonal_slot[static_cast<std::size_t>(s)]] = storage_scale * parameters_.E_over_M * triangle_area_[s];
+  if (has_borehole_ && parameters_.borehole_storage == BoreholeStorage::biot_modulus)
+    values[solver_->diagonal_slot[static_cast<std::size_t>(n_triangles_)]] =
+        storage_scale * parameters_.E_over_M * borehole_volume_;
+  for (std::size_t e = 0; e < connections_.size(); ++e) {
+    const double g = dt * conductance(static_cast<int>(e));
+    const auto& slot = solver_->connection_slot[e];
+    values[slot[0]] += g;
+    if (slot[1] >= 0) {
+      values[slot[1]] += g;
+      values[slot[2]] -= g;
+      values[slot[3]] -= g;
+    }
+  }
+}
+
+std::string FlowNetwork::factorise(double dt) {
+  Eigen::VectorXd values;
+  assemble_values(dt, 1.0, values);
+  const std::string error = solver_->factorise(solver_->factorisation, solver_->matrix, values);
+  factorised_dt_ = error.empty() ? dt : -1.0;
+  factor_stale_ = false;
+  refresh_factor_ = false;
+  return error;
+}
+
+std::string FlowNetwork::factorise_if_needed(double dt) {
+  if (factorised_dt_ == dt && (!factor_stale_ || (parameters_.reuse_factorisation && !refresh_factor_))) {
+    if (factor_stale_) {  // the current matrix for the refinement's residuals; the factor stays
+      Eigen::VectorXd values;
+      assemble_values(dt, 1.0, values);
+      std::copy(values.data(), values.data() + values.size(), solver_->matrix.valuePtr());
+    }
+    return {};
+  }
+  return factorise(dt);
+}
+
+FlowStepSummary FlowNetwork::solve(double dt, const Eigen::VectorXd& volume_change) {
+  if (!(dt > 0.0) || !std::isfinite(dt)) throw InputError("dt = " + format_value(dt) + ", allowed: > 0, finite");
+  assert((volume_change.size() == 0 || volume_change.size() == n_unknowns()) && "one volume change per unknown");
+  const int n = n_unknowns();
+  FlowStepSummary summary;
+  summary.time = totals_.time + dt;
+  summary.dt = dt;
+  summary.injected = parameters_.Q * dt;
+  has_trial_ = false;
+  const bool factor_current = factorised_dt_ == dt && !factor_stale_;  // reused as it is, no factorisation
+  summary.message = factorise_if_needed(dt);
+  if (!summary.message.empty()) return summary;
+
+  const bool borehole_stores = has_borehole_ && parameters_.borehole_storage == BoreholeStorage::biot_modulus;
+  Eigen::VectorXd storage_coefficient(n);
+  storage_coefficient.head(n_triangles_) = parameters_.E_over_M * triangle_area_;
+  if (has_borehole_) storage_coefficient[n_triangles_] = borehole_stores ? parameters_.E_over_M * borehole_volume_ : 0.0;
+
+  // The b (V^{n+1} - V^n) terms; the borehole's is dropped when it is a plain flux boundary.
+  Eigen::VectorXd deformation = volume_change.size() > 0 ? Eigen::VectorXd(parameters_.b * volume_change)
+                                                         : Eigen::VectorXd::Zero(n);
+  if (has_borehole_ && parameters_.borehole_deformation == BoreholeDeformation::none) deformation[n_triangles_] = 0.0;
+  Eigen::VectorXd rhs = storage_coefficient.cwiseProduct(pressure_) - deformation;
+  rhs[has_borehole_ ? n_triangles_ : source_triangle_] += summary.injected;
+
+  summary.factorised = !factor_current && !factor_stale_;
+  trial_pressure_ = solver_->solve(rhs);
+  if (factor_stale_) {
+    // Conjugate gradients on the current matrix, preconditioned by the last factor
+    // (reuse_factorisation). Measured on a fracturing annulus (N = 1e4): ~8 iterations per solve at
+    // tolerance 1e-10 (plain iterative refinement: ~12 and more fallbacks), which costs more than
+    // refactorising; hence off by default.
+    const double target = parameters_.refinement_tolerance * rhs.norm();
+    const auto& A = solver_->matrix;
+    Eigen::VectorXd residual = rhs - A * trial_pressure_;
+    Eigen::VectorXd z = solver_->solve(residual);
+    Eigen::VectorXd direction = z;
+    double rz = residual.dot(z);
+    while (residual.norm() > target && summary.refinements < parameters_.max_refinements) {
+      const Eigen::VectorXd Ad = A * direction;
+      const double alpha = rz / direction.dot(Ad);
+      trial_pressure_ += alpha * direction;
+      residual -= alpha * Ad;
+      ++summary.refinements;
+      z = solver_->solve(residual);
+      const double rz_next = residual.dot(z);
+      direction = z + (rz_next / rz) * direction;
+      rz = rz_next;
+    }
+    refresh_factor_ = summary.refinements > parameters_.refresh_after_refinements;
+    if (!(residual.norm() <= target)) {  // too far from the factor: a fresh one
+      summary.message = factorise(dt);
+      if (!summary.message.empty()) return summary;
+      summary.factorised = true;
+      trial_pressure_ = solver_->solve(rhs);
+    }
+  }
+  if (solver_->factorisation.info() != Eigen::Success || !trial_pressure_.allFinite()) {
+    summary.message = "flow solve failed";
+    return summary;
+  }
+
+  summary.storage = storage_coefficient.dot(trial_pressure_ - pressure_);
+  summary.deformation = deformation.sum();
+  summary.outflow = dt * outflow_rate(trial_pressure_);
+  summary.balance_error = relative_imbalance(summary.injected, summary.storage, summary.deformation, summary.outflow);
+  summary.solved = true;
+  trial_summary_ = summary;
+  has_trial_ = true;
+  return summary;
+}
+
+void FlowNetwork::accept() {
+  assert(has_trial_ && "accept() needs a successful solve()");
+  pressure_ = trial_pressure_;
+  totals_.time = trial_summary_.time;
+  totals_.injected += trial_summary_.injected;
+  totals_.storage += trial_summary_.storage;
+  totals_.deformation += trial_summary_.deformation;
+  totals_.outflow += trial_summary_.outflow;
+  ++totals_.n_steps;
+  has_trial_ = false;
+}
+
+FlowStepSummary FlowNetwork::step(const Eigen::VectorXd& volume_change) {
+  return step(parameters_.time_step, volume_change);
+}
+
+FlowStepSummary FlowNetwork::step(double dt, const Eigen::VectorXd& volume_change) {
+  FlowStepSummary summary = solve(dt, volume_change);
+  if (summary.is_ok()) accept();
+  return summary;
+}
+
+FlowSteadyState FlowNetwork::solve_steady_state() const {
+  FlowSteadyState steady;
+  steady.injected_rate = parameters_.Q;
+  Solver::Matrix a = solver_->matrix;
+  Solver::Factorisation f;
+  solver_->analyse(f);
+  Eigen::VectorXd values;
+  assemble_values(1.0, 0.0, values);
+  steady.message = solver_->factorise(f, a, values);
+  if (!steady.message.empty()) return steady;
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n_unknowns());
+  rhs[has_borehole_ ? n_triangles_ : source_triangle_] = parameters_.Q;
+  steady.pressure = f.solve(rhs);
+  if (f.info() != Eigen::Success || !steady.pressure.allFinite()) {
+    steady.message = "steady flow solve failed";
+    return steady;
+  }
+  steady.outflow_rate = outflow_rate(steady.pressure);
+  steady.balance_error = relative_imbalance(steady.injected_rate, 0.0, 0.0, steady.outflow_rate);
+  steady.solved = true;
+  return steady;
+}
+
+Eigen::VectorXd FlowNetwork::beam_flow_rate(const Eigen::VectorXd& pressure) const {
+  assert(pressure.size() == n_unknowns() && "one pressure per unknown");
+  Eigen::VectorXd rate(static_cast<Eigen::Index>(connections_.size()));
+  for (std::size_t e = 0; e < connections_.size(); ++e) {
+    const Connection& c = connections_[e];
+    const double p_other = c.t >= 0 ? pressure[c.t] : 0.0;
+    rate[static_cast<Eigen::Index>(e)] = conductance(static_cast<int>(e)) * (pressure[c.s] - p_other);
+  }
+  return rate;
+}
+
+Eigen::VectorXd FlowNetwork::net_inflow_rate(const Eigen::VectorXd& pressure) const {
+  const Eigen::VectorXd rate = beam_flow_rate(pressure);
+  Eigen::VectorXd inflow = Eigen::VectorXd::Zero(n_unknowns());
+  for (std::size_t e = 0; e < connections_.size(); ++e) {
+    const Connection& c = connections_[e];
+    inflow[c.s] -= rate[static_cast<Eigen::Index>(e)];
+    if (c.t >= 0) inflow[c.t] += rate[static_cast<Eigen::Index>(e)];
+  }
+  return inflow;
+}
+
+double FlowNetwork::outflow_rate(const Eigen::VectorXd& pressure) const {
+  assert(pressure.size() == n_unknowns() && "one pressure per unknown");
+  double rate = 0.0;
+  for (std::size_t e = 0; e < connections_.size(); ++e)
+    if (connections_[e].t < 0) rate += conductance(static_cast<int>(e)) * pressure[connections_[e].s];
+  return rate;
+}
+
+}  // namespace hm::lattice2d

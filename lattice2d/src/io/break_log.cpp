@@ -1,0 +1,83 @@
+#include "hm/lattice2d/io/break_log.hpp"
+
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "hm/core/csv_writer.hpp"
+#include "hm/core/file_output.hpp"
+
+namespace hm::lattice2d {
+
+using core::csv_number;
+
+void write_break_log(const std::filesystem::path& path, const std::vector<BreakEvent>& events,
+                     const std::string& load_column) {
+  core::write_file_atomically(path, [&](std::ostream& out) {
+    out << "sequence,beam,particle_i,particle_j,x,y," << load_column
+        << ",sigma_1,sigma_3,ratio,crack_tip_factor,mode\n";
+    for (const BreakEvent& ev : events)
+      out << ev.sequence << ',' << ev.beam << ',' << ev.particle_i << ',' << ev.particle_j << ','
+          << csv_number(ev.position.x()) << ',' << csv_number(ev.position.y()) << ',' << csv_number(ev.load) << ','
+          << csv_number(ev.sigma_1) << ',' << csv_number(ev.sigma_3) << ',' << csv_number(ev.ratio) << ','
+          << csv_number(ev.crack_tip_factor) << ',' << to_string(ev.mode) << '\n';
+  });
+}
+
+std::vector<BreakEvent> read_break_log(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read the break log " + path.string());
+  int line_no = 1;
+  const auto fail = [&](const std::string& what) {
+    throw std::runtime_error(path.string() + ":" + std::to_string(line_no) + ": " + what);
+  };
+  std::string line;
+  std::getline(in, line);
+  const std::string before = "sequence,beam,particle_i,particle_j,x,y,";
+  const std::string after = ",sigma_1,sigma_3,ratio,crack_tip_factor,mode";
+  if (line.rfind(before, 0) != 0 || line.size() < before.size() + after.size() ||
+      line.compare(line.size() - after.size(), after.size(), after) != 0)
+    fail("header '" + line + "', expected '" + before + "<load>" + after + "'");
+  std::vector<BreakEvent> events;
+  while (std::getline(in, line)) {
+    ++line_no;
+    if (line.empty()) continue;
+    std::vector<std::string> cells;
+    std::stringstream row(line);
+    for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
+    if (cells.size() != 12) fail(std::to_string(cells.size()) + " columns, expected 12");
+    BreakEvent ev;
+    try {
+      std::size_t used = 0;
+      const auto integer = [&](const std::string& c) {
+        const int v = std::stoi(c, &used);
+        if (used != c.size()) throw std::invalid_argument(c);
+        return v;
+      };
+      const auto real = [&](const std::string& c) {
+        const double v = std::stod(c, &used);
+        if (used != c.size()) throw std::invalid_argument(c);
+        return v;
+      };
+      ev.sequence = integer(cells[0]);
+      ev.beam = integer(cells[1]);
+      ev.particle_i = integer(cells[2]);
+      ev.particle_j = integer(cells[3]);
+      ev.position = Eigen::Vector2d(real(cells[4]), real(cells[5]));
+      ev.load = real(cells[6]);
+      ev.sigma_1 = real(cells[7]);
+      ev.sigma_3 = real(cells[8]);
+      ev.ratio = real(cells[9]);
+      ev.crack_tip_factor = real(cells[10]);
+    } catch (const std::logic_error&) {  // std::invalid_argument and std::out_of_range
+      fail("not a number in '" + line + "'");
+    }
+    if (cells[11] == to_string(FailureMode::tensile)) ev.mode = FailureMode::tensile;
+    else if (cells[11] == to_string(FailureMode::shear)) ev.mode = FailureMode::shear;
+    else fail("mode '" + cells[11] + "', allowed: tensile, shear");
+    events.push_back(ev);
+  }
+  return events;
+}
+
+}  // namespace hm::lattice2d

@@ -1,0 +1,537 @@
+#include "hm/lattice2d/linalg/spd_solver.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cassert>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+#include <Eigen/IterativeLinearSolvers>
+#include <cholmod.h>
+
+#include "hm/core/input_error.hpp"
+#include "hm/analytic/validation.hpp"
+#include "linalg/subtree_solve.hpp"
+
+namespace hm::lattice2d {
+
+std::string to_string(SpdSolverKind kind) { return kind == SpdSolverKind::cholmod ? "cholmod" : "pcg"; }
+
+SpdSolverKind spd_solver_kind_from_string(std::string_view name) {
+  if (name == "cholmod") return SpdSolverKind::cholmod;
+  if (name == "pcg") return SpdSolverKind::pcg;
+  throw hm::InputError("solver = '" + std::string(name) + "', allowed: cholmod, pcg");
+}
+
+void SpdSolverOptions::validate() const {
+  using namespace hm::analytic;
+  require_at_least(max_modifications, "solver_options.max_modifications", 1);
+  require_open(residual_tolerance, "solver_options.residual_tolerance", 0.0, 1.0);
+  require_half_open(pivot_tolerance, "solver_options.pivot_tolerance", 0.0, 1.0);
+  require_open(cg_tolerance, "solver_options.cg_tolerance", 0.0, 1.0);
+  require_at_least(cg_max_iterations, "solver_options.cg_max_iterations", 0);
+}
+
+// ------------------------------------------------------------------------------------------------
+// SpdSolver
+
+void SpdSolver::add_low_rank(const Matrix& W, int sigma) {
+  assert(W.rows() == matrix_.rows() && "modify: W must have as many rows as A");
+  assert((sigma == 1 || sigma == -1) && "modify: sigma must be +1 or -1");
+  for (int c = 0; c < W.outerSize(); ++c)
+    for (Matrix::InnerIterator p(W, c); p; ++p)
+      for (Matrix::InnerIterator q(W, c); q; ++q)
+        matrix_.coeffRef(p.row(), q.row()) += sigma * p.value() * q.value();
+  if (!matrix_.isCompressed()) matrix_.makeCompressed();
+}
+
+double SpdSolver::relative_residual(const Eigen::VectorXd& x, const Eigen::VectorXd& b) const {
+  // A is symmetric with both triangles stored: entry k of A x is column k's dot product with x, a
+  // gather with rows independent. A fixed number of row chunks (summed in order) run on the threads
+  // for a large A: the same bits on any number of threads.
+  assert(matrix_.isCompressed());
+  constexpr int kChunks = SubtreeSolve::kGroups;
+  const auto n = static_cast<int>(matrix_.cols());
+  const int* outer = matrix_.outerIndexPtr();
+  const int* inner = matrix_.innerIndexPtr();
+  const double* value = matrix_.valuePtr();
+  std::array<double, kChunks> r2{};
+#pragma omp parallel for schedule(static) if (matrix_.nonZeros() >= SubtreeSolve::kParallelNonzeros)
+  for (int chunk = 0; chunk < kChunks; ++chunk) {
+    double sum = 0.0;
+    for (int k = chunk * n / kChunks; k < (chunk + 1) * n / kChunks; ++k) {
+      double ax = 0.0;
+      for (int q = outer[k]; q < outer[k + 1]; ++q) ax += value[q] * x[inner[q]];
+      sum += (ax - b[k]) * (ax - b[k]);
+    }
+    r2[static_cast<std::size_t>(chunk)] = sum;
+  }
+  double total = 0.0;
+  for (double part : r2) total += part;
+  const double r = std::sqrt(total), nb = b.norm();
+  return nb > 0.0 ? r / nb : r;
+}
+
+// ------------------------------------------------------------------------------------------------
+// CholmodSolver
+
+namespace {
+
+// RAII owners of CHOLMOD objects; each needs the solver's cholmod_common to be freed.
+struct SparseDeleter {
+  cholmod_common* common;
+  void operator()(cholmod_sparse* a) const { cholmod_free_sparse(&a, common); }
+};
+struct FactorDeleter {
+  cholmod_common* common;
+  void operator()(cholmod_factor* f) const { cholmod_free_factor(&f, common); }
+};
+struct DenseDeleter {
+  cholmod_common* common;
+  void operator()(cholmod_dense* d) const { cholmod_free_dense(&d, common); }
+};
+using SparsePtr = std::unique_ptr<cholmod_sparse, SparseDeleter>;
+using FactorPtr = std::unique_ptr<cholmod_factor, FactorDeleter>;
+using DensePtr = std::unique_ptr<cholmod_dense, DenseDeleter>;
+
+}  // namespace
+
+struct CholmodSolver::Impl {
+  // The common is declared first so it outlives (is destroyed after) the objects that use it.
+  struct Common {
+    cholmod_common c;
+    Common() {
+      cholmod_start(&c);
+      c.print = 0;  // trouble is reported through info(), not printed to stderr
+    }
+    ~Common() { cholmod_finish(&c); }
+    Common(const Common&) = delete;
+    Common& operator=(const Common&) = delete;
+  } common;
+  FactorPtr symbolic{nullptr, FactorDeleter{&common.c}};  // from cholmod_analyze, never numeric
+  FactorPtr factor{nullptr, FactorDeleter{&common.c}};    // simplicial LDL' (after conversion)
+  std::vector<int> inverse_permutation;                    // row r of A is row pinv[r] of L
+  double lnz = 0.0;
+  bool factor_ok = false;  // the factor is numerically usable (last factorise/modify succeeded)
+  // Forward solution y = L^-1 P b of `forward_b`, kept current through modifications.
+  DensePtr forward{nullptr, DenseDeleter{&common.c}};
+  DensePtr zero_delta{nullptr, DenseDeleter{&common.c}};  // DeltaB = 0 for cholmod_updown_solve
+  Eigen::VectorXd forward_b;
+  SubtreeSolve subtree;          // multithreaded triangular solves (options.parallel_triangular_solve)
+  bool subtree_current = false;  // subtree's partition checked against the current factor
+  Eigen::VectorXd work;          // backward solve in the factor's order
+
+  cholmod_common* c() { return &common.c; }
+
+  // Lower triangle of the (symmetric, both triangles) Eigen matrix as a CHOLMOD stype = -1 matrix.
+  SparsePtr to_cholmod_lower(const Matrix& A) {
+    const int n = static_cast<int>(A.rows());
+    std::size_t nnz = 0;
+    for (int j = 0; j < n; ++j)
+      for (Matrix::InnerIterator it(A, j); it; ++it)
+        if (it.row() >= j) ++nnz;
+    SparsePtr S(cholmod_allocate_sparse(n, n, nnz, 1, 1, -1, CHOLMOD_REAL, c()), SparseDeleter{c()});
+    if (!S) return S;
+    auto* p = static_cast<int*>(S->p);
+    auto* i = static_cast<int*>(S->i);
+    auto* x = static_cast<double*>(S->x);
+    int k = 0;
+    for (int j = 0; j < n; ++j) {
+      p[j] = k;
+      for (Matrix::InnerIterator it(A, j); it; ++it)
+        if (it.row() >= j) {
+          i[k] = static_cast<int>(it.row());
+          x[k] = it.value();
+          ++k;
+        }
+    }
+    p[n] = k;
+    return S;
+  }
+};
+
+CholmodSolver::CholmodSolver(const SpdSolverOptions& options) : impl_(std::make_unique<Impl>()), options_(options) {
+  options_.validate();
+}
+
+namespace {
+
+/// A fresh report for a new matrix that keeps the solver's lifetime counters: a caller that counts
+/// factorisations over a run (CoupledStepSummary) must not see them restart when the matrix is rebuilt.
+SpdSolveReport report_keeping_totals(const SpdSolveReport& old) {
+  SpdSolveReport r;
+  r.n_factorizations = old.n_factorizations;
+  r.n_update_failures = old.n_update_failures;
+  r.last_update_failure = old.last_update_failure;
+  return r;
+}
+
+}  // namespace
+
+CholmodSolver::~CholmodSolver() = default;
+
+void CholmodSolver::compute(const Matrix& A) {
+  assert(A.rows() == A.cols() && "compute: A must be square");
+  matrix_ = A;
+  matrix_.makeCompressed();
+  report_ = report_keeping_totals(report_);
+  cholmod_common* c = impl_->c();
+  c->final_ll = 0;
+  c->supernodal = options_.supernodal_factorization ? CHOLMOD_SUPERNODAL : CHOLMOD_SIMPLICIAL;
+  c->postorder = 1;
+  switch (options_.ordering) {
+    case CholmodOrdering::nested_dissection:
+      c->nmethods = 1;
+      c->method[0].ordering = CHOLMOD_NESDIS;
+      break;
+    case CholmodOrdering::metis:
+      c->nmethods = 1;
+      c->method[0].ordering = CHOLMOD_METIS;
+      break;
+    case CholmodOrdering::amd:
+      c->nmethods = 1;
+      c->method[0].ordering = CHOLMOD_AMD;
+      break;
+    case CholmodOrdering::automatic:
+      c->nmethods = 0;
+      break;
+  }
+  impl_->factor.reset();
+  impl_->symbolic.reset();
+  SparsePtr S = impl_->to_cholmod_lower(matrix_);
+  if (S) impl_->symbolic.reset(cholmod_analyze(S.get(), c));
+  if (!impl_->symbolic) {
+    report_.info = Eigen::NumericalIssue;
+    report_.message = "cholmod_analyze failed (status " + std::to_string(c->status) + ")";
+    return;
+  }
+  impl_->lnz = c->lnz;
+  const int n = static_cast<int>(matrix_.rows());
+  const auto* perm = static_cast<const int*>(impl_->symbolic->Perm);
+  impl_->inverse_permutation.assign(static_cast<std::size_t>(n), 0);
+  for (int k = 0; k < n; ++k) impl_->inverse_permutation[static_cast<std::size_t>(perm[k])] = k;
+  refactorize();
+}
+
+void CholmodSolver::refactorize() {
+  cholmod_common* c = impl_->c();
+  report_.n_modifications = 0;
+  if (!impl_->symbolic) {
+    report_.info = Eigen::InvalidInput;
+    report_.message = "refactorize before compute";
+    return;
+  }
+  impl_->factor_ok = false;
+  impl_->subtree_current = false;
+  impl_->forward.reset();
+  impl_->factor.reset(cholmod_copy_factor(impl_->symbolic.get(), c));
+  SparsePtr S = impl_->to_cholmod_lower(matrix_);
+  bool ok = impl_->factor && S && cholmod_factorize(S.get(), impl_->factor.get(), c);
+  ++report_.n_factorizations;
+  if (!ok || c->status == CHOLMOD_NOT_POSDEF) {
+    report_.info = Eigen::NumericalIssue;
+    report_.message = "cholmod_factorize: matrix not positive definite at column " +
+                      std::to_string(impl_->factor ? static_cast<long>(impl_->factor->minor) : -1L);
+    return;
+  }
+  // cholmod_updown needs a simplicial LDL' factor: convert a supernodal LL' one once here.
+  if (!cholmod_change_factor(CHOLMOD_REAL, 0, 0, 1, 1, impl_->factor.get(), c)) {
+    report_.info = Eigen::NumericalIssue;
+    report_.message = "cholmod_change_factor to simplicial LDL' failed";
+    return;
+  }
+  report_.info = Eigen::Success;
+  report_.message.clear();
+  // A zero or negative pivot slips through an LDL' factorisation; check D explicitly.
+  const auto* Lp = static_cast<const int*>(impl_->factor->p);
+  const auto* Lx = static_cast<const double*>(impl_->factor->x);
+  double d_min = INFINITY, d_max = 0.0;
+  for (std::size_t j = 0; j < impl_->factor->n; ++j) {
+    d_min = std::min(d_min, Lx[Lp[j]]);
+    d_max = std::max(d_max, Lx[Lp[j]]);
+  }
+  if (!(d_min > options_.pivot_tolerance * d_max)) {
+    report_.info = Eigen::NumericalIssue;
+    report_.message = "LDL' pivot " + hm::analytic::format_value(d_min) + " <= pivot_tolerance * max pivot " +
+                      hm::analytic::format_value(d_max) + ": matrix singular or indefinite";
+  }
+  impl_->factor_ok = report_.info == Eigen::Success;
+}
+
+void CholmodSolver::modify(const Matrix& W, int sigma) {
+  add_low_rank(W, sigma);
+  if (!impl_->factor) {
+    report_.info = Eigen::InvalidInput;
+    report_.message = "modify before compute";
+    return;
+  }
+  if (++report_.n_modifications >= options_.max_modifications) {
+    refactorize();
+    return;
+  }
+  cholmod_common* c = impl_->c();
+  const int n = static_cast<int>(W.rows()), k = static_cast<int>(W.cols());
+  // C = P W: row r of W goes to row pinv[r] (cholmod_updown works on the permuted factor), columns
+  // sorted by row as CHOLMOD requires.
+  std::vector<std::pair<int, double>> column;
+  SparsePtr C(cholmod_allocate_sparse(n, k, W.nonZeros(), 1, 1, 0, CHOLMOD_REAL, c), SparseDeleter{c});
+  if (!C) {
+    report_.info = Eigen::NumericalIssue;
+    report_.message = "cholmod_allocate_sparse failed";
+    return;
+  }
+  auto* p = static_cast<int*>(C->p);
+  auto* i = static_cast<int*>(C->i);
+  auto* x = static_cast<double*>(C->x);
+  int nz = 0;
+  for (int j = 0; j < k; ++j) {
+    p[j] = nz;
+    column.clear();
+    for (Matrix::InnerIterator it(W, j); it; ++it)
+      column.emplace_back(impl_->inverse_permutation[static_cast<std::size_t>(it.row())], it.value());
+    std::sort(column.begin(), column.end());
+    for (const auto& [row, value] : column) {
+      i[nz] = row;
+      x[nz] = value;
+      ++nz;
+    }
+  }
+  p[k] = nz;
+  impl_->factor_ok = false;
+  impl_->subtree_current = false;
+  bool ok;
+  if (impl_->forward) {
+    // DeltaB must have the factor's size: a compute() on a matrix of another size (the mechanics
+    // holds a rotation) left the old one, and every update then failed with CHOLMOD_INVALID.
+    if (!impl_->zero_delta || impl_->zero_delta->nrow != static_cast<std::size_t>(n))
+      impl_->zero_delta.reset(cholmod_zeros(static_cast<std::size_t>(n), 1, CHOLMOD_REAL, c));
+    ok = impl_->zero_delta && cholmod_updown_solve(sigma > 0 ? 1 : 0, C.get(), impl_->factor.get(), impl_->forward.get(),
+                                                   impl_->zero_delta.get(), c);
+  } else {
+    ok = cholmod_updown(sigma > 0 ? 1 : 0, C.get(), impl_->factor.get(), c);
+  }
+  if (!ok) {
+    // Out of memory while a column of L grows (W outside A's pattern), or a bad argument: A itself
+    // is current (add_low_rank above), so rebuild the factor from it.
+    report_.last_update_failure = "cholmod_updown" + std::string(impl_->forward ? "_solve" : "") + " status " +
+                                  std::to_string(c->status) + ", rank " + std::to_string(k) + ", sigma " +
+                                  std::to_string(sigma) + ", after " + std::to_string(report_.n_modifications - 1) +
+                                  " modifications";
+    impl_->forward.reset();
+    ++report_.n_update_failures;
+    refactorize();
+    return;
+  }
+  // A downdate that makes A singular leaves a zero or negative pivot in D, without an error.
+  // Only the pivots on the modified path change, but an O(n) scan is cheap against a solve.
+  const auto* Lp = static_cast<const int*>(impl_->factor->p);
+  const auto* Lx = static_cast<const double*>(impl_->factor->x);
+  double d_min = INFINITY, d_max = 0.0;
+  for (int j = 0; j < n; ++j) {
+    d_min = std::min(d_min, Lx[Lp[j]]);
+    d_max = std::max(d_max, Lx[Lp[j]]);
+  }
+  if (!(d_min > options_.pivot_tolerance * d_max)) {
+    report_.info = Eigen::NumericalIssue;
+    report_.message = "LDL' pivot " + hm::analytic::format_value(d_min) +
+                      " after a low-rank modification: matrix singular or indefinite";
+  } else {
+    report_.info = Eigen::Success;
+    report_.message.clear();
+  }
+  impl_->factor_ok = report_.info == Eigen::Success;
+}
+
+Eigen::VectorXd CholmodSolver::solve(const Eigen::VectorXd& b) {
+  assert(b.size() == matrix_.rows() && "solve: b has the wrong size");
+  report_.refactorized = false;
+  report_.iterations = 0;
+  if (!impl_->factor_ok) {
+    if (report_.info == Eigen::Success) report_.info = Eigen::InvalidInput;
+    if (report_.message.empty()) report_.message = "solve without a valid factor";
+    return Eigen::VectorXd::Constant(b.size(), NAN);
+  }
+  cholmod_common* c = impl_->c();
+  auto run = [&]() {
+    cholmod_dense B{};
+    B.nrow = B.d = static_cast<std::size_t>(b.size());
+    B.ncol = 1;
+    B.nzmax = B.nrow;
+    B.x = const_cast<double*>(b.data());  // CHOLMOD does not write B
+    B.xtype = CHOLMOD_REAL;
+    B.dtype = CHOLMOD_DOUBLE;
+    DensePtr X{nullptr, DenseDeleter{c}};
+    if (!options_.reuse_forward_solve) {
+      X.reset(cholmod_solve(CHOLMOD_A, impl_->factor.get(), &B, c));
+    } else if (options_.parallel_triangular_solve) {
+      return parallel_solve(b);
+    } else {
+      // x = P^T (D L^T)^-1 y with y = L^-1 P b, y kept for the next re-solve with the same b.
+      if (!impl_->forward || impl_->forward_b.size() != b.size() || impl_->forward_b != b) {
+        impl_->forward.reset();
+        DensePtr PB(cholmod_solve(CHOLMOD_P, impl_->factor.get(), &B, c), DenseDeleter{c});
+        if (PB) impl_->forward.reset(cholmod_solve(CHOLMOD_L, impl_->factor.get(), PB.get(), c));
+        impl_->forward_b = b;
+      }
+      if (impl_->forward) {
+        DensePtr Y(cholmod_solve(CHOLMOD_DLt, impl_->factor.get(), impl_->forward.get(), c), DenseDeleter{c});
+        if (Y) X.reset(cholmod_solve(CHOLMOD_Pt, impl_->factor.get(), Y.get(), c));
+      }
+    }
+    Eigen::VectorXd x = Eigen::VectorXd::Constant(b.size(), NAN);
+    if (X) x = Eigen::Map<const Eigen::VectorXd>(static_cast<const double*>(X->x), b.size());
+    return x;
+  };
+  Eigen::VectorXd x = run();
+  report_.info = Eigen::Success;
+  report_.message.clear();
+  report_.relative_residual = relative_residual(x, b);
+  if (!(report_.relative_residual <= options_.residual_tolerance)) {
+    // Round-off accumulated by many updates/downdates: rebuild the factor from A and try once more.
+    refactorize();
+    report_.refactorized = true;
+    if (report_.info == Eigen::Success) {
+      x = run();
+      report_.relative_residual = relative_residual(x, b);
+    }
+    if (report_.info == Eigen::Success && !(report_.relative_residual <= options_.residual_tolerance)) {
+      report_.info = Eigen::NumericalIssue;
+      report_.message = "relative residual " + hm::analytic::format_value(report_.relative_residual) +
+                        " > residual_tolerance after refactorisation (ill-conditioned matrix?)";
+    }
+  }
+  return x;
+}
+
+Eigen::VectorXd CholmodSolver::parallel_solve(const Eigen::VectorXd& b) {
+  // The same steps as CHOLMOD_P, _L, _DLt, _Pt, with SubtreeSolve's triangular solves.
+  const cholmod_factor& L = *impl_->factor;
+  const auto* perm = static_cast<const int*>(L.Perm);
+  const Eigen::Index n = b.size();
+  if (!impl_->subtree_current) {
+    impl_->subtree.update(L);
+    impl_->subtree_current = true;
+  }
+  if (!impl_->forward || impl_->forward_b.size() != n || impl_->forward_b != b) {
+    impl_->forward.reset(cholmod_allocate_dense(static_cast<std::size_t>(n), 1, static_cast<std::size_t>(n), CHOLMOD_REAL,
+                                                impl_->c()));
+    if (!impl_->forward) return Eigen::VectorXd::Constant(n, NAN);
+    auto* y = static_cast<double*>(impl_->forward->x);
+    for (Eigen::Index k = 0; k < n; ++k) y[k] = b[perm[k]];
+    impl_->subtree.forward(L, y);
+    impl_->forward_b = b;
+  }
+  impl_->work = Eigen::Map<const Eigen::VectorXd>(static_cast<const double*>(impl_->forward->x), n);
+  impl_->subtree.backward(L, impl_->work.data());
+  Eigen::VectorXd x(n);
+  for (Eigen::Index k = 0; k < n; ++k) x[perm[k]] = impl_->work[k];
+  return x;
+}
+
+std::string CholmodSolver::ordering_used() const {
+  if (!impl_->symbolic) return "none";
+  switch (impl_->symbolic->ordering) {
+    case CHOLMOD_NATURAL: return "natural";
+    case CHOLMOD_GIVEN: return "given";
+    case CHOLMOD_AMD: return "amd";
+    case CHOLMOD_METIS: return "metis";
+    case CHOLMOD_NESDIS: return "nesdis";
+    case CHOLMOD_COLAMD: return "colamd";
+    case CHOLMOD_POSTORDERED: return "postordered";
+    default: return "unknown";
+  }
+}
+
+double CholmodSolver::factor_nonzeros() const { return impl_->lnz; }
+
+// ------------------------------------------------------------------------------------------------
+// PcgSolver
+
+struct PcgSolver::Impl {
+  Eigen::ConjugateGradient<Matrix, Eigen::Lower | Eigen::Upper, Eigen::IncompleteCholesky<double>> ichol;
+  Eigen::ConjugateGradient<Matrix, Eigen::Lower | Eigen::Upper, Eigen::DiagonalPreconditioner<double>> jacobi;
+};
+
+PcgSolver::PcgSolver(const SpdSolverOptions& options) : impl_(std::make_unique<Impl>()), options_(options) {
+  options_.validate();
+}
+
+PcgSolver::~PcgSolver() = default;
+
+void PcgSolver::compute(const Matrix& A) {
+  matrix_ = A;
+  matrix_.makeCompressed();
+  report_ = report_keeping_totals(report_);
+  previous_.resize(0);
+  refactorize();
+}
+
+void PcgSolver::refactorize() {
+  report_.n_modifications = 0;
+  ++report_.n_factorizations;
+  Eigen::ComputationInfo info;
+  if (options_.preconditioner == PcgPreconditioner::incomplete_cholesky) {
+    impl_->ichol.compute(matrix_);
+    info = impl_->ichol.info();
+  } else {
+    impl_->jacobi.compute(matrix_);
+    info = impl_->jacobi.info();
+  }
+  report_.info = info;
+  report_.message = info == Eigen::Success ? "" : "preconditioner set-up failed";
+  stale_ = false;
+}
+
+void PcgSolver::modify(const Matrix& W, int sigma) {
+  add_low_rank(W, sigma);
+  ++report_.n_modifications;
+  stale_ = true;  // rebuilt at the next solve, so several modifications cost one set-up
+}
+
+Eigen::VectorXd PcgSolver::solve(const Eigen::VectorXd& b) {
+  assert(b.size() == matrix_.rows() && "solve: b has the wrong size");
+  report_.refactorized = false;
+  if (stale_) {
+    refactorize();
+    report_.refactorized = true;
+  }
+  if (report_.info != Eigen::Success && report_.info != Eigen::NoConvergence)
+    return Eigen::VectorXd::Constant(b.size(), NAN);
+  const Eigen::Index max_it = options_.cg_max_iterations > 0 ? options_.cg_max_iterations : matrix_.rows();
+  const bool warm = options_.warm_start && previous_.size() == b.size() && previous_.allFinite();
+  const Eigen::VectorXd guess = warm ? previous_ : Eigen::VectorXd::Zero(b.size());
+  Eigen::VectorXd x;
+  Eigen::ComputationInfo info;
+  if (options_.preconditioner == PcgPreconditioner::incomplete_cholesky) {
+    auto& cg = impl_->ichol;
+    cg.setTolerance(options_.cg_tolerance).setMaxIterations(max_it);
+    x = cg.solveWithGuess(b, guess);
+    info = cg.info();
+    report_.iterations = static_cast<int>(cg.iterations());
+  } else {
+    auto& cg = impl_->jacobi;
+    cg.setTolerance(options_.cg_tolerance).setMaxIterations(max_it);
+    x = cg.solveWithGuess(b, guess);
+    info = cg.info();
+    report_.iterations = static_cast<int>(cg.iterations());
+  }
+  report_.relative_residual = relative_residual(x, b);
+  report_.info = info;
+  report_.message = info == Eigen::Success
+                        ? ""
+                        : "CG stopped after " + std::to_string(report_.iterations) +
+                              " iterations at relative residual " +
+                              hm::analytic::format_value(report_.relative_residual);
+  if (info == Eigen::Success) previous_ = x;
+  return x;
+}
+
+// ------------------------------------------------------------------------------------------------
+
+std::unique_ptr<SpdSolver> make_spd_solver(SpdSolverKind kind, const SpdSolverOptions& options) {
+  if (kind == SpdSolverKind::pcg) return std::make_unique<PcgSolver>(options);
+  return std::make_unique<CholmodSolver>(options);
+}
+
+}  // namespace hm::lattice2d

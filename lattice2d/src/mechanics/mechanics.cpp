@@ -1,0 +1,600 @@
+#include "hm/lattice2d/mechanics/mechanics.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cassert>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/SparseCore>
+
+#include "hm/core/input_error.hpp"
+#include "hm/analytic/validation.hpp"
+
+namespace hm::lattice2d {
+
+std::string to_string(BoundarySupport support) { return support == BoundarySupport::free ? "free" : "fixed"; }
+
+BoundarySupport boundary_support_from_string(std::string_view name, std::string_view field) {
+  if (name == "free") return BoundarySupport::free;
+  if (name == "fixed") return BoundarySupport::fixed;
+  throw hm::InputError(std::string(field) + " = '" + std::string(name) + "', allowed: free, fixed");
+}
+
+void BoundaryConditions::validate(const Lattice& lattice) const {
+  using namespace hm::analytic;
+  const bool annulus = lattice.spec.domain == DomainShape::annulus;
+  require_finite(inner_pressure, "boundary_conditions.inner_pressure");
+  require_finite(outer_pressure, "boundary_conditions.outer_pressure");
+  if (!annulus && inner_pressure != 0.0)
+    throw hm::InputError("boundary_conditions.inner_pressure = " + format_value(inner_pressure) +
+                         ", allowed: 0 unless domain = annulus");
+  if (!annulus && inner == BoundarySupport::fixed)
+    throw hm::InputError("boundary_conditions.inner = 'fixed', allowed: free unless domain = annulus");
+  if (prescribe_boundary_strain) {
+    for (int a = 0; a < 2; ++a)
+      for (int b = 0; b < 2; ++b) require_finite(boundary_strain(a, b), "boundary_conditions.boundary_strain");
+    if (boundary_strain(0, 1) != boundary_strain(1, 0))
+      throw hm::InputError("boundary_conditions.boundary_strain(0,1) = " + format_value(boundary_strain(0, 1)) +
+                           ", allowed: equal to boundary_strain(1,0) = " + format_value(boundary_strain(1, 0)));
+    if (outer == BoundarySupport::fixed || inner == BoundarySupport::fixed)
+      throw hm::InputError("boundary_conditions.prescribe_boundary_strain = true, allowed: only with "
+                           "outer = inner = 'free'");
+  }
+  for (std::size_t k = 0; k < prescribed.size(); ++k) {
+    const std::string name = "boundary_conditions.prescribed[" + std::to_string(k) + "]";
+    const auto& p = prescribed[k];
+    if (p.particle < 0 || p.particle >= lattice.n_particles())
+      throw hm::InputError(name + ".particle = " + std::to_string(p.particle) + ", allowed: 0 <= particle < " +
+                           std::to_string(lattice.n_particles()));
+    if (p.component < 0 || p.component > 2)
+      throw hm::InputError(name + ".component = " + std::to_string(p.component) +
+                           ", allowed: 0 (x), 1 (y), 2 (rotation)");
+    require_finite(p.value, name + ".value");
+  }
+}
+
+void MechanicsOptions::validate() const {
+  using namespace hm::analytic;
+  require_at_least(max_contact_iterations, "mechanics_options.max_contact_iterations", 1);
+  require_half_open(contact_tolerance, "mechanics_options.contact_tolerance", 0.0, 1.0);
+  solver_options.validate();
+}
+
+namespace {
+
+std::array<int, 6> beam_dofs(const Lattice& lattice, int beam) {
+  const auto [i, j] = lattice.beams[static_cast<std::size_t>(beam)];
+  return {dof_index(i, 0), dof_index(i, 1), dof_index(i, 2), dof_index(j, 0), dof_index(j, 1), dof_index(j, 2)};
+}
+
+// Least-squares rigid motion (translation t at the centroid c, rotation w) of the particles'
+// displacements; returns (t_x, t_y, w, c_x, c_y). A single particle keeps its own rotation.
+Eigen::Matrix<double, 5, 1> rigid_fit(const Lattice& lattice, const Eigen::VectorXd& u, const std::vector<int>& particles) {
+  Eigen::Vector2d c = Eigen::Vector2d::Zero(), t = Eigen::Vector2d::Zero();
+  for (int p : particles) {
+    c += lattice.points.col(p);
+    t += Eigen::Vector2d(u[dof_index(p, 0)], u[dof_index(p, 1)]);
+  }
+  const double n = static_cast<double>(particles.size());
+  c /= n;
+  t /= n;
+  double cross = 0.0, r2 = 0.0, mean_rotation = 0.0;
+  for (int p : particles) {
+    const Eigen::Vector2d r = lattice.points.col(p) - c;
+    cross += r.x() * u[dof_index(p, 1)] - r.y() * u[dof_index(p, 0)];
+    r2 += r.squaredNorm();
+    mean_rotation += u[dof_index(p, 2)];
+  }
+  const double w = r2 > 0.0 ? cross / r2 : mean_rotation / n;
+  Eigen::Matrix<double, 5, 1> fit;
+  fit << t.x(), t.y(), w, c.x(), c.y();
+  return fit;
+}
+
+// Displacement of particle p under the rigid motion `fit`.
+Eigen::Vector3d rigid_motion(const Lattice& lattice, const Eigen::Matrix<double, 5, 1>& fit, int p) {
+  const Eigen::Vector2d r = lattice.points.col(p) - Eigen::Vector2d(fit[3], fit[4]);
+  return {fit[0] - fit[2] * r.y(), fit[1] + fit[2] * r.x(), fit[2]};
+}
+
+}  // namespace
+
+namespace {
+
+// Internal force K_e u_e of one beam in global components (x_i, y_i, w_i, x_j, y_j, w_j), evaluated in
+// the beam's local frame from n_ij (no 6 x 6 products, no trigonometry): the same numbers as
+// beam_element_stiffness(...) * u_e up to round-off, about ten times cheaper.
+// `p` is this beam's own parameters (beam_parameters_for: its k_n under stiffness_scaling).
+Eigen::Matrix<double, 6, 1> internal_force(const Lattice& l, const BeamParameters& p, BeamState state, int e,
+                                           const Eigen::VectorXd& u) {
+  Eigen::Matrix<double, 6, 1> f = Eigen::Matrix<double, 6, 1>::Zero();
+  if (state == BeamState::open) return f;
+  const auto [i, j] = l.beams[static_cast<std::size_t>(e)];
+  const double c = l.direction(0, e), s = l.direction(1, e), L = l.length[e];
+  const double uxi = u[dof_index(i, 0)], uyi = u[dof_index(i, 1)], uxj = u[dof_index(j, 0)], uyj = u[dof_index(j, 1)];
+  const double elongation = c * (uxj - uxi) + s * (uyj - uyi);
+  double fn = -p.normal_stiffness * elongation;  // local n-component on i; -fn on j
+  double fs = 0.0, mi = 0.0, mj = 0.0;            // local s-component on i (-fs on j), moments
+  if (state == BeamState::intact) {
+    const double phi = (-s * (uxj - uxi) + c * (uyj - uyi)) / L;  // chord rotation
+    const double ti = u[dof_index(i, 2)] - phi, tj = u[dof_index(j, 2)] - phi;
+    const double k = 2.0 * p.rotational_stiffness() * L * L, g = p.gamma();
+    mi = k * ((g + 1.0 / 3.0) * ti + (1.0 / 6.0 - g) * tj);
+    mj = k * ((1.0 / 6.0 - g) * ti + (g + 1.0 / 3.0) * tj);
+    fs = (mi + mj) / L;
+  }
+  f << c * fn - s * fs, s * fn + c * fs, mi, -(c * fn - s * fs), -(s * fn + c * fs), mj;
+  return f;
+}
+
+// connection_forces into `forces` (resized; every entry overwritten), with beam e's parameters from
+// parameters_of(e).
+template <class ParametersOf>
+void fill_connection_forces(const Lattice& lattice, const ParametersOf& parameters_of, const std::vector<BeamState>& states,
+                            const Eigen::VectorXd& u, std::vector<BeamForce>& forces) {
+  assert(u.size() == 3 * lattice.n_particles() && "connection_forces: u has 3 entries per particle");
+  assert(static_cast<int>(states.size()) == lattice.n_beams() && "connection_forces: one state per beam");
+  forces.resize(static_cast<std::size_t>(lattice.n_beams()));
+  // Beams independent: on the threads for a large lattice (N ~ 7000 and up), the same bits.
+#pragma omp parallel for schedule(static) if (lattice.n_beams() >= 20000)
+  for (int e = 0; e < lattice.n_beams(); ++e) {
+    const BeamState state = states[static_cast<std::size_t>(e)];
+    BeamForce& F = forces[static_cast<std::size_t>(e)];
+    if (state == BeamState::open) {
+      F = BeamForce{};
+      continue;
+    }
+    // The force the beam exerts on its particles is minus its internal force K_e u_e.
+    const Eigen::Matrix<double, 6, 1> f = -internal_force(lattice, parameters_of(e), state, e, u);
+    F.force_on_i = f.head<2>();
+    const Eigen::Vector2d n = lattice.direction.col(e), s(-n.y(), n.x());
+    F.normal = F.force_on_i.dot(n);
+    F.shear = F.force_on_i.dot(s);
+    F.moment_i = f[2];
+    F.moment_j = f[5];
+  }
+}
+
+}  // namespace
+
+std::vector<BeamForce> connection_forces(const Lattice& lattice, const BeamParameters& parameters,
+                                           const std::vector<BeamState>& states, const Eigen::VectorXd& u) {
+  std::vector<BeamForce> forces;
+  fill_connection_forces(
+      lattice, [&](int e) { return beam_parameters_for(lattice, parameters, e); }, states, u, forces);
+  return forces;
+}
+
+// ------------------------------------------------------------------------------------------------
+
+BeamMechanics::BeamMechanics(Lattice lattice, const BeamParameters& parameters, const BoundaryConditions& conditions,
+                             const MechanicsOptions& options)
+    : lattice_(std::move(lattice)), parameters_(parameters), conditions_(conditions), options_(options) {
+  parameters_.validate();
+  conditions_.validate(lattice_);
+  options_.validate();
+  const int n_p = lattice_.n_particles(), n_dof = 3 * n_p;
+  states_.assign(static_cast<std::size_t>(lattice_.n_beams()), BeamState::intact);
+  normal_stiffness_.resize(static_cast<std::size_t>(lattice_.n_beams()));
+  for (int e = 0; e < lattice_.n_beams(); ++e)
+    normal_stiffness_[static_cast<std::size_t>(e)] = beam_parameters_for(lattice_, parameters_, e).normal_stiffness;
+  detached_.assign(static_cast<std::size_t>(n_p), false);
+
+  // 1. Held degrees of freedom: supports, boundary strain, explicit list (later overrides earlier).
+  held_.assign(static_cast<std::size_t>(n_dof), false);
+  held_value_ = Eigen::VectorXd::Zero(n_dof);
+  auto hold = [&](int dof, double value) {
+    held_[static_cast<std::size_t>(dof)] = true;
+    held_value_[dof] = value;
+  };
+  for (int p = 0; p < n_p; ++p) {
+    const BoundaryTag tag = lattice_.boundary[static_cast<std::size_t>(p)];
+    const bool fixed = (tag == BoundaryTag::outer && conditions_.outer == BoundarySupport::fixed) ||
+                       (tag == BoundaryTag::inner && conditions_.inner == BoundarySupport::fixed);
+    if (fixed) {
+      hold(dof_index(p, 0), 0.0);
+      hold(dof_index(p, 1), 0.0);
+    }
+    if (conditions_.prescribe_boundary_strain && tag != BoundaryTag::interior) {
+      const Eigen::Vector2d u = conditions_.boundary_strain * lattice_.points.col(p);
+      hold(dof_index(p, 0), u.x());
+      hold(dof_index(p, 1), u.y());
+    }
+  }
+  for (const auto& pd : conditions_.prescribed) hold(dof_index(pd.particle, pd.component), pd.value);
+
+  // 2. Rigid-body modes. Pure traction: pin the particle nearest the centroid (gauge removed after
+  // each solve). Otherwise the held set must stop all three rigid motions of the (connected) lattice.
+  const bool any_held = std::any_of(held_.begin(), held_.end(), [](bool h) { return h; });
+  if (!any_held) {
+    const Eigen::Vector2d c = lattice_.points.rowwise().mean();
+    Eigen::Index best = 0;
+    (lattice_.points.colwise() - c).colwise().squaredNorm().minCoeff(&best);
+    pinned_particle_ = static_cast<int>(best);
+    for (int k = 0; k < 3; ++k) hold(dof_index(pinned_particle_, k), 0.0);
+  } else {
+    Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
+    const Eigen::Vector2d c = lattice_.points.rowwise().mean();
+    for (int dof = 0; dof < n_dof; ++dof) {
+      if (!held_[static_cast<std::size_t>(dof)]) continue;
+      const Eigen::Vector2d r = lattice_.points.col(dof / 3) - c;
+      const Eigen::Vector3d row = dof % 3 == 0 ? Eigen::Vector3d(1, 0, -r.y())
+                                  : dof % 3 == 1 ? Eigen::Vector3d(0, 1, r.x())
+                                                 : Eigen::Vector3d(0, 0, 1);
+      M += row * row.transpose();
+    }
+    const Eigen::Vector3d ev = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(M).eigenvalues();
+    if (!(ev[0] > 1e-12 * ev[2]))  // relative rank test; lattice lengths are O(r_min) to O(1)
+      throw hm::InputError("boundary_conditions: the held degrees of freedom leave a rigid-body motion free, "
+                           "allowed: none held (pure traction, pinned automatically) or held so that x, y "
+                           "translation and rotation are all stopped");
+  }
+
+  // 3. Loads: boundary pressures as normal tractions on the boundary polygon, lumped half to each end.
+  pressure_loads_ = Eigen::VectorXd::Zero(n_dof);
+  extra_loads_ = Eigen::VectorXd::Zero(n_dof);
+  for (int e = 0; e < lattice_.n_beams(); ++e) {
+    const BoundaryTag tag = lattice_.beam_boundary[static_cast<std::size_t>(e)];
+    if (tag == BoundaryTag::interior) continue;
+    const double p = tag == BoundaryTag::inner ? conditions_.inner_pressure : conditions_.outer_pressure;
+    if (p == 0.0) continue;
+    const auto [i, j] = lattice_.beams[static_cast<std::size_t>(e)];
+    const auto& tri = lattice_.triangles[static_cast<std::size_t>(lattice_.beam_triangles[static_cast<std::size_t>(e)][0])];
+    const int k = tri[0] != i && tri[0] != j ? tri[0] : tri[1] != i && tri[1] != j ? tri[1] : tri[2];
+    const Eigen::Vector2d n = lattice_.direction.col(e);
+    Eigen::Vector2d m(-n.y(), n.x());  // outward normal: away from the triangle's third vertex
+    if (m.dot(lattice_.points.col(k) - lattice_.points.col(i)) > 0.0) m = -m;
+    const Eigen::Vector2d f = -0.5 * p * lattice_.length[e] * m;  // positive p pushes into the solid
+    for (int q : {i, j}) {
+      pressure_loads_[dof_index(q, 0)] += f.x();
+      pressure_loads_[dof_index(q, 1)] += f.y();
+    }
+  }
+
+  // 4. Particle -> beam adjacency for the detachment search.
+  adjacency_start_.assign(static_cast<std::size_t>(n_p) + 1, 0);
+  for (const auto& b : lattice_.beams) {
+    ++adjacency_start_[static_cast<std::size_t>(b[0]) + 1];
+    ++adjacency_start_[static_cast<std::size_t>(b[1]) + 1];
+  }
+  for (int p = 0; p < n_p; ++p) adjacency_start_[p + 1] += adjacency_start_[p];
+  adjacency_beam_.assign(static_cast<std::size_t>(adjacency_start_.back()), 0);
+  std::vector<int> fill(adjacency_start_.begin(), adjacency_start_.end() - 1);
+  for (int e = 0; e < lattice_.n_beams(); ++e)
+    for (int q : lattice_.beams[static_cast<std::size_t>(e)]) adjacency_beam_[static_cast<std::size_t>(fill[q]++)] = e;
+
+  raw_ = held_value_;
+  displacement_ = held_value_;
+  solver_ = make_spd_solver(options_.solver, options_.solver_options);
+  setup_system();
+}
+
+void BeamMechanics::setup_system() {
+  const int n_dof = 3 * lattice_.n_particles();
+  free_index_.assign(static_cast<std::size_t>(n_dof), -1);
+  free_dofs_.clear();
+  for (int dof = 0; dof < n_dof; ++dof)
+    if (!held_[static_cast<std::size_t>(dof)]) {
+      free_index_[static_cast<std::size_t>(dof)] = static_cast<int>(free_dofs_.size());
+      free_dofs_.push_back(dof);
+    }
+  held_term_ = Eigen::VectorXd::Zero(n_dof);
+  std::vector<Eigen::Triplet<double>> triplets;
+  triplets.reserve(36 * static_cast<std::size_t>(lattice_.n_beams()));
+  for (int e = 0; e < lattice_.n_beams(); ++e) {
+    const auto d = beam_dofs(lattice_, e);
+    const Matrix6d k = beam_element_stiffness(lattice_.length[e], lattice_.angle[e], beam_parameters(e),
+                                              states_[static_cast<std::size_t>(e)]);
+    Eigen::Matrix<double, 6, 1> uh;
+    for (int a = 0; a < 6; ++a) uh[a] = held_value_[d[static_cast<std::size_t>(a)]];
+    const Eigen::Matrix<double, 6, 1> kh = k * uh;
+    for (int a = 0; a < 6; ++a) {
+      held_term_[d[static_cast<std::size_t>(a)]] += kh[a];
+      const int ra = free_index_[static_cast<std::size_t>(d[static_cast<std::size_t>(a)])];
+      if (ra < 0) continue;
+      // Every beam's entries are stored, open ones as zeros: state changes never alter the pattern,
+      // so the factor's pattern covers every later update/downdate.
+      for (int b = 0; b < 6; ++b) {
+        const int rb = free_index_[static_cast<std::size_t>(d[static_cast<std::size_t>(b)])];
+        if (rb >= 0) triplets.emplace_back(ra, rb, k(a, b));
+      }
+    }
+  }
+  // The coupling's normal springs (Eq. 20): k n n^T on the x, y blocks [[1, -1], [-1, 1]]. They lie
+  // inside the beam's pattern, so the pattern is that of the dry lattice.
+  for (int e = 0; e < springs_.size(); ++e) {
+    if (springs_[e] == 0.0) continue;
+    const auto d = beam_dofs(lattice_, e);
+    const Eigen::Vector2d n = lattice_.direction.col(e);
+    Eigen::Matrix<double, 4, 1> g;  // (x_i, y_i, x_j, y_j) -> elongation
+    g << -n.x(), -n.y(), n.x(), n.y();
+    const std::array<int, 4> t = {d[0], d[1], d[3], d[4]};
+    double elong_h = 0.0;
+    for (int a = 0; a < 4; ++a) elong_h += g[a] * held_value_[t[static_cast<std::size_t>(a)]];
+    for (int a = 0; a < 4; ++a) {
+      held_term_[t[static_cast<std::size_t>(a)]] += springs_[e] * g[a] * elong_h;
+      const int ra = free_index_[static_cast<std::size_t>(t[static_cast<std::size_t>(a)])];
+      if (ra < 0) continue;
+      for (int b = 0; b < 4; ++b) {
+        const int rb = free_index_[static_cast<std::size_t>(t[static_cast<std::size_t>(b)])];
+        if (rb >= 0) triplets.emplace_back(ra, rb, springs_[e] * g[a] * g[b]);
+      }
+    }
+  }
+  const int n_free = static_cast<int>(free_dofs_.size());
+  SpdSolver::Matrix A(n_free, n_free);
+  A.setFromTriplets(triplets.begin(), triplets.end());
+  solver_->compute(A);
+}
+
+Eigen::VectorXd BeamMechanics::full_vector(const Eigen::VectorXd& x_free) const {
+  Eigen::VectorXd u = held_value_;
+  for (std::size_t k = 0; k < free_dofs_.size(); ++k) u[free_dofs_[k]] = x_free[static_cast<Eigen::Index>(k)];
+  return u;
+}
+
+void BeamMechanics::change_state(int beam, BeamState to) {
+  const BeamState from = states_[static_cast<std::size_t>(beam)];
+  if (from == to) return;
+  // K_e(from) - K_e(to) (or the reverse) is a subset of the columns of beam_element_factor.
+  const Matrix63d V = beam_element_factor(lattice_.length[beam], lattice_.angle[beam], beam_parameters(beam),
+                                          BeamState::intact);
+  std::vector<int> columns;
+  int sigma = -1;
+  if (from == BeamState::intact) columns = to == BeamState::contact ? std::vector<int>{1, 2} : std::vector<int>{0, 1, 2};
+  else if (from == BeamState::contact && to == BeamState::open) columns = {0};
+  else if (from == BeamState::open && to == BeamState::contact) {
+    columns = {0};
+    sigma = 1;
+  } else {
+    assert(false && "change_state: a broken beam cannot heal");
+  }
+  const auto d = beam_dofs(lattice_, beam);
+  std::vector<Eigen::Triplet<double>> w;
+  for (std::size_t c = 0; c < columns.size(); ++c)
+    for (int a = 0; a < 6; ++a) {
+      const int r = free_index_[static_cast<std::size_t>(d[static_cast<std::size_t>(a)])];
+      if (r >= 0 && V(a, columns[c]) != 0.0) w.emplace_back(r, static_cast<int>(c), V(a, columns[c]));
+    }
+  // The held-DOF term K u_h changes by sigma V_c (V_c^T u_h).
+  Eigen::Matrix<double, 6, 1> uh;
+  for (int a = 0; a < 6; ++a) uh[a] = held_value_[d[static_cast<std::size_t>(a)]];
+  for (int col : columns) {
+    const double s = sigma * V.col(col).dot(uh);
+    for (int a = 0; a < 6; ++a) held_term_[d[static_cast<std::size_t>(a)]] += s * V(a, col);
+  }
+  if (from == BeamState::intact) broken_.push_back(beam);
+  states_[static_cast<std::size_t>(beam)] = to;
+  if (w.empty()) return;  // both ends held: the reduced matrix does not change
+  SpdSolver::Matrix W(n_free_dofs(), static_cast<Eigen::Index>(columns.size()));
+  W.setFromTriplets(w.begin(), w.end());
+  solver_->modify(W, sigma);
+}
+
+BeamState BeamMechanics::break_beam(int beam) {
+  if (beam < 0 || beam >= lattice_.n_beams())
+    throw hm::InputError("beam = " + std::to_string(beam) + ", allowed: 0 <= beam < " + std::to_string(lattice_.n_beams()));
+  if (states_[static_cast<std::size_t>(beam)] != BeamState::intact) return states_[static_cast<std::size_t>(beam)];
+  const auto [i, j] = lattice_.beams[static_cast<std::size_t>(beam)];
+  const Eigen::Vector2d du(raw_[dof_index(j, 0)] - raw_[dof_index(i, 0)], raw_[dof_index(j, 1)] - raw_[dof_index(i, 1)]);
+  const BeamState to = du.dot(lattice_.direction.col(beam)) < 0.0 ? BeamState::contact : BeamState::open;
+  change_state(beam, to);
+  check_detachment(i, j);
+  return states_[static_cast<std::size_t>(beam)];
+}
+
+void BeamMechanics::check_detachment(int i, int j) {
+  // Breadth-first search over intact beams (and sprung broken ones); stops early when i still reaches j (the usual case:
+  // the broken beam's triangles keep the two ends connected), else returns the whole component.
+  std::vector<char> seen(static_cast<std::size_t>(lattice_.n_particles()), 0);
+  auto component = [&](int start, int target, std::vector<int>& out) {
+    out.assign(1, start);
+    seen[static_cast<std::size_t>(start)] = 1;
+    for (std::size_t k = 0; k < out.size(); ++k) {
+      const int p = out[k];
+      for (int a = adjacency_start_[static_cast<std::size_t>(p)]; a < adjacency_start_[static_cast<std::size_t>(p) + 1]; ++a) {
+        const int e = adjacency_beam_[static_cast<std::size_t>(a)];
+        // A broken beam still connects through its normal spring (the coupling's Eq. 20): the part
+        // is then held by the fluid, not loose.
+        const bool spring = springs_.size() > 0 && springs_[e] > 0.0;
+        if (states_[static_cast<std::size_t>(e)] != BeamState::intact && !spring) continue;
+        const auto& b = lattice_.beams[static_cast<std::size_t>(e)];
+        const int q = b[0] == p ? b[1] : b[0];
+        if (seen[static_cast<std::size_t>(q)]) continue;
+        if (q == target) return true;
+        seen[static_cast<std::size_t>(q)] = 1;
+        out.push_back(q);
+      }
+    }
+    return false;
+  };
+  // With springs (which carry no moment), a particle left without intact beams keeps its translations
+  // through them but has a free rotation: hold that at its current value.
+  bool changed = false;
+  if (springs_.size() > 0) {
+    for (int p : {i, j}) {
+      bool has_intact = false;
+      for (int a = adjacency_start_[static_cast<std::size_t>(p)]; a < adjacency_start_[static_cast<std::size_t>(p) + 1]; ++a)
+        has_intact = has_intact || states_[static_cast<std::size_t>(adjacency_beam_[static_cast<std::size_t>(a)])] == BeamState::intact;
+      const Eigen::Index d = dof_index(p, 2);
+      if (has_intact || held_[static_cast<std::size_t>(d)]) continue;
+      held_[static_cast<std::size_t>(d)] = true;
+      held_value_[d] = raw_[d];
+      changed = true;
+    }
+  }
+  std::vector<int> part_i, part_j;
+  if (component(i, j, part_i)) {
+    if (changed) setup_system();
+    return;
+  }
+  component(j, -1, part_j);
+  // A part is anchored if its held degrees of freedom stop its three rigid motions (rank test).
+  auto anchored = [&](const std::vector<int>& part) {
+    Eigen::Vector2d c = Eigen::Vector2d::Zero();
+    for (int p : part) c += lattice_.points.col(p);
+    c /= static_cast<double>(part.size());
+    Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
+    for (int p : part)
+      for (int k = 0; k < 3; ++k) {
+        if (!held_[static_cast<std::size_t>(dof_index(p, k))]) continue;
+        const Eigen::Vector2d r = lattice_.points.col(p) - c;
+        const Eigen::Vector3d row = k == 0 ? Eigen::Vector3d(1, 0, -r.y()) : k == 1 ? Eigen::Vector3d(0, 1, r.x()) : Eigen::Vector3d(0, 0, 1);
+        M += row * row.transpose();
+      }
+    const Eigen::Vector3d ev = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(M).eigenvalues();
+    return ev[0] > 1e-12 * ev[2];
+  };
+  for (const auto* part : {&part_i, &part_j}) {
+    if (anchored(*part)) continue;
+    // Freeze the part at the rigid motion nearest its last displacement: it then carries no force.
+    const auto fit = rigid_fit(lattice_, raw_, *part);
+    for (int p : *part) {
+      const Eigen::Vector3d u = rigid_motion(lattice_, fit, p);
+      for (int k = 0; k < 3; ++k) {
+        held_[static_cast<std::size_t>(dof_index(p, k))] = true;
+        held_value_[dof_index(p, k)] = u[k];
+        raw_[dof_index(p, k)] = u[k];
+      }
+      detached_[static_cast<std::size_t>(p)] = true;
+      ++n_detached_;
+      for (int a = adjacency_start_[static_cast<std::size_t>(p)]; a < adjacency_start_[static_cast<std::size_t>(p) + 1]; ++a) {
+        const int e = adjacency_beam_[static_cast<std::size_t>(a)];
+        if (states_[static_cast<std::size_t>(e)] == BeamState::contact) states_[static_cast<std::size_t>(e)] = BeamState::open;
+      }
+    }
+    changed = true;
+  }
+  if (changed) setup_system();
+}
+
+void BeamMechanics::set_normal_springs(const Eigen::VectorXd& stiffness) {
+  if (stiffness.size() != 0 && stiffness.size() != lattice_.n_beams())
+    throw hm::InputError("normal_springs: size = " + std::to_string(stiffness.size()) +
+                         ", allowed: 0 or n_beams = " + std::to_string(lattice_.n_beams()));
+  for (Eigen::Index e = 0; e < stiffness.size(); ++e)
+    if (!(std::isfinite(stiffness[e]) && stiffness[e] >= 0.0))
+      throw hm::InputError("normal_springs[" + std::to_string(e) + "] = " + hm::analytic::format_value(stiffness[e]) +
+                           ", allowed: finite, >= 0");
+  springs_ = stiffness;
+  setup_system();
+}
+
+void BeamMechanics::set_external_forces(const Eigen::VectorXd& forces) {
+  assert(forces.size() == 3 * lattice_.n_particles() && "set_external_forces: 3 entries per particle");
+  extra_loads_ = forces;
+}
+
+BeamParameters BeamMechanics::beam_parameters(int beam) const {
+  BeamParameters p = parameters_;
+  p.normal_stiffness = normal_stiffness_[static_cast<std::size_t>(beam)];
+  return p;
+}
+
+MechanicsSummary BeamMechanics::solve() { return solve(true); }
+
+MechanicsSummary BeamMechanics::solve(bool equilibrium_check) {
+  const auto start = std::chrono::steady_clock::now();
+  MechanicsSummary summary;
+  summary.n_detached_particles = n_detached_;
+  for (int it = 0; it < options_.max_contact_iterations; ++it) {
+    const Eigen::VectorXd f = pressure_loads_ + extra_loads_ - held_term_;
+    Eigen::VectorXd b(n_free_dofs());
+    for (std::size_t k = 0; k < free_dofs_.size(); ++k) b[static_cast<Eigen::Index>(k)] = f[free_dofs_[k]];
+    const Eigen::VectorXd x = solver_->solve(b);
+    ++summary.contact_iterations;
+    summary.info = solver_->info();
+    summary.solver_residual = solver_->report().relative_residual;
+    if (summary.info != Eigen::Success) {
+      summary.message = "linear solver: " + solver_->report().message;
+      break;
+    }
+    raw_ = full_vector(x);
+    // Active set of Eqs. 8-10: overlapping broken beams push (contact), separating ones do nothing.
+    const double tol = options_.contact_tolerance * raw_.cwiseAbs().maxCoeff();
+    int changes = 0;
+    for (int e : broken_) {
+      const auto [i, j] = lattice_.beams[static_cast<std::size_t>(e)];
+      if (detached_[static_cast<std::size_t>(i)] || detached_[static_cast<std::size_t>(j)]) continue;
+      const Eigen::Vector2d du(raw_[dof_index(j, 0)] - raw_[dof_index(i, 0)], raw_[dof_index(j, 1)] - raw_[dof_index(i, 1)]);
+      const double elongation = du.dot(lattice_.direction.col(e));
+      const BeamState s = states_[static_cast<std::size_t>(e)];
+      if (s == BeamState::open && elongation < -tol) {
+        change_state(e, BeamState::contact);
+        ++changes;
+      } else if (s == BeamState::contact && elongation > tol) {
+        change_state(e, BeamState::open);
+        ++changes;
+      }
+    }
+    summary.n_contact_changes += changes;
+    if (changes == 0) {
+      summary.contact_converged = true;
+      break;
+    }
+  }
+  if (summary.info == Eigen::Success && !summary.contact_converged)
+    summary.message = "contact set not stable after " + std::to_string(options_.max_contact_iterations) +
+                      " iterations (max_contact_iterations); displacement of the last iterate";
+  for (int e : broken_) (states_[static_cast<std::size_t>(e)] == BeamState::contact ? summary.n_contacts : summary.n_open)++;
+
+  // Gauge of a pure-traction problem: subtract the least-squares rigid motion.
+  displacement_ = raw_;
+  if (is_pinned()) {
+    std::vector<int> attached;
+    for (int p = 0; p < lattice_.n_particles(); ++p)
+      if (!detached_[static_cast<std::size_t>(p)]) attached.push_back(p);
+    const auto fit = rigid_fit(lattice_, raw_, attached);
+    for (int p = 0; p < lattice_.n_particles(); ++p) displacement_.segment<3>(dof_index(p, 0)) -= rigid_motion(lattice_, fit, p);
+  }
+  if (summary.info == Eigen::Success && !equilibrium_check) summary.equilibrium_residual = std::numeric_limits<double>::quiet_NaN();
+  if (summary.info == Eigen::Success && equilibrium_check) {
+    // Independent of the solver's stored matrix: re-evaluates every beam from the states.
+    const Eigen::VectorXd f = loads(), r = reactions();
+    double r_max = 0.0;
+    for (int dof : free_dofs_) r_max = std::max(r_max, std::abs(r[dof]));
+    const double scale = std::max(f.cwiseAbs().maxCoeff(), (r + f).cwiseAbs().maxCoeff());
+    summary.equilibrium_residual = scale > 0.0 ? r_max / scale : r_max;
+  }
+  summary.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return summary;
+}
+
+std::vector<BeamForce> BeamMechanics::beam_forces() const {
+  std::vector<BeamForce> forces;
+  beam_forces(forces);
+  return forces;
+}
+
+void BeamMechanics::beam_forces(std::vector<BeamForce>& forces) const {
+  fill_connection_forces(lattice_, [this](int e) { return beam_parameters(e); }, states_, raw_, forces);
+}
+
+Eigen::VectorXd BeamMechanics::reactions() const {
+  Eigen::VectorXd r = -loads();
+  for (int e = 0; e < lattice_.n_beams(); ++e) {
+    const BeamState s = states_[static_cast<std::size_t>(e)];
+    if (s == BeamState::open) continue;
+    const auto d = beam_dofs(lattice_, e);
+    const Eigen::Matrix<double, 6, 1> f = internal_force(lattice_, beam_parameters(e), s, e, raw_);
+    for (int a = 0; a < 6; ++a) r[d[static_cast<std::size_t>(a)]] += f[a];
+  }
+  for (int e = 0; e < springs_.size(); ++e) {
+    if (springs_[e] == 0.0) continue;
+    const auto [i, j] = lattice_.beams[static_cast<std::size_t>(e)];
+    const Eigen::Vector2d n = lattice_.direction.col(e);
+    const Eigen::Vector2d du(raw_[dof_index(j, 0)] - raw_[dof_index(i, 0)], raw_[dof_index(j, 1)] - raw_[dof_index(i, 1)]);
+    const Eigen::Vector2d f = springs_[e] * du.dot(n) * n;  // K u for the spring: -f on i, +f on j
+    r[dof_index(i, 0)] -= f.x();
+    r[dof_index(i, 1)] -= f.y();
+    r[dof_index(j, 0)] += f.x();
+    r[dof_index(j, 1)] += f.y();
+  }
+  return r;
+}
+
+}  // namespace hm::lattice2d
