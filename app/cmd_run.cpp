@@ -62,7 +62,7 @@ void add_run_command(CLI::App& app, int& exit_code, const std::string& command_l
     std::cout << "run: Q = " << p.Q << ", b = " << p.material.b << ", E/M = " << p.material.E_over_M
               << ", iota = " << p.iota << "; " << to_string(c.lattice.domain) << ", N = " << c.lattice.n_particles
               << ", seed = " << c.lattice.seed << ", outer " << to_string(c.boundary.outer) << "; split "
-              << to_string(c.coupling.split) << ", Psi = " << c.coupling.psi << ", xi = " << c.coupling.xi
+              << to_string(c.coupling.split) << ", Psi = " << c.coupling.terms.psi << ", xi = " << c.coupling.terms.xi
               << "; t_end = " << c.stepping.t_end << "\n";
 
     // 2. Build the lattice and the coupled model (mechanics factorised once, with the Eq. 20 springs).

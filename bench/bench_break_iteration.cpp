@@ -54,11 +54,10 @@ int main(int argc, char** argv) {
   BoundaryConditions bc;
   bc.inner_pressure = 1e-3;  // reference load; the loop scales it (homogeneity, fracture.hpp)
   BeamMechanics mechanics(lattice, calibrated_beam_parameters(), bc);
-  CouplingParameters coupling;
-  coupling.b = 0.2;
+  CouplingTerms coupling;
   coupling.psi = 1.3;
-  coupling.E_over_M = hm::analytic::E_over_M_table1(0.2, 0.25);
-  mechanics.set_normal_springs(undrained_spring_stiffness(lattice, dual, coupling));
+  mechanics.set_normal_springs(
+      undrained_spring_stiffness(lattice, dual, 0.2, hm::analytic::E_over_M_table1(0.2, 0.25), coupling));
   const BeamStrengths strengths = draw_beam_strengths(StrengthSpec{}, lattice.n_beams());
   std::printf("N = %d particles, %d beams; set-up %.2f s\n", lattice.n_particles(), lattice.n_beams(), now() - t0);
 

@@ -107,8 +107,8 @@ RunCase read_run_case(const std::filesystem::path& file) {
     auto& o = c.coupling;
     o.split = lt::coupling_split_from_string(cpl.get_string("split", lt::to_string(o.split)));
     // The drained split has Psi = 0 by definition: its default follows the split.
-    o.psi = cpl.get_double("psi", o.split == lt::CouplingSplit::drained ? 0.0 : o.psi);
-    o.xi = cpl.get_double("xi", o.xi);
+    o.terms.psi = cpl.get_double("psi", lt::default_psi(o.split));
+    o.terms.xi = cpl.get_double("xi", o.terms.xi);
     o.pressure_tolerance = cpl.get_double("pressure_tolerance", o.pressure_tolerance);
     o.displacement_tolerance = cpl.get_double("displacement_tolerance", o.displacement_tolerance);
     const long long max_it = cpl.get_int("max_iterations", o.max_iterations);
@@ -229,7 +229,7 @@ std::string run_case_to_toml(const RunCase& c, const std::string& provenance_tom
      << "[flow]\nborehole_storage = \"" << lt::to_string(c.borehole_storage) << "\"\nborehole_deformation = \""
      << lt::to_string(c.borehole_deformation) << "\"\nreuse_factorisation = " << b(c.reuse_flow_factorisation)
      << "\nrefresh_after_refinements = " << c.flow_refresh_after_refinements << "\n\n"
-     << "[coupling]\nsplit = \"" << lt::to_string(o.split) << "\"\npsi = " << v(o.psi) << "\nxi = " << v(o.xi)
+     << "[coupling]\nsplit = \"" << lt::to_string(o.split) << "\"\npsi = " << v(o.terms.psi) << "\nxi = " << v(o.terms.xi)
      << "\npressure_tolerance = " << v(o.pressure_tolerance) << "\ndisplacement_tolerance = "
      << v(o.displacement_tolerance) << "\nmax_iterations = " << o.max_iterations
      << "\naccept_unconverged = " << b(o.accept_unconverged) << "\nrelaxation = \"" << lt::to_string(o.relaxation)

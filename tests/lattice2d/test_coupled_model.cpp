@@ -73,10 +73,10 @@ TEST_CASE("Coupling options and time stepping: defaults are valid, bad values ar
 TEST_CASE("The undrained split with Psi = 0 is the drained split exactly", "[lattice2d]") {
   const Lattice lattice = make_lattice(DomainShape::disk, 2000);
   CouplingOptions undrained;
-  undrained.psi = 0.0;
+  undrained.terms.psi = 0.0;
   CouplingOptions drained;
   drained.split = CouplingSplit::drained;
-  drained.psi = 0.0;
+  drained.terms.psi = 0.0;
   CoupledModel a = make_model(lattice, undrained), b = make_model(lattice, drained);
   for (int n = 0; n < 3; ++n) {
     const CoupledStepSummary sa = a.step(1e-5), sb = b.step(1e-5);
@@ -94,7 +94,7 @@ TEST_CASE("The iterated undrained and drained splits converge to the same soluti
   undrained.pressure_tolerance = undrained.displacement_tolerance = 1e-10;
   CouplingOptions drained = undrained;
   drained.split = CouplingSplit::drained;
-  drained.psi = 0.0;
+  drained.terms.psi = 0.0;
   drained.max_iterations = 400;
   for (BoundarySupport outer : {BoundarySupport::free, BoundarySupport::fixed}) {
     CoupledModel a = make_model(lattice, undrained, outer), b = make_model(lattice, drained, outer);

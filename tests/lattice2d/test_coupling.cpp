@@ -10,6 +10,7 @@
 #include "hm/core/input_error.hpp"
 #include "hm/lattice2d/mechanics/beam_stiffness.hpp"
 #include "hm/lattice2d/coupled/coupling.hpp"
+#include "hm/lattice2d/flow/flow_network.hpp"
 #include "hm/lattice2d/mechanics/mechanics.hpp"
 #include "hm/lattice2d/linalg/spd_solver.hpp"
 #include "lattice2d/lattice_fixtures.hpp"
@@ -28,16 +29,16 @@ struct GradientError {
 };
 
 GradientError gradient_force_error(const Lattice& lattice, const DualGraph& dual, const Eigen::Matrix2Xd& sample_points,
-                                   const Eigen::Vector2d& g, const CouplingParameters& cp) {
+                                   const Eigen::Vector2d& g, double b, const CouplingTerms& terms = {}) {
   Eigen::VectorXd p(lattice.n_triangles());
   for (int s = 0; s < lattice.n_triangles(); ++s) p[s] = 0.3 + g.dot(sample_points.col(s));
-  const Eigen::VectorXd f = pressure_forces(lattice, dual, p, cp);
+  const Eigen::VectorXd f = pressure_forces(lattice, dual, p, b, terms);
   GradientError out;
   double num = 0.0, den = 0.0;
   Eigen::Vector2d sum = Eigen::Vector2d::Zero();
   for (int i = 0; i < lattice.n_particles(); ++i) {
     if (lattice.boundary[static_cast<std::size_t>(i)] != BoundaryTag::interior) continue;
-    const Eigen::Vector2d body = -cp.xi * cp.b * dual.particle_area[i] * g;
+    const Eigen::Vector2d body = -terms.xi * b * dual.particle_area[i] * g;
     const Eigen::Vector2d err = Eigen::Vector2d(f[dof_index(i, 0)], f[dof_index(i, 1)]) - body;
     out.max_relative = std::max(out.max_relative, err.norm() / body.norm());
     num += err.norm();
@@ -52,12 +53,15 @@ GradientError gradient_force_error(const Lattice& lattice, const DualGraph& dual
 }  // namespace
 
 TEST_CASE("The default coupling parameters are valid and each bad value is rejected", "[lattice2d]") {
-  CouplingParameters cp;
+  // xi and Psi are the coupling terms' own; b and E/M are the material's, validated with the flow.
+  CouplingTerms cp;
+  FlowParameters material;
   REQUIRE_NOTHROW(cp.validate());
-  SECTION("b") { cp.b = 1.5; REQUIRE_THROWS_AS(cp.validate(), hm::InputError); }
+  REQUIRE_NOTHROW(material.validate());
+  SECTION("b") { material.b = 1.5; REQUIRE_THROWS_AS(material.validate(), hm::InputError); }
   SECTION("xi") { cp.xi = 0.0; REQUIRE_THROWS_AS(cp.validate(), hm::InputError); }
   SECTION("psi") { cp.psi = -1.0; REQUIRE_THROWS_AS(cp.validate(), hm::InputError); }
-  SECTION("E_over_M") { cp.E_over_M = 0.0; REQUIRE_THROWS_AS(cp.validate(), hm::InputError); }
+  SECTION("E_over_M") { material.E_over_M = 0.0; REQUIRE_THROWS_AS(material.validate(), hm::InputError); }
 }
 
 TEST_CASE("A linear pressure at the dual points gives the continuum body force -b V_i grad p on interior particles",
@@ -65,13 +69,12 @@ TEST_CASE("A linear pressure at the dual points gives the continuum body force -
   // By the divergence theorem on the closed Voronoi cell of an interior particle, sum_st d_st p_st n_ij
   // = integral of p n over the cell boundary = V_i grad p when p_st is p at the segment midpoint, which
   // the mean of two dual-point values is for a linear p. So xi = 1 holds to round-off.
-  CouplingParameters cp;
-  cp.b = 0.7;
+  const double b = 0.7;
   for (long long n : {2000LL, 8000LL, 32000LL}) {
     const Lattice lattice = make_lattice(DomainShape::disk, n);
     const DualGraph dual = build_dual_graph(lattice);
     for (const Eigen::Vector2d& g : {Eigen::Vector2d(1.0, 0.0), Eigen::Vector2d(-0.4, 2.5)}) {
-      const GradientError e = gradient_force_error(lattice, dual, dual.dual_point, g, cp);
+      const GradientError e = gradient_force_error(lattice, dual, dual.dual_point, g, b);
       std::printf("dual-point sampling, N = %lld: max %.3g, mean %.3g\n", n, e.max_relative, e.mean_relative);
       // Round-off: the net force b V_i |g| ~ b h^2 is a cancellation of six terms ~ b h |p|, so the
       // relative error is ~ 1e-16 |p| / (h |g|), measured <= 2e-12 up to N = 32000 (h ~ 0.01).
@@ -93,7 +96,7 @@ TEST_CASE("A linear pressure at the triangle centroids gives the body force on a
   for (long long n : {2000LL, 8000LL, 32000LL}) {
     const Lattice lattice = make_lattice(DomainShape::disk, n);
     const DualGraph dual = build_dual_graph(lattice);
-    const GradientError e = gradient_force_error(lattice, dual, dual.centroid, Eigen::Vector2d(1.0, 0.0), CouplingParameters{});
+    const GradientError e = gradient_force_error(lattice, dual, dual.centroid, Eigen::Vector2d(1.0, 0.0), 0.5);
     std::printf("centroid sampling, N = %lld: max %.3g, mean %.3g, global %.3g\n", n, e.max_relative, e.mean_relative,
                 e.sum_relative);
     CHECK(e.mean_relative < 0.2);          // the O(1) per-particle scatter, measured 0.13
@@ -108,7 +111,7 @@ TEST_CASE("A uniform pressure gives zero net force on every interior particle", 
     const DualGraph dual = build_dual_graph(lattice);
     const bool annulus = shape == DomainShape::annulus;
     Eigen::VectorXd p = Eigen::VectorXd::Constant(lattice.n_triangles() + (annulus ? 1 : 0), 0.25);
-    const Eigen::VectorXd f = pressure_forces(lattice, dual, p, CouplingParameters{});
+    const Eigen::VectorXd f = pressure_forces(lattice, dual, p, 0.5, CouplingTerms{});
     double max_interior = 0.0;
     for (int i = 0; i < lattice.n_particles(); ++i)
       if (lattice.boundary[static_cast<std::size_t>(i)] == BoundaryTag::interior)
@@ -126,10 +129,10 @@ TEST_CASE("With the wall traction, a uniform pressure in an annulus and its bore
   // Discretely: the open boundary cells carry -b p times the missing facet, the wall traction +p.
   const Lattice lattice = make_lattice(DomainShape::annulus, 2000);
   const DualGraph dual = build_dual_graph(lattice);
-  CouplingParameters cp;
-  cp.b = 0.6;
+  const double b = 0.6;
   const double p = 0.1;
-  const Eigen::VectorXd f = pressure_forces(lattice, dual, Eigen::VectorXd::Constant(lattice.n_triangles() + 1, p), cp);
+  const Eigen::VectorXd f =
+      pressure_forces(lattice, dual, Eigen::VectorXd::Constant(lattice.n_triangles() + 1, p), b, CouplingTerms{});
   // Sum of the radial force over the wall particles = (1 - b) p times the wall polygon's perimeter.
   double radial = 0.0, perimeter = 0.0;
   for (int i = 0; i < lattice.n_particles(); ++i)
@@ -145,35 +148,35 @@ TEST_CASE("With the wall traction, a uniform pressure in an annulus and its bore
       const double half_chord = lattice.length[e] / (2.0 * lattice.spec.inner_radius);
       perimeter += lattice.length[e] * std::sqrt(1.0 - half_chord * half_chord);
     }
-  CHECK(radial == Approx((1.0 - cp.b) * p * perimeter).epsilon(1e-9));
+  CHECK(radial == Approx((1.0 - b) * p * perimeter).epsilon(1e-9));
 }
 
 TEST_CASE("The undrained spring is Psi xi b^2 (M/E) d_st/L_ij per beam and zero for the drained split", "[lattice2d]") {
   const Lattice lattice = make_lattice(DomainShape::disk, 1000);
   const DualGraph dual = build_dual_graph(lattice);
-  CouplingParameters cp;
+  CouplingTerms cp;
   cp.psi = 2.0;
   cp.xi = 1.5;
-  cp.b = 0.4;
-  cp.E_over_M = 0.8;
-  const Eigen::VectorXd k = undrained_spring_stiffness(lattice, dual, cp);
+  const double b = 0.4, E_over_M = 0.8;
+  const Eigen::VectorXd k = undrained_spring_stiffness(lattice, dual, b, E_over_M, cp);
   for (int e = 0; e < lattice.n_beams(); e += 17)
     CHECK(k[e] == hm::test::roundoff(2.0 * 1.5 * 0.16 / 0.8 * std::max(dual.dual_length[e], 0.0) / lattice.length[e]));
   CHECK(k.minCoeff() >= 0.0);
   cp.psi = 0.0;
-  CHECK(undrained_spring_stiffness(lattice, dual, cp).cwiseAbs().maxCoeff() == 0.0);
+  CHECK(undrained_spring_stiffness(lattice, dual, b, E_over_M, cp).cwiseAbs().maxCoeff() == 0.0);
 }
 
 TEST_CASE("Springs relaxed at the drained solution leave it unchanged: (K + K_psi) u = f + K_psi u_drained",
           "[lattice2d]") {
   const Lattice lattice = make_lattice(DomainShape::disk, 1500);
   const DualGraph dual = build_dual_graph(lattice);
-  CouplingParameters cp;
+  CouplingTerms cp;
   cp.psi = 1.3;
+  const double b = 0.5, E_over_M = 0.75;
   // A pressure bump around the centre.
   Eigen::VectorXd p(lattice.n_triangles());
   for (int s = 0; s < lattice.n_triangles(); ++s) p[s] = 1e-3 * std::exp(-dual.dual_point.col(s).squaredNorm() / 0.05);
-  const Eigen::VectorXd f = pressure_forces(lattice, dual, p, cp);
+  const Eigen::VectorXd f = pressure_forces(lattice, dual, p, b, cp);
 
   BeamMechanics drained(lattice, BeamParameters{}, BoundaryConditions{});
   drained.set_external_forces(f);
@@ -181,7 +184,7 @@ TEST_CASE("Springs relaxed at the drained solution leave it unchanged: (K + K_ps
   const Eigen::VectorXd u_drained = drained.displacement();
 
   BeamMechanics undrained(lattice, BeamParameters{}, BoundaryConditions{});
-  const Eigen::VectorXd k = undrained_spring_stiffness(lattice, dual, cp);
+  const Eigen::VectorXd k = undrained_spring_stiffness(lattice, dual, b, E_over_M, cp);
   undrained.set_normal_springs(k);
   SECTION("relaxed at the drained solution: the same solution") {
     undrained.set_external_forces(f + spring_preload(lattice, k, u_drained));
@@ -212,7 +215,7 @@ TEST_CASE("Timing: the Eq. 20 springs by refactorisation against a rank-n_beams 
   const Lattice lattice = make_lattice(DomainShape::disk, 10000);
   const DualGraph dual = build_dual_graph(lattice);
   const BeamMechanics mechanics(lattice, BeamParameters{}, BoundaryConditions{});
-  const Eigen::VectorXd k = undrained_spring_stiffness(lattice, dual, CouplingParameters{});
+  const Eigen::VectorXd k = undrained_spring_stiffness(lattice, dual, 0.5, 0.75, CouplingTerms{});
   std::vector<int> free_index(static_cast<std::size_t>(3 * lattice.n_particles()), -1);
   int n_free = 0;
   for (std::size_t d = 0; d < free_index.size(); ++d)

@@ -63,7 +63,7 @@ RunCase rudnicki_case(const RudnickiVariant& v) {
   c.lattice.seed = 1;
   c.boundary.outer = v.outer;
   c.coupling.split = v.split;
-  c.coupling.psi = v.split == lt::CouplingSplit::drained ? 0.0 : v.psi;
+  c.coupling.terms.psi = v.psi;  // 0 with the drained split (CouplingOptions::validate)
   if (v.one_pass) {
     c.coupling.max_iterations = 1;
     c.coupling.accept_unconverged = true;

@@ -105,7 +105,7 @@ RunCase lattice_case(const Comparison1d& v) {
   c.borehole_storage = lt::BoreholeStorage::none;
   c.borehole_deformation = lt::BoreholeDeformation::none;
   c.coupling.split = lt::CouplingSplit::undrained;
-  c.coupling.psi = 1.3;
+  c.coupling.terms.psi = 1.3;
   c.coupling.relaxation = lt::CouplingRelaxation::none;
   c.stepping.dt_initial = v.stepping.dt_initial;
   c.stepping.dt_growth = v.stepping.dt_growth;

@@ -7,7 +7,6 @@
 
 #include "hm/core/input_error.hpp"
 #include "hm/analytic/validation.hpp"
-#include "hm/lattice2d/coupled/anderson_acceleration.hpp"
 
 namespace hm::lattice2d {
 
@@ -17,22 +16,6 @@ CouplingSplit coupling_split_from_string(std::string_view name) {
   if (name == "undrained") return CouplingSplit::undrained;
   if (name == "drained") return CouplingSplit::drained;
   throw hm::InputError("coupling.split = '" + std::string(name) + "', allowed: undrained, drained");
-}
-
-std::string to_string(CouplingRelaxation relaxation) {
-  switch (relaxation) {
-    case CouplingRelaxation::none: return "none";
-    case CouplingRelaxation::aitken: return "aitken";
-    case CouplingRelaxation::anderson: return "anderson";
-  }
-  return "?";
-}
-
-CouplingRelaxation coupling_relaxation_from_string(std::string_view name) {
-  if (name == "none") return CouplingRelaxation::none;
-  if (name == "aitken") return CouplingRelaxation::aitken;
-  if (name == "anderson") return CouplingRelaxation::anderson;
-  throw hm::InputError("coupling.relaxation = '" + std::string(name) + "', allowed: none, aitken, anderson");
 }
 
 std::string to_string(CouplingPredictor predictor) {
@@ -65,14 +48,13 @@ std::string to_string(CoupledStatus status) {
   return "?";
 }
 
+double default_psi(CouplingSplit split) { return split == CouplingSplit::drained ? 0.0 : CouplingTerms{}.psi; }
+
 void CouplingOptions::validate() const {
   using namespace hm::analytic;
-  require_finite(psi, "coupling.psi");
-  require_non_negative(psi, "coupling.psi");
-  if (split == CouplingSplit::drained && psi != 0.0)
-    throw hm::InputError("coupling.psi = " + format_value(psi) + ", allowed: 0 for split = drained");
-  require_finite(xi, "coupling.xi");
-  require_positive(xi, "coupling.xi");
+  terms.validate();
+  if (split == CouplingSplit::drained && terms.psi != 0.0)
+    throw hm::InputError("coupling.psi = " + format_value(terms.psi) + ", allowed: 0 for split = drained");
   require_open(pressure_tolerance, "coupling.pressure_tolerance", 0.0, 1.0);
   require_open(displacement_tolerance, "coupling.displacement_tolerance", 0.0, 1.0);
   require_at_least(max_iterations, "coupling.max_iterations", 1);
@@ -128,21 +110,16 @@ CoupledModel::CoupledModel(Lattice lattice, const BeamParameters& beams, const B
     : options_(options) {
   options_.validate();
   flow.validate();
-  coupling_.b = flow.b;
-  coupling_.xi = options_.xi;
-  coupling_.psi = options_.split == CouplingSplit::drained ? 0.0 : options_.psi;
-  coupling_.E_over_M = flow.E_over_M;
-  coupling_.borehole_wall_traction = options_.borehole_wall_traction;
-  coupling_.validate();
   reference_dual_ = build_dual_graph(lattice);
   current_dual_ = reference_dual_;
   flow_ = std::make_unique<FlowNetwork>(lattice, reference_dual_, flow);
   mechanics_ = std::make_unique<BeamMechanics>(std::move(lattice), beams, conditions, mechanics_options);
-  springs_ = undrained_spring_stiffness(mechanics_->lattice(), reference_dual_, coupling_);
+  springs_ = undrained_spring_stiffness(mechanics_->lattice(), reference_dual_, flow.b, flow.E_over_M, options_.terms);
   // The springs go into the matrix once (one refactorisation); Psi = 0 leaves the dry matrix as it is.
-  if (coupling_.psi > 0.0) mechanics_->set_normal_springs(springs_);
+  if (options_.terms.psi > 0.0) mechanics_->set_normal_springs(springs_);
   displacement_ = Eigen::VectorXd::Zero(3 * mechanics_->lattice().n_particles());
   volume_ = unknown_volumes(reference_dual_);
+  relaxation_ = make_pass_relaxation(options_.relaxation, options_.initial_relaxation, options_.anderson_depth);
 }
 
 CoupledModel::~CoupledModel() = default;
@@ -177,6 +154,8 @@ Eigen::VectorXd CoupledModel::unknown_volumes(const DualGraph& dual) const {
   return v;
 }
 
+// One time step (Fig. 5): predict the guess, then passes of mechanics (with the break loop) and flow
+// until the guess stops changing, then accept the step or restore t^n.
 CoupledStepSummary CoupledModel::step(double dt) {
   const auto start = std::chrono::steady_clock::now();
   if (!(dt > 0.0 && std::isfinite(dt)))
@@ -186,143 +165,124 @@ CoupledStepSummary CoupledModel::step(double dt) {
   summary.time = time() + dt;
   const int factorizations_before = mechanics_->solver().report().n_factorizations;
   const int update_failures_before = mechanics_->solver().report().n_update_failures;
-  const Lattice& l = lattice();
-  Eigen::VectorXd p_guess = flow_->pressure();  // p^n: the drained split's frozen pressure
-  Eigen::VectorXd u_prev = displacement_;       // u^n: where the springs are relaxed at the first pass
+  PassGuess guess = predict(dt);
+  DualGraph dual;
+  const bool converged = iterate(dt, guess, dual, summary);
+  finish_step(dt, converged, std::move(dual), summary);
+  summary.n_broken = n_broken();
+  summary.n_mechanics_factorizations = mechanics_->solver().report().n_factorizations - factorizations_before;
+  summary.n_mechanics_update_failures = mechanics_->solver().report().n_update_failures - update_failures_before;
+  summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return summary;
+}
+
+CoupledModel::PassGuess CoupledModel::predict(double dt) const {
+  // p^n: the drained split's frozen pressure; u^n: where the springs are relaxed at the first pass.
+  PassGuess guess{flow_->pressure(), displacement_};
   if (options_.predictor == CouplingPredictor::linear && previous_dt_ > 0.0) {
     const double ratio = dt / previous_dt_;
-    p_guess += ratio * (flow_->pressure() - previous_pressure_);
-    u_prev += ratio * (displacement_ - previous_displacement_);
+    guess.pressure += ratio * (flow_->pressure() - previous_pressure_);
+    guess.displacement += ratio * (displacement_ - previous_displacement_);
   }
-  DualGraph dual;
-  bool converged = false;
-  double omega = 1.0;     // Aitken relaxation factor
-  Eigen::VectorXd r_prev;  // last pressure residual (Aitken)
-  AndersonAcceleration anderson(options_.anderson_depth, options_.initial_relaxation);
-  double u_scale = 1.0;
-  bool u_scaled = false;
+  return guess;
+}
+
+bool CoupledModel::iterate(double dt, PassGuess& guess, DualGraph& dual, CoupledStepSummary& summary) {
   const bool check_every_pass = fracture_ && options_.fracture_check == FractureCheck::every_pass;
-  // Runs the break loop at the current forces; false (and the summary says why) if it failed.
-  const auto break_beams = [&](int pass, int& n_breaks) {
-    const BreakLoopSummary bs = break_until_stable(*mechanics_, reference_dual_, fracture_->strengths,
-                                                   fracture_->options, summary.time, break_log_);
-    summary.mechanics_seconds += bs.solve_seconds;
-    summary.stress_seconds += bs.stress_seconds;
-    summary.break_seconds += bs.break_seconds;
-    summary.n_mechanics_solves += bs.n_solves;
-    summary.n_contact_changes += bs.n_contact_changes;
-    n_breaks = bs.n_breaks;
-    summary.n_breaks += bs.n_breaks;
-    if (!bs.is_stable()) {
-      summary.status = CoupledStatus::solver_failure;
-      summary.message = "break loop at t = " + hm::analytic::format_value(summary.time) + ", pass " +
-                        std::to_string(pass) + ": " + to_string(bs.status) + " " + bs.message;
-      return false;
-    }
-    if (n_breaks > 0) flow_->set_broken(broken_flags(mechanics_->states()));
-    return true;
-  };
+  relaxation_->start_step();
   int last_break_pass = 0;  // at_convergence: max_iterations counts from here
   for (int k = 1; k - last_break_pass <= options_.max_iterations; ++k) {
     summary.iterations = k;
-    // 1. Mechanics with the current pressure guess (Eq. 17) and the undrained predictor (Eq. 20).
-    Eigen::VectorXd f = pressure_forces(l, reference_dual_, p_guess, coupling_);
-    if (coupling_.psi > 0.0) f += spring_preload(l, springs_, u_prev);
-    mechanics_->set_external_forces(f);
     int breaks_this_pass = 0;
-    if (check_every_pass) {
-      // Solve, then break one beam at a time until none fails (the stresses of the effective, i.e.
-      // beam, forces; V_i of the undeformed dual like the rest of the linear mechanics).
-      if (!break_beams(k, breaks_this_pass)) break;
-    } else {
-      const MechanicsSummary ms = mechanics_->solve();
-      summary.mechanics_seconds += ms.solve_seconds;
-      ++summary.n_mechanics_solves;
-      summary.n_contact_changes += ms.n_contact_changes;
-      if (!ms.is_converged()) {
-        summary.status = CoupledStatus::solver_failure;
-        summary.message = "mechanics at t = " + hm::analytic::format_value(summary.time) + ", pass " +
-                          std::to_string(k) + ": " + ms.message;
-        break;
-      }
-    }
+    if (!solve_mechanics(k, guess, check_every_pass, breaks_this_pass, summary)) return false;
     const Eigen::VectorXd& u = mechanics_->displacement();
-    // 2. The deformed flow geometry.
-    auto tick = std::chrono::steady_clock::now();
-    const Eigen::Matrix2Xd x = positions(u);
-    dual = build_dual_graph(l, x, reference_dual_.options);
-    flow_->update_geometry(dual, x);
-    auto tock = std::chrono::steady_clock::now();
-    summary.geometry_seconds += std::chrono::duration<double>(tock - tick).count();
-    // 3. The flow step with b (V^{n+1} - V^n).
-    summary.flow = flow_->solve(dt, unknown_volumes(dual) - volume_);
-    summary.flow_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - tock).count();
-    if (!summary.flow.is_ok()) {
-      summary.status = CoupledStatus::solver_failure;
-      summary.message = "flow at t = " + hm::analytic::format_value(summary.time) + ", pass " + std::to_string(k) +
-                        ": " + summary.flow.message;
-      break;
-    }
-    // 4. Residuals between passes.
+    if (!solve_flow(dt, k, u, dual, summary)) return false;
     const Eigen::VectorXd& p = flow_->trial_pressure();
-    summary.pressure_residual = relative_change(p, p_guess, false);
-    summary.displacement_residual = relative_change(u, u_prev, true);
+    summary.pressure_residual = relative_change(p, guess.pressure, false);
+    summary.displacement_residual = relative_change(u, guess.displacement, true);
     summary.pressure_history.push_back(summary.pressure_residual);
     if (pass_observer_) pass_observer_(k, p, u);
-    // Next pressure guess: the flow result, or with Aitken's dynamic relaxation (Kuettler & Wall 2008)
-    // p_guess += omega (p - p_guess), omega from the last two residuals r = p - p_guess. It changes the
-    // path, not the fixed point; it tames the borehole's feedback (docs/coupling.md, section 3).
-    if (options_.relaxation == CouplingRelaxation::aitken) {
-      const Eigen::VectorXd r = p - p_guess;
-      if (k == 1 || breaks_this_pass > 0 || k == last_break_pass + 1) {
-        // A break changed the system: the last residual belongs to another map, start afresh.
-        omega = options_.initial_relaxation;
-      } else {
-        const Eigen::VectorXd dr = r - r_prev;
-        const double dr2 = dr.squaredNorm();
-        if (dr2 > 0.0) omega = std::clamp(-omega * r_prev.dot(dr) / dr2, -1.0, 1.0);
+    relaxation_->next_guess(guess.pressure, guess.displacement, p, u, breaks_this_pass > 0);
+    const bool unchanged = summary.pressure_residual <= options_.pressure_tolerance &&
+                           summary.displacement_residual <= options_.displacement_tolerance;
+    if (breaks_this_pass > 0 || !unchanged) continue;
+    if (fracture_ && !check_every_pass) {
+      // A coupled equilibrium: break what fails under its forces, then converge again from the
+      // broken state (springs relaxed there, a fresh relaxation history: the map changed).
+      int n_breaks = 0;
+      if (!break_beams(k, n_breaks, summary)) return false;
+      if (n_breaks > 0) {
+        guess.displacement = mechanics_->displacement();
+        relaxation_->restart();
+        last_break_pass = k;
+        continue;
       }
-      r_prev = r;
-      p_guess += omega * r;
-    } else if (options_.relaxation == CouplingRelaxation::anderson) {
-      // The pass maps (p_guess, u_prev) -> (p, u) (u_prev through the springs), so both are the state;
-      // u is scaled to the pressure's magnitude, fixed for the step so that secants stay consistent.
-      if (breaks_this_pass > 0) anderson.reset();  // the map changed: old differences mislead
-      const double u_max = u.cwiseAbs().maxCoeff(), p_max = p.cwiseAbs().maxCoeff();
-      if (!u_scaled && u_max > 0.0 && p_max > 0.0) {  // first pass with a non-zero u (from rest: pass 2)
-        u_scale = p_max / u_max;
-        u_scaled = true;
-        anderson.reset();
-      }
-      const Eigen::Index np = p.size(), nu = u.size();
-      Eigen::VectorXd state(np + nu), mapped(np + nu);
-      state << p_guess, u_scale * u_prev;
-      mapped << p, u_scale * u;
-      const Eigen::VectorXd next = anderson.next(state, mapped);
-      p_guess = next.head(np);
-      u_prev = next.tail(nu) / u_scale;
-    } else {
-      p_guess = p;
     }
-    if (options_.relaxation != CouplingRelaxation::anderson) u_prev = u;
-    if (breaks_this_pass == 0 && summary.pressure_residual <= options_.pressure_tolerance &&
-        summary.displacement_residual <= options_.displacement_tolerance) {
-      if (fracture_ && !check_every_pass) {
-        // A coupled equilibrium: break what fails under its forces, then converge again from the
-        // broken state (springs relaxed there, a fresh Anderson history: the map changed).
-        int n_breaks = 0;
-        if (!break_beams(k, n_breaks)) break;
-        if (n_breaks > 0) {
-          u_prev = mechanics_->displacement();
-          anderson.reset();
-          last_break_pass = k;  // Aitken restarts at the next pass
-          continue;
-        }
-      }
-      converged = true;
-      break;
-    }
+    return true;
   }
+  return false;
+}
+
+bool CoupledModel::solve_mechanics(int pass, const PassGuess& guess, bool check_every_pass, int& n_breaks,
+                                   CoupledStepSummary& summary) {
+  // The pressure force of the guess (Eq. 17) and the undrained predictor's springs (Eq. 20).
+  const Lattice& l = lattice();
+  Eigen::VectorXd f = pressure_forces(l, reference_dual_, guess.pressure, flow_->parameters().b, options_.terms);
+  if (options_.terms.psi > 0.0) f += spring_preload(l, springs_, guess.displacement);
+  mechanics_->set_external_forces(f);
+  // Solve, then break one beam at a time until none fails (the stresses of the effective, i.e. beam,
+  // forces; V_i of the undeformed dual like the rest of the linear mechanics).
+  if (check_every_pass) return break_beams(pass, n_breaks, summary);
+  const MechanicsSummary ms = mechanics_->solve();
+  summary.mechanics_seconds += ms.solve_seconds;
+  ++summary.n_mechanics_solves;
+  summary.n_contact_changes += ms.n_contact_changes;
+  if (ms.is_converged()) return true;
+  summary.status = CoupledStatus::solver_failure;
+  summary.message = "mechanics at t = " + hm::analytic::format_value(summary.time) + ", pass " + std::to_string(pass) +
+                    ": " + ms.message;
+  return false;
+}
+
+bool CoupledModel::break_beams(int pass, int& n_breaks, CoupledStepSummary& summary) {
+  const BreakLoopSummary bs = break_until_stable(*mechanics_, reference_dual_, fracture_->strengths,
+                                                 fracture_->options, summary.time, break_log_);
+  summary.mechanics_seconds += bs.solve_seconds;
+  summary.stress_seconds += bs.stress_seconds;
+  summary.break_seconds += bs.break_seconds;
+  summary.n_mechanics_solves += bs.n_solves;
+  summary.n_contact_changes += bs.n_contact_changes;
+  n_breaks = bs.n_breaks;
+  summary.n_breaks += bs.n_breaks;
+  if (!bs.is_stable()) {
+    summary.status = CoupledStatus::solver_failure;
+    summary.message = "break loop at t = " + hm::analytic::format_value(summary.time) + ", pass " +
+                      std::to_string(pass) + ": " + to_string(bs.status) + " " + bs.message;
+    return false;
+  }
+  if (n_breaks > 0) flow_->set_broken(broken_flags(mechanics_->states()));
+  return true;
+}
+
+bool CoupledModel::solve_flow(double dt, int pass, const Eigen::VectorXd& u, DualGraph& dual,
+                              CoupledStepSummary& summary) {
+  // The deformed flow geometry, then the flow step with b (V^{n+1} - V^n).
+  const auto tick = std::chrono::steady_clock::now();
+  const Eigen::Matrix2Xd x = positions(u);
+  dual = build_dual_graph(lattice(), x, reference_dual_.options);
+  flow_->update_geometry(dual, x);
+  const auto tock = std::chrono::steady_clock::now();
+  summary.geometry_seconds += std::chrono::duration<double>(tock - tick).count();
+  summary.flow = flow_->solve(dt, unknown_volumes(dual) - volume_);
+  summary.flow_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - tock).count();
+  if (summary.flow.is_ok()) return true;
+  summary.status = CoupledStatus::solver_failure;
+  summary.message = "flow at t = " + hm::analytic::format_value(summary.time) + ", pass " + std::to_string(pass) +
+                    ": " + summary.flow.message;
+  return false;
+}
+
+void CoupledModel::finish_step(double dt, bool converged, DualGraph dual, CoupledStepSummary& summary) {
   if (summary.status != CoupledStatus::solver_failure) {
     if (converged) {
       summary.status = CoupledStatus::converged;
@@ -350,11 +310,6 @@ CoupledStepSummary CoupledModel::step(double dt) {
     // Back to the geometry of t^n so that a retry (e.g. with a smaller dt) starts from a clean state.
     flow_->update_geometry(current_dual_, positions(displacement_));
   }
-  summary.n_broken = n_broken();
-  summary.n_mechanics_factorizations = mechanics_->solver().report().n_factorizations - factorizations_before;
-  summary.n_mechanics_update_failures = mechanics_->solver().report().n_update_failures - update_failures_before;
-  summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return summary;
 }
 
 void CoupledRunSummary::add_accepted_step(const CoupledStepSummary& s) {

@@ -8,24 +8,21 @@
 
 namespace hm::lattice2d {
 
-void CouplingParameters::validate() const {
+void CouplingTerms::validate() const {
   using namespace hm::analytic;
-  require_closed(b, "coupling.b", 0.0, 1.0);
   require_finite(xi, "coupling.xi");
   require_positive(xi, "coupling.xi");
   require_finite(psi, "coupling.psi");
   require_non_negative(psi, "coupling.psi");
-  require_finite(E_over_M, "coupling.E_over_M");
-  require_positive(E_over_M, "coupling.E_over_M");
 }
 
 Eigen::VectorXd pressure_forces(const Lattice& lattice, const DualGraph& dual, const Eigen::VectorXd& pressure,
-                                const CouplingParameters& parameters) {
+                                double b, const CouplingTerms& terms) {
   const int n_t = lattice.n_triangles();
   assert((pressure.size() == n_t || pressure.size() == n_t + 1) && "pressure_forces: one value per triangle (+ p_h)");
   assert(dual.dual_length.size() == lattice.n_beams() && "pressure_forces: dual graph of another lattice");
   const double p_h = pressure.size() > n_t ? pressure[n_t] : 0.0;
-  const double scale = parameters.xi * parameters.b;
+  const double scale = terms.xi * b;
   Eigen::VectorXd f = Eigen::VectorXd::Zero(3 * lattice.n_particles());
   for (int e = 0; e < lattice.n_beams(); ++e) {
     const auto [s, t] = lattice.beam_triangles[static_cast<std::size_t>(e)];
@@ -38,7 +35,7 @@ Eigen::VectorXd pressure_forces(const Lattice& lattice, const DualGraph& dual, c
     f[dof_index(i, 1)] += F_i.y();
     f[dof_index(j, 0)] -= F_i.x();
     f[dof_index(j, 1)] -= F_i.y();
-    if (tag == BoundaryTag::inner && parameters.borehole_wall_traction && p_h != 0.0) {
+    if (tag == BoundaryTag::inner && terms.borehole_wall_traction && p_h != 0.0) {
       // Outward normal of the solid: away from the wall triangle's third vertex.
       const auto& tri = lattice.triangles[static_cast<std::size_t>(s)];
       const int k = tri[0] != i && tri[0] != j ? tri[0] : tri[1] != i && tri[1] != j ? tri[1] : tri[2];
@@ -55,9 +52,9 @@ Eigen::VectorXd pressure_forces(const Lattice& lattice, const DualGraph& dual, c
   return f;
 }
 
-Eigen::VectorXd undrained_spring_stiffness(const Lattice& lattice, const DualGraph& dual,
-                                           const CouplingParameters& parameters) {
-  const double c = parameters.psi * parameters.xi * parameters.b * parameters.b / parameters.E_over_M;
+Eigen::VectorXd undrained_spring_stiffness(const Lattice& lattice, const DualGraph& dual, double b, double E_over_M,
+                                           const CouplingTerms& terms) {
+  const double c = terms.psi * terms.xi * b * b / E_over_M;
   Eigen::VectorXd k(lattice.n_beams());
   // A negative d_st (round-off on a nearly co-circular pair) would make the spring negative and the
   // matrix possibly indefinite; such a segment carries no pressure area anyway.

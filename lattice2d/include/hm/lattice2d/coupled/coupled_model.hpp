@@ -16,6 +16,7 @@
 
 #include "hm/lattice2d/mechanics/beam_stiffness.hpp"
 #include "hm/lattice2d/coupled/coupling.hpp"
+#include "hm/lattice2d/coupled/relaxation.hpp"
 #include "hm/lattice2d/geometry/dual_graph.hpp"
 #include "hm/lattice2d/fracture/failure.hpp"
 #include "hm/lattice2d/flow/flow_network.hpp"
@@ -36,16 +37,6 @@ std::string to_string(CouplingSplit split);
 /// Inverse of to_string; throws hm::InputError "coupling.split = 'x', allowed: undrained, drained".
 CouplingSplit coupling_split_from_string(std::string_view name);
 
-/// How the pressure guess of the next pass is formed from the flow's result.
-enum class CouplingRelaxation {
-  none,    ///< the flow's pressure as it is (the paper's Fig. 5)
-  aitken,  ///< Aitken's dynamic relaxation of the pressure update (same fixed point; our addition)
-  anderson,  ///< Anderson acceleration of the pressure update (same fixed point; our addition)
-};
-/// "none", "aitken" or "anderson".
-std::string to_string(CouplingRelaxation relaxation);
-/// Inverse of to_string; throws hm::InputError "coupling.relaxation = 'x', allowed: none, aitken, anderson".
-CouplingRelaxation coupling_relaxation_from_string(std::string_view name);
 
 /// When the coupling loop looks for failing beams (with fracture enabled).
 enum class FractureCheck {
@@ -80,12 +71,9 @@ CouplingPredictor coupling_predictor_from_string(std::string_view name);
 struct CouplingOptions {
   /// The split. Default undrained (the paper's primary scheme).
   CouplingSplit split = CouplingSplit::undrained;
-  /// Psi, feedback of the undrained split (Eq. 20). Our choice 1.3, the paper's near-optimum (Fig. 8).
-  /// Allowed: >= 0, finite; must be 0 for the drained split.
-  double psi = 1.3;
-  /// xi, scaling of the pressure force (Eq. 17). Our choice 1 (divergence theorem; docs/coupling.md).
-  /// Allowed: > 0, finite.
-  double xi = 1.0;
+  /// xi, Psi and the borehole wall traction (coupling.hpp). Psi must be 0 for the drained split, the
+  /// split without the Eq. 20 feedback (default_psi gives a case reader the default of each split).
+  CouplingTerms terms;
   /// Iterations stop when max|p^k - p^{k-1}| <= pressure_tolerance * max|p^k| ... Our choice 1e-6.
   /// Allowed: 0 < pressure_tolerance < 1.
   double pressure_tolerance = 1e-6;
@@ -110,12 +98,13 @@ struct CouplingOptions {
   /// Accept a step that hit max_iterations (the paper's "one iteration of both systems" with
   /// max_iterations = 1). Default false: such a step is a numerical failure (status not_converged).
   bool accept_unconverged = false;
-  /// The borehole wall carries the full borehole pressure (CouplingParameters::borehole_wall_traction).
-  bool borehole_wall_traction = true;
 
   /// Throws hm::InputError "coupling.field = value, allowed: rule".
   void validate() const;
 };
+
+/// Psi's default for `split`: CouplingTerms{}.psi for the undrained split, 0 for the drained one.
+double default_psi(CouplingSplit split);
 
 /// Time stepping of CoupledModel::run. Every default is set here.
 struct TimeStepping {
@@ -252,18 +241,28 @@ class CoupledModel {
   const DualGraph& reference_dual() const { return reference_dual_; }
   const FlowNetwork& flow() const { return *flow_; }
   const BeamMechanics& mechanics() const { return *mechanics_; }
-  const CouplingParameters& coupling_parameters() const { return coupling_; }
   const CouplingOptions& options() const { return options_; }
   /// Per-beam spring stiffness of Eq. 20 (zero for the drained split).
   const Eigen::VectorXd& spring_stiffness() const { return springs_; }
   int n_broken() const;
 
  private:
+  // The guess a pass's mechanics sees: the pressure p_g (Eq. 17) and the springs' rest state u_g (Eq. 20).
+  struct PassGuess {
+    Eigen::VectorXd pressure, displacement;
+  };
+  // The sub-steps of step(); each returns false after recording a solver failure in the summary.
+  PassGuess predict(double dt) const;
+  bool iterate(double dt, PassGuess& guess, DualGraph& dual, CoupledStepSummary& summary);  // true: converged
+  bool solve_mechanics(int pass, const PassGuess& guess, bool check_every_pass, int& n_breaks,
+                       CoupledStepSummary& summary);
+  bool break_beams(int pass, int& n_breaks, CoupledStepSummary& summary);
+  bool solve_flow(double dt, int pass, const Eigen::VectorXd& u, DualGraph& dual, CoupledStepSummary& summary);
+  void finish_step(double dt, bool converged, DualGraph dual, CoupledStepSummary& summary);  // accept or restore t^n
   Eigen::Matrix2Xd positions(const Eigen::VectorXd& u) const;
   Eigen::VectorXd unknown_volumes(const DualGraph& dual) const;  // V_s, then V_h
 
   CouplingOptions options_;
-  CouplingParameters coupling_;
   std::unique_ptr<BeamMechanics> mechanics_;
   std::unique_ptr<FlowNetwork> flow_;
   DualGraph reference_dual_;
@@ -277,6 +276,7 @@ class CoupledModel {
   Eigen::VectorXd previous_displacement_;
   double previous_dt_ = 0.0;
   PassObserver pass_observer_;
+  std::unique_ptr<PassRelaxation> relaxation_;
   struct FractureSetup {
     BeamStrengths strengths;
     BreakLoopOptions options;

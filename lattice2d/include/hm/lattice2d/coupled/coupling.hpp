@@ -14,19 +14,15 @@
 
 namespace hm::lattice2d {
 
-/// Constants of the coupling terms. Every default is set here.
-struct CouplingParameters {
-  /// b, Biot coefficient multiplying the pressure force (Eq. 17) and the spring (Eq. 20).
-  /// Allowed: 0 <= b <= 1.
-  double b = 0.5;
+/// The modelling choices of the coupling terms (the material's b and E/M come with the flow
+/// parameters, FlowParameters). Every default is set here; CouplingOptions::terms carries them.
+struct CouplingTerms {
   /// xi, scaling of the pressure force (Eq. 17). Our choice 1: by the divergence theorem xi = 1
   /// reproduces the continuum body force -b grad p (docs/coupling.md, tested). Allowed: > 0, finite.
   double xi = 1.0;
   /// Psi, feedback of the undrained split (Eq. 20); 0 is the drained split. Our choice 1.3, the
   /// paper's near-optimum (Section 3.1, Fig. 8). Allowed: >= 0, finite.
   double psi = 1.3;
-  /// E/M, inverse dimensionless Biot modulus (Eqs. 14, 22); the spring carries M/E. Allowed: > 0, finite.
-  double E_over_M = 0.75;
   /// The borehole wall (annulus) carries the full borehole pressure p_h as a normal traction (the
   /// total-stress boundary condition), lumped half to each end of a wall beam, besides the b-weighted
   /// Voronoi-segment forces. Our choice true; see docs/coupling.md. No effect without a borehole.
@@ -48,14 +44,16 @@ struct CouplingParameters {
 /// pressure sampled at the dual points gives -xi b V_i grad p on interior particles to round-off.
 /// Limits: pressures are cell constants; the signed dual lengths are used as they are (a slightly
 /// negative d_st of a nearly co-circular pair keeps the cells closed).
+/// b is the Biot coefficient (FlowParameters::b, 0 <= b <= 1).
 Eigen::VectorXd pressure_forces(const Lattice& lattice, const DualGraph& dual, const Eigen::VectorXd& pressure,
-                                const CouplingParameters& parameters);
+                                double b, const CouplingTerms& terms);
 
 /// Stiffness per beam of the undrained split's normal spring (Eq. 20 linearised, docs/coupling.md):
 ///   k_ij = Psi xi b^2 (M/E) max(d_st, 0) / L_ij,
 /// all zero for Psi = 0 (the drained split). Feed it to BeamMechanics::set_normal_springs.
-Eigen::VectorXd undrained_spring_stiffness(const Lattice& lattice, const DualGraph& dual,
-                                           const CouplingParameters& parameters);
+/// b and E/M are the material's (FlowParameters::b, FlowParameters::E_over_M > 0).
+Eigen::VectorXd undrained_spring_stiffness(const Lattice& lattice, const DualGraph& dual, double b, double E_over_M,
+                                           const CouplingTerms& terms);
 
 /// The spring's right-hand side K_psi u_ref (3 n_particles): the springs are relaxed at the reference
 /// displacement u_ref (the previous coupling iterate), so that (K + K_psi) u = f + K_psi u_ref has the
