@@ -5,6 +5,7 @@
 //   hmlattice run cases/fig07_rudnicki_free.toml [--out DIR]   the coupled 2D lattice (Sections 2.1-2.3)
 //   hmlattice fractures out/fig12_b0.2 [--link triangle]   recompute a run's fracture statistics
 //   hmlattice analytic rudnicki --Q 0.1 --b 0.5 --t 3e-4 --r 0.01,0.02   closed forms as CSV
+//   hmlattice case-format                                 the case-file reference (docs/case-format.md)
 //
 // Exit codes: 0 success; 1 a verification check failed; 2 bad input (one line on stderr naming the
 // parameter, the value and what is allowed; nothing is written).
@@ -37,6 +38,7 @@ int main(int argc, char** argv) {
   hm::app::add_run_command(app, exit_code, joined(argc, argv));
   hm::app::add_fractures_command(app, joined(argc, argv));
   hm::app::add_analytic_command(app, exit_code);
+  hm::app::add_case_format_command(app);
 
   try {
     app.parse(argc, argv);

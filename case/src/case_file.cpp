@@ -7,6 +7,7 @@
 #include "hm/analytic/biot_modulus.hpp"
 #include "hm/core/input_error.hpp"
 #include "hm/analytic/validation.hpp"
+#include "hm/case/case_keys.hpp"
 
 namespace hm::cases {
 
@@ -129,66 +130,86 @@ CaseFile::CaseFile(const std::filesystem::path& path) : path_(path) {
 
 namespace {
 
-analytic::DimensionlessParameters read_dimensionless(CaseTable& t) {
-  analytic::DimensionlessParameters d;
-  auto& m = d.material;
-  m.nu = t.get_double("nu", m.nu);
-  m.b = t.get_double("b", m.b);
-  // E/M defaults to Eq. 22 with Table 1's porosity, K_w, E at this case's b and nu.
-  m.E_over_M = t.get_double("E_over_M", analytic::E_over_M_table1(m.b, m.nu));
-  m.vol_strain = analytic::parse_vol_strain(t.get_string("vol_strain", to_string(m.vol_strain)));
-  d.Q = t.get_double("Q", d.Q);
-  d.iota = t.get_double("iota", d.iota);
-  d.R_i = t.get_double("R_i", d.R_i);
-  d.tensile_strength = t.get_double("tensile_strength", d.tensile_strength);
-  d.compressive_strength = t.get_double("compressive_strength", d.compressive_strength);
-  d.friction = t.get_double("friction", d.friction);
-  return d;
+// [physics_si]: Table 1's physical inputs and the volumetric-strain choice (not a physical value).
+struct PhysicsSi {
+  analytic::PhysicalParameters p;
+  analytic::VolStrain vol_strain = analytic::VolStrain::plane_strain;
+};
+
+template <class Case, class Field>
+void add_vol_strain(CaseKeys<Case>& k, Field field) {
+  k.choice("vol_strain", field, {analytic::VolStrain::plane_strain, analytic::VolStrain::appendix_a},
+           [](const std::string& s) { return analytic::parse_vol_strain(s); },
+           "the fluid equation's volumetric strain: plane strain, or Appendix A's (docs/errata.md)");
 }
 
-analytic::PhysicalParameters read_physical(CaseTable& t) {
-  analytic::PhysicalParameters p;
-  p.E_si = t.get_double("E", p.E_si);
-  p.nu = t.get_double("nu", p.nu);
-  p.k_si = t.get_double("k", p.k_si);
-  p.k_f_si = t.get_double("k_f", p.k_f_si);
-  p.mu_si = t.get_double("mu", p.mu_si);
-  p.q_si = t.get_double("q", p.q_si);
-  p.R_si = t.get_double("R", p.R_si);
-  p.R_i_si = t.get_double("R_i", p.R_i_si);
-  p.porosity = t.get_double("porosity", p.porosity);
-  p.K_w_si = t.get_double("K_w", p.K_w_si);
-  p.b = t.get_double("b", p.b);
-  p.T_u_si = t.get_double("T_u", p.T_u_si);
-  p.C_u_si = t.get_double("C_u", p.C_u_si);
-  p.mu_i = t.get_double("mu_i", p.mu_i);
-  return p;
+const CaseKeys<analytic::DimensionlessParameters>& physics_keys() {
+  static const CaseKeys<analytic::DimensionlessParameters> keys = [] {
+    CaseKeys<analytic::DimensionlessParameters> k;
+    k.table("physics")
+        .real("Q", [](auto& d) -> auto& { return d.Q; }, ">= 0", "injection rate mu q/(k E) (Eq. 14)")
+        .real("b", [](auto& d) -> auto& { return d.material.b; }, "0 <= b <= 1", "Biot coefficient")
+        .real("nu", [](auto& d) -> auto& { return d.material.nu; }, "0 < nu < 0.5", "Poisson ratio")
+        .real("E_over_M", [](auto& d) -> auto& { return d.material.E_over_M; }, "> 0",
+              "E/M, the inverse dimensionless Biot modulus (Eqs. 14, 22)",
+              [](const analytic::DimensionlessParameters& d) { return analytic::E_over_M_table1(d.material.b, d.material.nu); },
+              "Eq. 22 with Table 1's porosity, K_w and E at this b and nu");
+    add_vol_strain(k, [](auto& d) -> auto& { return d.material.vol_strain; });
+    k.real("R_i", [](auto& d) -> auto& { return d.R_i; }, "0 <= R_i < 1", "borehole radius R_i/R; 0 for point injection")
+        .real("iota", [](auto& d) -> auto& { return d.iota; }, "> 0", "fracture permeability enhancement k_f/k")
+        .real("tensile_strength", [](auto& d) -> auto& { return d.tensile_strength; }, "> 0", "T_u/E")
+        .real("compressive_strength", [](auto& d) -> auto& { return d.compressive_strength; }, "> 0", "C_u/E")
+        .real("friction", [](auto& d) -> auto& { return d.friction; }, ">= 0", "mu_i, internal friction of Eq. 11")
+        .check([](CaseTable&, CaseTable&, analytic::DimensionlessParameters& d) { d.validate(); });
+    return k;
+  }();
+  return keys;
+}
+
+const CaseKeys<PhysicsSi>& physics_si_keys() {
+  static const CaseKeys<PhysicsSi> keys = [] {
+    CaseKeys<PhysicsSi> k;
+    k.table("physics_si");
+    add_vol_strain(k, [](auto& s) -> auto& { return s.vol_strain; });
+    k.real("E", [](auto& s) -> auto& { return s.p.E_si; }, "> 0", "Young modulus [Pa]")
+        .real("nu", [](auto& s) -> auto& { return s.p.nu; }, "0 < nu < 0.5", "Poisson ratio")
+        .real("k", [](auto& s) -> auto& { return s.p.k_si; }, "> 0", "permeability [m^2]")
+        .real("k_f", [](auto& s) -> auto& { return s.p.k_f_si; }, "> 0", "permeability in fractures [m^2]")
+        .real("mu", [](auto& s) -> auto& { return s.p.mu_si; }, "> 0", "fluid viscosity [Pa s]")
+        .real("q", [](auto& s) -> auto& { return s.p.q_si; }, ">= 0", "injection rate per unit axial length [m^2/s]")
+        .real("R", [](auto& s) -> auto& { return s.p.R_si; }, "> 0", "domain outer radius [m]")
+        .real("R_i", [](auto& s) -> auto& { return s.p.R_i_si; }, "0 <= R_i < R", "borehole radius [m]")
+        .real("porosity", [](auto& s) -> auto& { return s.p.porosity; }, "0 < porosity < 1, <= b", "porosity")
+        .real("K_w", [](auto& s) -> auto& { return s.p.K_w_si; }, "> 0", "fluid bulk modulus [Pa]")
+        .real("b", [](auto& s) -> auto& { return s.p.b; }, "0 <= b <= 1", "Biot coefficient")
+        .real("T_u", [](auto& s) -> auto& { return s.p.T_u_si; }, "> 0", "uniaxial tensile strength [Pa]")
+        .real("C_u", [](auto& s) -> auto& { return s.p.C_u_si; }, "> 0", "uniaxial compressive strength [Pa]")
+        .real("mu_i", [](auto& s) -> auto& { return s.p.mu_i; }, ">= 0", "internal friction coefficient");
+    return k;
+  }();
+  return keys;
 }
 
 }  // namespace
+
+std::string physics_reference_markdown() {
+  return physics_keys().reference_markdown() + physics_si_keys().reference_markdown();
+}
 
 CasePhysics read_physics(CaseTable& root) {
   const bool dimensionless = root.has("physics"), physical = root.has("physics_si");
   if (dimensionless && physical)
     root.fail("both [physics] and [physics_si] given, allowed: exactly one of them");
   CasePhysics out;
-  CaseTable t = root.table(physical ? "physics_si" : "physics");
-  try {
-    if (physical) {
-      const auto vs = analytic::parse_vol_strain(t.get_string("vol_strain", "plane-strain"));
-      const auto phys = read_physical(t);
-      t.reject_unknown();
-      out.parameters = analytic::to_dimensionless(phys, vs);
-      out.physical = phys;
-      out.scales = analytic::scales_of(phys);
-    } else {
-      out.parameters = read_dimensionless(t);
-      t.reject_unknown();
-      out.parameters.validate();
-    }
-  } catch (const InputError& e) {
-    if (std::string(e.what()).find(t.file()) == 0) throw;  // already located
-    t.fail(e.what());
+  if (physical) {
+    PhysicsSi si;
+    physics_si_keys().read(root, si);
+    CaseTable t = root.table("physics_si");
+    located(t, "", [&] { out.parameters = analytic::to_dimensionless(si.p, si.vol_strain); });
+    out.physical = si.p;
+    out.scales = analytic::scales_of(si.p);
+  } else {
+    physics_keys().read(root, out.parameters);
   }
   return out;
 }
@@ -197,17 +218,9 @@ std::string physics_to_toml(const CasePhysics& c) {
   const auto& d = c.parameters;
   std::ostringstream os;
   auto v = [](double x) { return format_value(x); };
-  os << "[physics]\n"
-     << "Q = " << v(d.Q) << "\n"
-     << "b = " << v(d.material.b) << "\n"
-     << "nu = " << v(d.material.nu) << "\n"
-     << "E_over_M = " << v(d.material.E_over_M) << "\n"
-     << "vol_strain = \"" << to_string(d.material.vol_strain) << "\"\n"
-     << "R_i = " << v(d.R_i) << "\n"
-     << "iota = " << v(d.iota) << "\n"
-     << "tensile_strength = " << v(d.tensile_strength) << "\n"
-     << "compressive_strength = " << v(d.compressive_strength) << "\n"
-     << "friction = " << v(d.friction) << "\n";
+  // Only the table's lines: the blank line that ends a table comes after the comments below.
+  const std::string table = physics_keys().to_toml(d);
+  os << table.substr(0, table.size() - 1);
   // The physical inputs and scales are comments, so this file is itself a runnable case.
   if (c.physical) {
     const auto& p = *c.physical;

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <vector>
 
-#include "verification/run_command.hpp"
+#include "run_command.hpp"
 
 using hm::test::count_lines;
 using hm::test::run_hmlattice;

@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "hm/verification/harness.hpp"
-#include "verification/run_command.hpp"
+#include "run_command.hpp"
 
 using namespace hm::verification;
 using hm::test::slurp;

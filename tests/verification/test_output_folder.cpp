@@ -6,7 +6,7 @@
 
 #include "folder_snapshot.hpp"
 #include "small_disk.hpp"
-#include "verification/run_command.hpp"
+#include "run_command.hpp"
 
 namespace fs = std::filesystem;
 using hm::test::count_lines;

@@ -70,6 +70,9 @@ struct CasePhysics {
 };
 CasePhysics read_physics(CaseTable& root);
 
+/// The reference of [physics] and [physics_si]: every key, its default, rule and meaning (markdown).
+std::string physics_reference_markdown();
+
 /// The resolved physics as TOML: [physics] with every field, and the physical inputs and scales as
 /// comments if the case gave [physics_si]. Written beside results; itself a valid case section.
 std::string physics_to_toml(const CasePhysics& physics);

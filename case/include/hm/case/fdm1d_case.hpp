@@ -1,11 +1,13 @@
 #pragma once
 /// \file
-/// A 1D case file (model = "fdm1d"): [physics] or [physics_si], [numerics], [output].
+/// A 1D case file (model = "fdm1d"): [physics] or [physics_si] (read_physics), then the tables of
+/// fdm1d_case_keys() — [numerics], [output]. Every key: docs/case-format.md (`hmlattice case-format`).
 #include <filesystem>
 #include <string>
 
 #include "hm/fdm1d/fdm1d.hpp"
 #include "hm/case/case_file.hpp"
+#include "hm/case/case_keys.hpp"
 
 namespace hm::cases {
 
@@ -13,6 +15,9 @@ struct Fdm1dCase {
   CasePhysics physics;
   hm::fdm1d::Fdm1dNumerics numerics;
 };
+
+/// The keys of a 1D case after [physics]: the reader, the config.toml writer and the reference.
+const CaseKeys<Fdm1dCase>& fdm1d_case_keys();
 
 /// Reads and validates the whole case; throws hm::InputError "<file>: [table] key = value, allowed: ...".
 Fdm1dCase read_fdm1d_case(const std::filesystem::path& file);

@@ -1,21 +1,9 @@
 #pragma once
 /// \file
-/// A 2D lattice case file (model = "lattice2d"), the one format of every `hmlattice run`:
-///   [physics] or [physics_si]  material, Q, b, iota, R_i (read_physics; R_i = 0 for domain = "disk")
-///   [lattice]    domain ("disk" | "annulus"), n_particles, seed, boundary_spacing_factor,
-///                stiffness_scaling ("voronoi_facet" | "uniform": the calibrated beams of that scaling)
-///   [mechanics]  outer ("free" | "fixed"), solver ("cholmod" | "pcg")
-///   [flow]       borehole_storage ("biot-modulus" | "none"), borehole_deformation ("biot" | "none"),
-///                reuse_factorisation, refresh_after_refinements
-///   [coupling]   split ("undrained" | "drained"), psi, xi, pressure_tolerance, displacement_tolerance,
-///                max_iterations, accept_unconverged, relaxation ("none" | "aitken" | "anderson"), initial_relaxation,
-///                anderson_depth, fracture_check ("every_pass" | "at_convergence"), predictor ("previous" | "linear")
-///   [numerics]   dt_initial, dt_growth, dt_max, t_end, max_step_halvings
-///   [fracture]   enabled, distribution ("none" | "uniform" | "weibull"), width, weibull_modulus,
-///                correlated, seed (of the strengths), crack_tip, crack_tip_length (L_m over R);
-///                the mean strengths and mu_i are [physics] tensile_strength, compressive_strength, friction
-///   [output]     times, vtk, radial_bins, radial_max, fracture_link ("particle" | "triangle")
-/// Every key is optional except where said; every default is the library struct's. Unknown keys are errors.
+/// A 2D lattice case file (model = "lattice2d"), the one format of every `hmlattice run`: [physics]
+/// or [physics_si] (read_physics), then the tables of run_case_keys() — [lattice], [mechanics],
+/// [flow], [coupling], [numerics], [fracture], [output]. Every key, its default and its rule:
+/// docs/case-format.md (`hmlattice case-format`). Every key is optional; unknown keys are errors.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -27,6 +15,7 @@
 #include "hm/lattice2d/geometry/lattice.hpp"
 #include "hm/lattice2d/mechanics/mechanics.hpp"
 #include "hm/case/case_file.hpp"
+#include "hm/case/case_keys.hpp"
 
 namespace hm::cases {
 
@@ -69,6 +58,9 @@ struct RunCase {
   /// The flow parameters of the physics (Q, b, iota, E/M) with this case's borehole node.
   hm::lattice2d::FlowParameters flow_parameters() const;
 };
+
+/// The keys of a 2D case after [physics]: the reader, the config.toml writer and the reference.
+const CaseKeys<RunCase>& run_case_keys();
 
 /// Reads and validates the whole case; throws hm::InputError "<file>: [table] key = value, allowed: ...".
 RunCase read_run_case(const std::filesystem::path& file);

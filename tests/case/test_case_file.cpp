@@ -6,7 +6,7 @@
 #include "hm/analytic/biot_modulus.hpp"
 #include "hm/core/input_error.hpp"
 #include "hm/case/case_file.hpp"
-#include "verification/run_command.hpp"
+#include "run_command.hpp"
 
 using hm::test::TempDir;
 using hm::cases::CaseFile;

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "verification/run_command.hpp"
+#include "run_command.hpp"
 
 using hm::test::count_lines;
 using hm::test::run_hmlattice;

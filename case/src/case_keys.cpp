@@ -1,0 +1,31 @@
+#include "hm/case/case_keys.hpp"
+
+#include "hm/analytic/validation.hpp"
+#include "hm/core/input_error.hpp"
+
+namespace hm::cases {
+
+std::string toml_real(double value) { return analytic::format_value(value); }
+
+std::string toml_bool(bool value) { return value ? "true" : "false"; }
+
+std::string toml_quoted(const std::string& text) { return "\"" + text + "\""; }
+
+std::string toml_reals(const std::vector<double>& values) {
+  std::string s = "[";
+  for (std::size_t i = 0; i < values.size(); ++i) s += (i ? ", " : "") + toml_real(values[i]);
+  return s + "]";
+}
+
+void located(CaseTable& table, const std::string& prefix, const std::function<void()>& read) {
+  try {
+    read();
+  } catch (const InputError& e) {
+    std::string what = e.what();
+    if (what.rfind(table.file(), 0) == 0) throw;  // already located
+    if (!prefix.empty() && what.rfind(prefix, 0) == 0) what = what.substr(prefix.size());
+    table.fail(what);
+  }
+}
+
+}  // namespace hm::cases

@@ -1,0 +1,92 @@
+// The key tables: one entry is read, written to config.toml and listed in the reference. A throwaway
+// test-only table stands in for a new case key; the real tables are checked through a run's config.
+#include <catch2/catch.hpp>
+
+#include <string>
+
+#include "hm/case/case_file.hpp"
+#include "hm/case/case_keys.hpp"
+#include "hm/case/run_case.hpp"
+#include "hm/core/input_error.hpp"
+#include "run_command.hpp"
+
+using hm::cases::CaseFile;
+using hm::cases::CaseKeys;
+using hm::test::TempDir;
+
+namespace {
+
+struct ToyCase {
+  double throwaway = 0.25;
+  int count = 3;
+};
+
+// The table a contributor would extend: one entry per key.
+CaseKeys<ToyCase> toy_keys() {
+  CaseKeys<ToyCase> k;
+  k.table("experiment")
+      .real("throwaway", [](auto& c) -> auto& { return c.throwaway; }, "> 0", "a key that exists only in this test")
+      .integer("count", [](auto& c) -> auto& { return c.count; }, 1, 9, "1 ... 9", "a bounded integer");
+  return k;
+}
+
+ToyCase read_toy(const TempDir& dir, const std::string& toml) {
+  dir.write("toy.toml", toml);
+  CaseFile file(dir.path / "toy.toml");
+  hm::cases::CaseTable root = file.root();
+  ToyCase c;
+  toy_keys().read(root, c);
+  root.reject_unknown();
+  return c;
+}
+
+std::string error_of(const TempDir& dir, const std::string& toml) {
+  try {
+    read_toy(dir, toml);
+  } catch (const hm::InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+}  // namespace
+
+TEST_CASE("A key added as one table entry is read, written to config.toml and listed in the reference",
+          "[case]") {
+  TempDir dir("case-keys");
+  // Read: the file's value, or the struct's default when absent.
+  CHECK(read_toy(dir, "[experiment]\nthrowaway = 0.5\n").throwaway == 0.5);
+  CHECK(read_toy(dir, "").throwaway == 0.25);
+  CHECK(read_toy(dir, "[experiment]\ncount = 7\n").count == 7);
+  // Rejected with file, table, key and rule: out of range, wrong type, misspelt.
+  CHECK(error_of(dir, "[experiment]\ncount = 12\n") == (dir.path / "toy.toml").string() +
+                                                           ": [experiment] count = 12, allowed: 1 ... 9");
+  CHECK_THAT(error_of(dir, "[experiment]\nthrowaway = \"x\"\n"),
+             Catch::Contains("[experiment] throwaway = \"x\", allowed: a number"));
+  CHECK_THAT(error_of(dir, "[experiment]\nthrowaway_ = 1\n"),
+             Catch::Contains("[experiment] unknown key 'throwaway_', allowed: count, throwaway"));
+  // Written: the resolved value, and what is written reads back to the same case.
+  ToyCase c;
+  c.throwaway = 0.125;
+  const std::string toml = toy_keys().to_toml(c);
+  CHECK(toml == "[experiment]\nthrowaway = 0.125\ncount = 3\n\n");
+  CHECK(read_toy(dir, toml).throwaway == 0.125);
+  // Documented: type, default, rule and meaning.
+  CHECK_THAT(toy_keys().reference_markdown(),
+             Catch::Contains("| `throwaway` | real | `0.25` | > 0 | a key that exists only in this test |"));
+}
+
+TEST_CASE("Every key of the 2D case tables is in the resolved config.toml and reads back to the same case",
+          "[case]") {
+  TempDir dir("case-keys-run");
+  dir.write("case.toml", "[physics]\nR_i = 0\n[coupling]\nsplit = \"drained\"\n[numerics]\nt_end = 2e-4\n");
+  const hm::cases::RunCase c = hm::cases::read_run_case(dir.path / "case.toml");
+  const std::string config = hm::cases::run_case_to_toml(c, "");
+  for (const auto& table : hm::cases::run_case_keys().tables())
+    for (const auto& key : table.keys) CHECK_THAT(config, Catch::Contains("\n" + key.name + " = "));
+  // The computed defaults: Psi follows the split, dt_max is t_end.
+  CHECK_THAT(config, Catch::Contains("\npsi = 0\n"));
+  CHECK_THAT(config, Catch::Contains("\nt_end = 2e-04\ndt_max = 2e-04\n"));
+  dir.write("config.toml", config);
+  CHECK(hm::cases::run_case_to_toml(hm::cases::read_run_case(dir.path / "config.toml"), "") == config);
+}
