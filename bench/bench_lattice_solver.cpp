@@ -1,4 +1,4 @@
-// Speed of the dry lattice's mechanical solve (issue 4, item 5): the annulus R_i = 0.138 with a fixed
+// Speed of the dry lattice's mechanical solve: the annulus R_i = 0.138 with a fixed
 // outer boundary and a borehole pressure, at N particles. For each N it times
 //   1. CHOLMOD analyse + factorise (nested dissection; supernodal, converted to simplicial LDL'),
 //   2. a solve with that factor,

@@ -1,4 +1,4 @@
-// Benchmarks of the dry lattice's elastic side (issue 4, items 3 and 7): the calibration of the beam
+// Benchmarks of the dry lattice's elastic side: the calibration of the beam
 // constants (measured E, nu per seed and density against the target), the patch test (mean interior
 // particle stress under a homogeneous boundary strain against the calibrated continuum) and Lame's
 // thick-walled cylinder (radially averaged u_r and sigma_theta, free and fixed outer boundary, two

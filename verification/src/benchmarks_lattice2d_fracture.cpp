@@ -1,4 +1,4 @@
-// Benchmarks of the dry lattice's fracture side (issue 4, item 7): Sneddon's pressurised crack of
+// Benchmarks of the dry lattice's fracture side: Sneddon's pressurised crack of
 // broken beams (Appendix C, Fig. C2), uniaxial tension of a rectangle (peak stress against T_u, a crack
 // across the load) and the first break of the thick-walled cylinder under internal pressure (Lamé).
 // Each writes CSV for its figure, the break log and a few VTK snapshots into ctx.data_dir.
