@@ -13,7 +13,7 @@
 //   build/bench/bench_lattice_solver                 # N = 1e4 and 1e5
 //   build/bench/bench_lattice_solver 20000 --quick   # one N, no variants
 //   build/bench/bench_lattice_solver 100000 --no-pcg  # CHOLMOD only (e.g. to compare BLAS libraries)
-// Wall times on whatever machine runs it; the target is step 3 <= 0.1 s at N = 1e5.
+// Wall times on whatever machine runs it; the target is step 3 <= 0.1 s at N = 1e5.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
