@@ -1,4 +1,4 @@
-// Speed of a whole coupled fracture run (issue 6, item 5): the Fig. 12 setting (borehole annulus,
+// Speed of a whole coupled fracture run: the Fig. 12 setting (borehole annulus,
 // Q = 0.01, b = 0.2, iota = 1, flux-boundary borehole, undrained split Psi = 1.3 with Anderson
 // acceleration, tolerances 1e-4, fracture on with +-5% strengths) from t* = 0 to 2.72e-2 — what
 // cases/fig12_b0.2_quick.toml and cases/paper/fig12_b0.2.toml run — at N particles (default 1e4).

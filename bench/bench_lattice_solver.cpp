@@ -1,4 +1,4 @@
-// Speed of the dry lattice's mechanical solve (issue 4, item 5): the annulus R_i = 0.138 with a fixed
+// Speed of the dry lattice's mechanical solve: the annulus R_i = 0.138 with a fixed
 // outer boundary and a borehole pressure, at N particles. For each N it times
 //   1. CHOLMOD analyse + factorise (nested dissection; supernodal, converted to simplicial LDL'),
 //   2. a solve with that factor,
@@ -13,7 +13,7 @@
 //   build/bench/bench_lattice_solver                 # N = 1e4 and 1e5
 //   build/bench/bench_lattice_solver 20000 --quick   # one N, no variants
 //   build/bench/bench_lattice_solver 100000 --no-pcg  # CHOLMOD only (e.g. to compare BLAS libraries)
-// Wall times on whatever machine runs it; the issue's target is step 3 <= 0.1 s at N = 1e5.
+// Wall times on whatever machine runs it; the target is step 3 <= 0.1 s at N = 1e5.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>

@@ -123,7 +123,7 @@ for a, e, q, title in zip(ax, dev, ("$u_r^*$", "$p^*$"), ("radial displacement",
     a.set_ylim(bottom=0.0)
     a.ticklabel_format(axis="y", style="sci", scilimits=(-2, 2))
     e.axhline(0.0, color="k", lw=1.0)
-    for bound in (-10.0, 10.0):  # issue 5's 10% on the shaded range
+    for bound in (-10.0, 10.0):  # lattice2d.rudnicki's 10% gate (N = 3e4) on the shaded range
         e.axhline(bound, color="k", lw=0.6, ls=":")
     e.set(xlabel="$r^*$", ylabel=f"{q} / Rudnicki − 1 [%]")
 # Rudnicki's p* grows like -ln r* at the source: cap the axis at the lattice's values so the tail shows.

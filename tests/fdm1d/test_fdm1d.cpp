@@ -163,7 +163,7 @@ TEST_CASE("The steady state matches Appendix B at second order in dr", "[fdm1d]"
     require_second_order(e1.sigma_r, e2.sigma_r, e4.sigma_r);
     require_second_order(e1.sigma_theta, e2.sigma_theta, e4.sigma_theta);
     require_second_order(e1.sigma_z, e2.sigma_z, e4.sigma_z);
-    // The target for p at n_r = 400 (observed 5.0e-6 = 1.1 dr^2: the face fluxes
+    // The target for p at n_r = 400 (observed 5.0e-6 = 1.1 dr^2: the face fluxes
     // Q dr/(2 pi r) approximate (Q/2pi) ln(r_+/r_-) to dr^3/(12 r^3)).
     CHECK(e4.p <= 1e-4);
     // u and the stresses at n_r = 400: observed <= 8.1e-4 (u) and 1.8e-3 (sigma_r); bound 2x that.

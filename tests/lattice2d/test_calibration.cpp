@@ -163,8 +163,8 @@ TEST_CASE("The stored beam constants give E = 1 within 2% and the documented nu 
           "[lattice2d][slow]") {
   // Regression snapshot of calibrated_beam_parameters(scaling) (2026-11-22; docs/lattice.md,
   // "Calibration"), mean over seeds 1-3: voronoi_facet (default) E = 1.0000 (sd 0.0047), nu = 0.2500
-  // (sd 0.0015); uniform E = 1.0000 (sd 0.0036), nu = 0.2236 (sd 0.0009). E: the issue's 2%. nu: the
-  // issue's 0.02 from the target 0.25 for the default, and for both a regression band of three times
+  // (sd 0.0015); uniform E = 1.0000 (sd 0.0036), nu = 0.2236 (sd 0.0009). E: the calibration's 2%. nu:
+  // the calibration's 0.02 from the target 0.25 for the default, and for both a regression band of three times
   // the seed scatter (0.005, 0.002). Uniform beams cannot reach 0.25 (central-force limit ~0.224).
   struct Expected { StiffnessScaling scaling; double nu, band; };
   for (const Expected x : {Expected{StiffnessScaling::voronoi_facet, 0.25, 0.005},
@@ -183,7 +183,7 @@ TEST_CASE("The stored beam constants give E = 1 within 2% and the documented nu 
     CHECK(nu == Approx(x.nu).margin(x.band));
     CHECK(nu == Approx(calibrated_continuum(x.scaling).poisson_ratio).margin(x.band));
   }
-  CHECK(std::abs(calibrated_continuum(StiffnessScaling::voronoi_facet).poisson_ratio - 0.25) <= 0.02);  // the issue
+  CHECK(std::abs(calibrated_continuum(StiffnessScaling::voronoi_facet).poisson_ratio - 0.25) <= 0.02);  // the target
   CHECK(std::abs(calibrated_continuum(StiffnessScaling::uniform).poisson_ratio - 0.25) > 0.02);  // documents the miss
 }
 

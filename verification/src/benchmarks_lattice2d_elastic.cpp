@@ -1,4 +1,4 @@
-// Benchmarks of the dry lattice's elastic side (issue 4, items 3 and 7): the calibration of the beam
+// Benchmarks of the dry lattice's elastic side: the calibration of the beam
 // constants (measured E, nu per seed and density against the target), the patch test (mean interior
 // particle stress under a homogeneous boundary strain against the calibrated continuum) and Lame's
 // thick-walled cylinder (radially averaged u_r and sigma_theta, free and fixed outer boundary, two
@@ -38,10 +38,11 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// The issue's targets: E = 1, nu = 0.25 (plane strain), reached with the default facet-scaled beams.
+// The calibration targets: E = 1 (the unit of stress) and Table 1's nu = 0.25 (plane strain), reached with
+// the default facet-scaled beams.
 constexpr double target_e = 1.0, target_nu = 0.25;
 const char* target_reason =
-    "the issue's E = 1, nu = 0.25 within 2%: the default facet-scaled beams are calibrated to nu = 0.25 "
+    "the target E = 1, nu = 0.25 within 2%: the default facet-scaled beams are calibrated to nu = 0.25 "
     "(with the paper's uniform beams nu cannot exceed ~0.224, docs/lattice.md 'Calibration')";
 
 // --- calibration --------------------------------------------------------------------------------
@@ -103,18 +104,19 @@ BenchmarkResult calibration(const BenchmarkContext& ctx) {
   res.tables.push_back(by_density);
   res.metrics.push_back({.name = "E, mean over seeds 1-3 at N = 1e4", .value = e_default, .reference = target_e,
                          .tolerance = 0.02, .comparison = Comparison::rel_error,
-                         .justification = "the issue's 2% (k_n is scaled for E = 1 on exactly these lattices, so "
-                                          "the check guards the stored constants)"});
+                         .justification = "the calibration's 2% on E (k_n is scaled for E = 1 on exactly these "
+                                          "lattices, so the check guards the stored constants)"});
   for (auto [n, em] : e_by_density)
     if (n != 10000)
       res.metrics.push_back({.name = "E at another density, N = " + std::to_string(n) + " (constants from N = 1e4)",
                              .value = em, .reference = target_e, .tolerance = 0.02, .comparison = Comparison::rel_error,
-                             .justification = "the issue's 2%, on lattices the calibration did not see; E is "
+                             .justification = "the calibration's 2% on E, on lattices it did not see; E is "
                                               "spacing-independent for per-beam k_n up to a measured drift of "
                                               "+0.6% (2.5e3) to -0.6% (1e5)"});
   res.metrics.push_back({.name = "nu, mean over seeds 1-3 at N = 1e4, against the target 0.25", .value = nu_default,
                          .reference = target_nu, .tolerance = 0.02, .comparison = Comparison::abs_error,
-                         .justification = "the issue's 0.02 (facet-scaled beams, calibrated to 0.25 on these lattices)"});
+                         .justification = "the calibration's 0.02 on nu (facet-scaled beams, calibrated to 0.25 on "
+                                          "these lattices)"});
   res.metrics.push_back({.name = "nu, mean over seeds 1-3 at N = 1e4, against the documented value",
                          .value = nu_default, .reference = stored.poisson_ratio, .tolerance = 0.005,
                          .comparison = Comparison::abs_error,
@@ -215,8 +217,8 @@ BenchmarkResult patch_test(const BenchmarkContext& ctx) {
 
   res.metrics.push_back({.name = "|mean interior stress - calibrated continuum| / |sigma|", .value = error,
                          .tolerance = 0.02, .comparison = Comparison::at_most,
-                         .justification = "the issue's 2%; the seed-to-seed scatter of the calibrated E is 0.4% and "
-                                          "the region mean's sampling error ~27%/sqrt(n) < 1%"});
+                         .justification = "the calibration's 2% on E; the seed-to-seed scatter of the calibrated E "
+                                          "is 0.4% and the region mean's sampling error ~27%/sqrt(n) < 1%"});
   res.metrics.push_back({.name = "|mean interior stress - continuum (E = 1, nu = 0.25)| / |sigma|", .value = error_target,
                          .tolerance = 0.02, .comparison = Comparison::at_most, .justification = target_reason});
   res.metrics.push_back({.name = "solve converged (equilibrium residual)", .value = summary.equilibrium_residual,
@@ -361,10 +363,11 @@ BenchmarkResult lame(const BenchmarkContext& ctx) {
                          "first order in the spacing; the largest error sits in the innermost shell";
   res.metrics.push_back({.name = "max shell u_r error / u_r(R_i), free outer, N = " + fine + " (the issue's 3%)",
                          .value = fine_free.u_error, .tolerance = 0.03, .comparison = Comparison::at_most,
-                         .justification = std::string("the issue's 3% at N >= 1e4 (free boundary); ") + measured});
+                         .justification = std::string("the target 3% at N >= 1e4 (free boundary); ") + measured});
   res.metrics.push_back({.name = "max shell u_r error / u_r(R_i), fixed outer, N = " + fine, .value = fine_fixed.u_error,
                          .tolerance = 0.03, .comparison = Comparison::at_most,
-                         .justification = std::string("the issue's 3%, applied to the fixed boundary too; ") + measured});
+                         .justification = std::string("the free boundary's 3%, applied to the fixed boundary too; ") +
+                                          measured});
   res.metrics.push_back({.name = "observed order of the u_r error in the spacing (free)", .value = order(coarse_free, fine_free),
                          .tolerance = 0.5, .comparison = Comparison::at_least,
                          .justification = "the error must fall with the spacing: the wall row and the boundary layers "

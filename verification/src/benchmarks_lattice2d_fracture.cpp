@@ -1,4 +1,4 @@
-// Benchmarks of the dry lattice's fracture side (issue 4, item 7): Sneddon's pressurised crack of
+// Benchmarks of the dry lattice's fracture side: Sneddon's pressurised crack of
 // broken beams (Appendix C, Fig. C2), uniaxial tension of a rectangle (peak stress against T_u, a crack
 // across the load) and the first break of the thick-walled cylinder under internal pressure (Lamé).
 // Each writes CSV for its figure, the break log and a few VTK snapshots into ctx.data_dir.
@@ -249,7 +249,7 @@ BenchmarkResult sneddon(const BenchmarkContext& ctx) {
     // The free outer boundary is the paper's default ("mechanically free unless confinement is
     // included") and gates; the fixed one is shown for the domain effect (see the note) and does not.
     const bool gate = r.label == "free";
-    const std::string why = gate ? "the issue's target (10%): discretisation (c/h ~ 5-20 spacings, particles half a "
+    const std::string why = gate ? "10%: discretisation (c/h ~ 5-20 spacings, particles half a "
                                    "spacing off the faces) plus the finite domain (a few % for a free boundary)"
                                  : "shown for the domain effect: a fixed boundary at R = 1 stiffens the disk by "
                                    "~(c/R)^2-order; not the paper's setup, so not gating";
@@ -501,7 +501,7 @@ BenchmarkResult cylinder_first_break(const BenchmarkContext& ctx) {
     res.metrics.push_back({.name = "first-break pressure within 10% of Lamé p_crit (issue target; not met, see note)" + tag,
                            .value = first.load / p_crit, .reference = 1.0, .tolerance = 0.10,
                            .comparison = Comparison::rel_error,
-                           .justification = "the issue's target; the wall particles' clipped cells over-read the hoop "
+                           .justification = "the target; the wall particles' clipped cells over-read the hoop "
                                             "stress (~1.4x on average, with scatter) though the wall strains like Lamé "
                                             "(table and note); not reachable with per-particle stresses",
                            .gating = false});
@@ -539,7 +539,7 @@ BenchmarkResult cylinder_first_break(const BenchmarkContext& ctx) {
       "'wall beams' column). The +-5% heterogeneity lowers the first break to the weakest well-loaded wall beam "
       "(compare the 'none' row). The crack-tip factor plays no part before the first break (no broken beam yet); "
       "afterwards it multiplies the tip beams' stress by (L/2L_m)^(1/2) > 1 at this resolution. "
-      "Why the issue's 10% is not met (docs/lattice.md, 'Why the wall over-reads'): the wall is not over-strained "
+      "Why the 10% is not met (docs/lattice.md, 'Why the wall over-reads'): the wall is not over-strained "
       "(wall-beam strain / Lamé hoop strain 0.96 at N = 1e4, 0.99 at 1e5), but a wall particle's virial stress "
       "counts its two wall beams' full forces over a half cell clipped at the wall; in the wall's nearly deviatoric "
       "state (sigma_theta ~ -sigma_r) the random boundary cell's fabric reads ~1.4x ('mean' column; 1.5x already "

@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// Fracture statistics of a broken-beam pattern (issue #6): the broken beams grouped into fractures
+/// Fracture statistics of a broken-beam pattern: the broken beams grouped into fractures
 /// (clusters of beams connected through shared particles, or only through shared triangles), each
 /// described by its size, radial extent, direction and failure modes, a per-snapshot summary (radial
 /// vs secondary fractures, radial arms crossing a circle) and CSV writers. Dimensionless lengths

@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// VTK XML output for ParaView (issue 4, item 6): one UnstructuredGrid file (.vtu) per snapshot and a
+/// VTK XML output for ParaView: one UnstructuredGrid file (.vtu) per snapshot and a
 /// .pvd collection listing the snapshots with their times. Data arrays inline, base64 binary (default;
 /// measured at N = 1e5 with every field set: 51 MB in 0.4 s against ASCII's 87 MB in 0.5 s) or ASCII
 /// (readable, for debugging); both keep Float64 values exact. Layout (docs/lattice.md, "VTK output"):

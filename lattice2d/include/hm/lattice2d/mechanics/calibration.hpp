@@ -80,7 +80,7 @@ LatticeSpec calibration_rectangle(long long disk_particles, double side, std::ui
 /// Input of calibrate_beams.
 struct CalibrationSpec {
   /// Particle count of the unit disk whose point density is calibrated (Section 2.1: 1e3 to 2.5e5;
-  /// the default 1e4). E is independent of the density for per-beam constants (measured, see
+  /// default 1e4). E is independent of the density for per-beam constants (measured, see
   /// docs/lattice.md). Allowed: 500 <= n_particles, and the rectangle holding 500 to 5e6 particles.
   long long n_particles = 10000;
   /// Side of the square test rectangle, over R. Our choice 2 (the disk's diameter): at N = 1e4 it
