@@ -9,7 +9,7 @@
 #include "hm/analytic/rudnicki.hpp"
 #include "hm/analytic/sneddon.hpp"
 #include "hm/analytic/steady_borehole.hpp"
-#include "hm/analytic/validation.hpp"
+#include "hm/core/validation.hpp"
 #include "hm/core/csv_writer.hpp"
 
 namespace hm::app {
@@ -17,6 +17,7 @@ namespace hm::app {
 namespace {
 
 using namespace hm::analytic;
+using namespace hm::core;  // require_* and format_value
 using core::CsvWriter;
 
 const std::vector<std::string> radial_columns = {"r", "p", "u_r", "sigma_r", "sigma_theta", "sigma_z"};

@@ -2,9 +2,11 @@
 
 #include "hm/analytic/biot_modulus.hpp"
 #include "hm/core/input_error.hpp"
-#include "hm/analytic/validation.hpp"
+#include "hm/core/validation.hpp"
 
 namespace hm::analytic {
+
+using namespace hm::core;  // require_* and format_value
 
 void PhysicalParameters::validate() const {
   require_positive(E_si, "E");

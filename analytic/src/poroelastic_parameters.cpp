@@ -1,9 +1,11 @@
 #include "hm/analytic/poroelastic_parameters.hpp"
 
 #include "hm/core/input_error.hpp"
-#include "hm/analytic/validation.hpp"
+#include "hm/core/validation.hpp"
 
 namespace hm::analytic {
+
+using namespace hm::core;  // require_* and format_value
 
 VolStrain parse_vol_strain(std::string_view text, std::string_view key) {
   if (text == "plane-strain") return VolStrain::plane_strain;

@@ -8,9 +8,11 @@
 #include <stdexcept>
 #include <string>
 
-#include "hm/analytic/validation.hpp"
+#include "hm/core/validation.hpp"
 
 namespace hm::analytic {
+
+using namespace hm::core;  // require_* and format_value
 
 namespace {
 

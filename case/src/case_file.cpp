@@ -6,12 +6,12 @@
 
 #include "hm/analytic/biot_modulus.hpp"
 #include "hm/core/input_error.hpp"
-#include "hm/analytic/validation.hpp"
+#include "hm/core/validation.hpp"
 #include "hm/case/case_keys.hpp"
 
 namespace hm::cases {
 
-using hm::analytic::format_value;
+using hm::core::format_value;
 
 CaseTable::CaseTable(const toml::value& table, std::string file, std::string name)
     : table_(table), file_(std::move(file)), name_(std::move(name)) {}

@@ -1,11 +1,11 @@
 #include "hm/case/case_keys.hpp"
 
-#include "hm/analytic/validation.hpp"
+#include "hm/core/validation.hpp"
 #include "hm/core/input_error.hpp"
 
 namespace hm::cases {
 
-std::string toml_real(double value) { return analytic::format_value(value); }
+std::string toml_real(double value) { return core::format_value(value); }
 
 std::string toml_bool(bool value) { return value ? "true" : "false"; }
 

@@ -5,7 +5,7 @@
 #include <utility>
 
 #include "hm/core/input_error.hpp"
-#include "hm/analytic/validation.hpp"
+#include "hm/core/validation.hpp"
 
 namespace hm::cases {
 

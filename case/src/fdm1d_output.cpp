@@ -2,7 +2,7 @@
 
 #include "hm/analytic/failure_criteria.hpp"
 #include "hm/analytic/steady_borehole.hpp"
-#include "hm/analytic/validation.hpp"
+#include "hm/core/validation.hpp"
 #include "hm/core/file_output.hpp"
 #include "hm/core/csv_writer.hpp"
 
@@ -27,7 +27,7 @@ void write_fdm1d_results(const std::filesystem::path& dir, const hm::fdm1d::Fdm1
   });
   core::write_file_atomically(dir / "probes.csv", [&](std::ostream& f) {
     std::vector<std::string> columns = {"t"};
-    for (double r : res.probe_radii) columns.push_back("p_r" + analytic::format_value(r));
+    for (double r : res.probe_radii) columns.push_back("p_r" + core::format_value(r));
     CsvWriter w(f, columns);
     for (std::size_t k = 0; k < res.borehole.size(); ++k) {
       std::vector<double> row = {res.borehole[k].t};

@@ -3,7 +3,7 @@
 #include <limits>
 
 #include "hm/core/input_error.hpp"
-#include "hm/analytic/validation.hpp"
+#include "hm/core/validation.hpp"
 #include "hm/lattice2d/mechanics/calibration.hpp"
 #include "hm/case/case_keys.hpp"
 
@@ -30,10 +30,10 @@ std::string calibration_comment(const RunCase& c) {
   const lt::BeamParameters beams = c.beams();
   const lt::ElasticConstants continuum = lt::calibrated_continuum(c.stiffness_scaling);
   return "# beams: calibrated_beam_parameters(" + lt::to_string(c.stiffness_scaling) +
-         ") k_n = " + analytic::format_value(beams.normal_stiffness) + ", a = " + analytic::format_value(beams.aspect) +
-         ", nu0 = " + analytic::format_value(beams.beam_poisson) + ";\n# measured continuum (calibration, " +
-         "docs/lattice.md): E = " + analytic::format_value(continuum.youngs_modulus) +
-         ", nu = " + analytic::format_value(continuum.poisson_ratio) + " (plane strain)\n";
+         ") k_n = " + core::format_value(beams.normal_stiffness) + ", a = " + core::format_value(beams.aspect) +
+         ", nu0 = " + core::format_value(beams.beam_poisson) + ";\n# measured continuum (calibration, " +
+         "docs/lattice.md): E = " + core::format_value(continuum.youngs_modulus) +
+         ", nu = " + core::format_value(continuum.poisson_ratio) + " (plane strain)\n";
 }
 
 CaseKeys<RunCase> make_run_case_keys() {
@@ -58,7 +58,7 @@ CaseKeys<RunCase> make_run_case_keys() {
         const double R_i = c.physics.parameters.R_i;
         const std::string physics_table = c.physics.physical ? "physics_si" : "physics";
         if (c.lattice.domain == lt::DomainShape::disk && R_i != 0.0)
-          root.table(physics_table).fail("R_i = " + analytic::format_value(R_i) +
+          root.table(physics_table).fail("R_i = " + core::format_value(R_i) +
                                          ", allowed: 0 for [lattice] domain = \"disk\" (point injection at r = 0)");
         if (c.lattice.domain == lt::DomainShape::annulus && !(R_i > 0.0))
           root.table(physics_table).fail("R_i = 0, allowed: 0 < R_i < 1 for [lattice] domain = \"annulus\"");
@@ -150,7 +150,7 @@ CaseKeys<RunCase> make_run_case_keys() {
         st.compressive_strength = c.physics.parameters.compressive_strength;
         st.friction = c.physics.parameters.friction;
         st.validate();
-        analytic::require_positive(c.break_loop.crack_tip.material_length, "crack_tip_length");
+        core::require_positive(c.break_loop.crack_tip.material_length, "crack_tip_length");
       });
   k.table("output")
       .reals("times", [](auto& c) -> auto& { return c.output.times; }, "increasing, in (0, t_end]",
@@ -167,8 +167,8 @@ CaseKeys<RunCase> make_run_case_keys() {
       .check([](CaseTable& out, CaseTable&, RunCase& c) {
         const double R_i = c.physics.parameters.R_i;
         if (!(c.output.radial_max > R_i && c.output.radial_max <= 1.0))
-          out.fail("radial_max = " + analytic::format_value(c.output.radial_max) + ", allowed: R_i = " +
-                   analytic::format_value(R_i) + " < radial_max <= 1");
+          out.fail("radial_max = " + core::format_value(c.output.radial_max) + ", allowed: R_i = " +
+                   core::format_value(R_i) + " < radial_max <= 1");
         c.stepping.output_times = c.output.times;
       });
   return k;

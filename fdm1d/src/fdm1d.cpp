@@ -9,33 +9,33 @@
 
 #include "discretisation.hpp"
 #include "hm/core/input_error.hpp"
-#include "hm/analytic/validation.hpp"
+#include "hm/core/validation.hpp"
 
 namespace hm::fdm1d {
 
 namespace an = hm::analytic;
 
 void Fdm1dNumerics::validate(double R_i) const {
-  an::require_at_least(n_r, "n_r", 8);
-  an::require_positive(dt_initial, "dt_initial");
-  an::require_finite(dt_growth, "dt_growth");
-  if (!(dt_growth >= 1.0)) throw InputError("dt_growth = " + an::format_value(dt_growth) + ", allowed: dt_growth >= 1");
-  an::require_positive(dt_max, "dt_max");
+  core::require_at_least(n_r, "n_r", 8);
+  core::require_positive(dt_initial, "dt_initial");
+  core::require_finite(dt_growth, "dt_growth");
+  if (!(dt_growth >= 1.0)) throw InputError("dt_growth = " + core::format_value(dt_growth) + ", allowed: dt_growth >= 1");
+  core::require_positive(dt_max, "dt_max");
   if (!(dt_max >= dt_initial))
-    throw InputError("dt_max = " + an::format_value(dt_max) + ", allowed: dt_max >= dt_initial (" +
-                     an::format_value(dt_initial) + ")");
-  an::require_positive(t_end, "t_end");
+    throw InputError("dt_max = " + core::format_value(dt_max) + ", allowed: dt_max >= dt_initial (" +
+                     core::format_value(dt_initial) + ")");
+  core::require_positive(t_end, "t_end");
   for (std::size_t k = 0; k < output_times.size(); ++k) {
     const std::string name = "output_times[" + std::to_string(k) + "]";
     if (!(output_times[k] > 0.0 && output_times[k] <= t_end))
-      throw InputError(name + " = " + an::format_value(output_times[k]) + ", allowed: 0 < " + name +
-                       " <= t_end (" + an::format_value(t_end) + ")");
+      throw InputError(name + " = " + core::format_value(output_times[k]) + ", allowed: 0 < " + name +
+                       " <= t_end (" + core::format_value(t_end) + ")");
     if (k > 0 && !(output_times[k] > output_times[k - 1]))
-      throw InputError(name + " = " + an::format_value(output_times[k]) +
+      throw InputError(name + " = " + core::format_value(output_times[k]) +
                        ", allowed: strictly increasing output_times");
   }
   for (std::size_t k = 0; k < probe_radii.size(); ++k)
-    an::require_closed(probe_radii[k], "probe_radii[" + std::to_string(k) + "]", R_i, 1.0);
+    core::require_closed(probe_radii[k], "probe_radii[" + std::to_string(k) + "]", R_i, 1.0);
 }
 
 namespace {
@@ -70,7 +70,7 @@ Fdm1dResult run_fdm1d(const an::DimensionlessParameters& params, const Fdm1dNume
                       const ProgressCallback& progress) {
   params.validate();
   if (!(params.R_i > 0.0))
-    throw InputError("R_i = " + an::format_value(params.R_i) +
+    throw InputError("R_i = " + core::format_value(params.R_i) +
                      ", allowed: 0 < R_i < 1 (the 1D model needs a borehole)");
   numerics.validate(params.R_i);
   const auto start = std::chrono::steady_clock::now();
@@ -130,7 +130,7 @@ Fdm1dResult run_fdm1d(const an::DimensionlessParameters& params, const Fdm1dNume
     ++res.summary.n_factorisations;
     if (slot.solver->info() != Eigen::Success) {
       res.summary.status = Fdm1dSummary::Status::singular_matrix;
-      res.summary.message = "sparse LU failed at dt = " + an::format_value(dt) + ": " + slot.solver->lastErrorMessage();
+      res.summary.message = "sparse LU failed at dt = " + core::format_value(dt) + ": " + slot.solver->lastErrorMessage();
       return nullptr;
     }
     return slot.solver.get();
@@ -171,7 +171,7 @@ Fdm1dResult run_fdm1d(const an::DimensionlessParameters& params, const Fdm1dNume
       x = solver->solve(rhs);
       if (solver->info() != Eigen::Success) {
         res.summary.status = Fdm1dSummary::Status::singular_matrix;
-        res.summary.message = "sparse LU solve failed at t = " + an::format_value(t);
+        res.summary.message = "sparse LU solve failed at t = " + core::format_value(t);
         return stop();
       }
       VectorXd u_new(n + 1), p_new(n + 1);

@@ -8,7 +8,7 @@
 #include <numbers>
 
 #include "hm/analytic/steady_borehole.hpp"
-#include "hm/analytic/validation.hpp"
+#include "hm/core/validation.hpp"
 #include "hm/fdm1d/fdm1d.hpp"
 #include "hm/fdm1d/odeint_reference.hpp"
 #include "hm/fdm1d/section32.hpp"

@@ -8,15 +8,15 @@
 
 #include "discretisation.hpp"  // fdm1d/src
 #include "hm/core/input_error.hpp"
-#include "hm/analytic/validation.hpp"
+#include "hm/core/validation.hpp"
 
 namespace hm::fdm1d {
 
 namespace an = hm::analytic;
 
 void OdeintTolerances::validate() const {
-  an::require_positive(absolute, "absolute");
-  an::require_positive(relative, "relative");
+  core::require_positive(absolute, "absolute");
+  core::require_positive(relative, "relative");
 }
 
 namespace {
@@ -58,7 +58,7 @@ Fdm1dOdeintResult run_fdm1d_odeint(const an::DimensionlessParameters& params, co
                                    const OdeintTolerances& tolerances) {
   params.validate();
   if (!(params.R_i > 0.0))
-    throw InputError("R_i = " + an::format_value(params.R_i) +
+    throw InputError("R_i = " + core::format_value(params.R_i) +
                      ", allowed: 0 < R_i < 1 (the 1D model needs a borehole)");
   numerics.validate(params.R_i);
   if (numerics.n_r > 2000)

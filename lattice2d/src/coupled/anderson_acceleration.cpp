@@ -7,14 +7,14 @@
 #include <Eigen/Eigenvalues>
 
 #include "hm/core/input_error.hpp"
-#include "hm/analytic/validation.hpp"
+#include "hm/core/validation.hpp"
 
 namespace hm::lattice2d {
 
 AndersonAcceleration::AndersonAcceleration(int depth, double mixing) : depth_(depth), mixing_(mixing) {
   if (depth < 1) throw hm::InputError("anderson_depth = " + std::to_string(depth) + ", allowed: >= 1");
   if (!(mixing > 0.0 && mixing <= 1.0))
-    throw hm::InputError("initial_relaxation = " + hm::analytic::format_value(mixing) + ", allowed: 0 < value <= 1");
+    throw hm::InputError("initial_relaxation = " + hm::core::format_value(mixing) + ", allowed: 0 < value <= 1");
 }
 
 void AndersonAcceleration::reset() {

@@ -6,7 +6,7 @@
 #include <utility>
 
 #include "hm/core/input_error.hpp"
-#include "hm/analytic/validation.hpp"
+#include "hm/core/validation.hpp"
 
 namespace hm::lattice2d {
 
@@ -51,7 +51,7 @@ std::string to_string(CoupledStatus status) {
 double default_psi(CouplingSplit split) { return split == CouplingSplit::drained ? 0.0 : CouplingTerms{}.psi; }
 
 void CouplingOptions::validate() const {
-  using namespace hm::analytic;
+  using namespace hm::core;
   terms.validate();
   if (split == CouplingSplit::drained && terms.psi != 0.0)
     throw hm::InputError("coupling.psi = " + format_value(terms.psi) + ", allowed: 0 for split = drained");
@@ -65,7 +65,7 @@ void CouplingOptions::validate() const {
 }
 
 void TimeStepping::validate() const {
-  using namespace hm::analytic;
+  using namespace hm::core;
   require_finite(t_end, "numerics.t_end");
   require_positive(t_end, "numerics.t_end");
   require_finite(dt_initial, "numerics.dt_initial");
@@ -159,7 +159,7 @@ Eigen::VectorXd CoupledModel::unknown_volumes(const DualGraph& dual) const {
 CoupledStepSummary CoupledModel::step(double dt) {
   const auto start = std::chrono::steady_clock::now();
   if (!(dt > 0.0 && std::isfinite(dt)))
-    throw hm::InputError("dt = " + hm::analytic::format_value(dt) + ", allowed: > 0, finite");
+    throw hm::InputError("dt = " + hm::core::format_value(dt) + ", allowed: > 0, finite");
   CoupledStepSummary summary;
   summary.dt = dt;
   summary.time = time() + dt;
@@ -239,7 +239,7 @@ bool CoupledModel::solve_mechanics(int pass, const PassGuess& guess, bool check_
   summary.n_contact_changes += ms.n_contact_changes;
   if (ms.is_converged()) return true;
   summary.status = CoupledStatus::solver_failure;
-  summary.message = "mechanics at t = " + hm::analytic::format_value(summary.time) + ", pass " + std::to_string(pass) +
+  summary.message = "mechanics at t = " + hm::core::format_value(summary.time) + ", pass " + std::to_string(pass) +
                     ": " + ms.message;
   return false;
 }
@@ -256,7 +256,7 @@ bool CoupledModel::break_beams(int pass, int& n_breaks, CoupledStepSummary& summ
   summary.n_breaks += bs.n_breaks;
   if (!bs.is_stable()) {
     summary.status = CoupledStatus::solver_failure;
-    summary.message = "break loop at t = " + hm::analytic::format_value(summary.time) + ", pass " +
+    summary.message = "break loop at t = " + hm::core::format_value(summary.time) + ", pass " +
                       std::to_string(pass) + ": " + to_string(bs.status) + " " + bs.message;
     return false;
   }
@@ -277,7 +277,7 @@ bool CoupledModel::solve_flow(double dt, int pass, const Eigen::VectorXd& u, Dua
   summary.flow_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - tock).count();
   if (summary.flow.is_ok()) return true;
   summary.status = CoupledStatus::solver_failure;
-  summary.message = "flow at t = " + hm::analytic::format_value(summary.time) + ", pass " + std::to_string(pass) +
+  summary.message = "flow at t = " + hm::core::format_value(summary.time) + ", pass " + std::to_string(pass) +
                     ": " + summary.flow.message;
   return false;
 }
@@ -290,10 +290,10 @@ void CoupledModel::finish_step(double dt, bool converged, DualGraph dual, Couple
       summary.status = CoupledStatus::accepted_unconverged;
     } else {
       summary.status = CoupledStatus::not_converged;
-      summary.message = "coupling at t = " + hm::analytic::format_value(summary.time) + ": not converged after " +
+      summary.message = "coupling at t = " + hm::core::format_value(summary.time) + ": not converged after " +
                         std::to_string(options_.max_iterations) + " passes (max_iterations); pressure residual " +
-                        hm::analytic::format_value(summary.pressure_residual) + ", displacement residual " +
-                        hm::analytic::format_value(summary.displacement_residual);
+                        hm::core::format_value(summary.pressure_residual) + ", displacement residual " +
+                        hm::core::format_value(summary.displacement_residual);
     }
   }
   if (summary.is_ok()) {

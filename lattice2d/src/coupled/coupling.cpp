@@ -3,13 +3,13 @@
 #include <algorithm>
 #include <cassert>
 
-#include "hm/analytic/validation.hpp"
+#include "hm/core/validation.hpp"
 #include "hm/lattice2d/mechanics/beam_stiffness.hpp"
 
 namespace hm::lattice2d {
 
 void CouplingTerms::validate() const {
-  using namespace hm::analytic;
+  using namespace hm::core;
   require_finite(xi, "coupling.xi");
   require_positive(xi, "coupling.xi");
   require_finite(psi, "coupling.psi");

@@ -12,14 +12,14 @@
 #include <Eigen/SparseCore>
 
 #include "hm/core/input_error.hpp"
-#include "hm/analytic/validation.hpp"
+#include "hm/core/validation.hpp"
 #include "linalg/subtree_solve.hpp"
 
 namespace hm::lattice2d {
 
 namespace {
 
-using hm::analytic::format_value;
+using hm::core::format_value;
 
 // |a - b - c - d| over the sum of the magnitudes; 0 if everything vanishes.
 double relative_imbalance(double injected, double storage, double deformation, double outflow) {
@@ -50,7 +50,7 @@ BoreholeDeformation borehole_deformation_from_string(std::string_view name) {
 }
 
 void FlowParameters::validate() const {
-  using namespace hm::analytic;
+  using namespace hm::core;
   require_non_negative(Q, "Q");
   require_positive(E_over_M, "E_over_M");
   require_closed(b, "b", 0.0, 1.0);

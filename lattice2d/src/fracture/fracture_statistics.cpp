@@ -10,14 +10,14 @@
 #include <Eigen/Geometry>
 
 #include "hm/core/input_error.hpp"
-#include "hm/analytic/validation.hpp"
+#include "hm/core/validation.hpp"
 
 namespace hm::lattice2d {
 
 void FractureStatisticsOptions::validate() const {
-  hm::analytic::require_open(arm_radius_fraction, "fracture_statistics.arm_radius_fraction", 0.0, 1.0);
-  hm::analytic::require_positive(arm_gap_beams, "fracture_statistics.arm_gap_beams");
-  hm::analytic::require_non_negative(sizable_extent, "fracture_statistics.sizable_extent");
+  hm::core::require_open(arm_radius_fraction, "fracture_statistics.arm_radius_fraction", 0.0, 1.0);
+  hm::core::require_positive(arm_gap_beams, "fracture_statistics.arm_gap_beams");
+  hm::core::require_non_negative(sizable_extent, "fracture_statistics.sizable_extent");
 }
 
 std::string to_string(FractureKind kind) {
@@ -101,8 +101,8 @@ double arm_radius(const Lattice& lattice, const FractureStatisticsOptions& optio
 
 int count_crossings(const Lattice& lattice, const std::vector<bool>& broken, double radius, double max_gap_beams) {
   require_one_flag_per_beam(lattice, broken);
-  hm::analytic::require_positive(radius, "fracture_statistics.radius");
-  hm::analytic::require_positive(max_gap_beams, "fracture_statistics.arm_gap_beams");
+  hm::core::require_positive(radius, "fracture_statistics.radius");
+  hm::core::require_positive(max_gap_beams, "fracture_statistics.arm_gap_beams");
   std::vector<double> angles;  // where each straddling broken beam meets the circle, in [0, 2 pi)
   for (int e = 0; e < lattice.n_beams(); ++e) {
     if (!broken[static_cast<std::size_t>(e)]) continue;

@@ -4,7 +4,7 @@
 #include <random>
 
 #include "hm/core/input_error.hpp"
-#include "hm/analytic/validation.hpp"
+#include "hm/core/validation.hpp"
 
 namespace hm::lattice2d {
 
@@ -24,7 +24,7 @@ StrengthDistribution strength_distribution_from_string(std::string_view name) {
 }
 
 void StrengthSpec::validate() const {
-  using namespace hm::analytic;
+  using namespace hm::core;
   require_positive(tensile_strength, "tensile_strength");
   require_positive(compressive_strength, "compressive_strength");
   require_non_negative(friction, "friction");
@@ -59,7 +59,7 @@ double relative_strength(const StrengthSpec& spec, double u) {
 
 BeamStrengths draw_beam_strengths(const StrengthSpec& spec, int n_beams) {
   spec.validate();
-  hm::analytic::require_at_least(n_beams, "n_beams", 0);
+  hm::core::require_at_least(n_beams, "n_beams", 0);
   BeamStrengths out{Eigen::VectorXd(n_beams), Eigen::VectorXd(n_beams), spec.friction};
   std::mt19937_64 rng(spec.seed);
   for (int e = 0; e < n_beams; ++e) {

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cassert>
 
-#include "hm/analytic/validation.hpp"
+#include "hm/core/validation.hpp"
 
 namespace hm::lattice2d {
 
-void DualGraphOptions::validate() const { hm::analytic::require_open(min_dual_ratio, "min_dual_ratio", 0.0, 1.0); }
+void DualGraphOptions::validate() const { hm::core::require_open(min_dual_ratio, "min_dual_ratio", 0.0, 1.0); }
 
 DualGraph build_dual_graph(const Lattice& lattice, const DualGraphOptions& options) {
   return build_dual_graph(lattice, lattice.points, options);

@@ -9,7 +9,7 @@
 
 #include "geometry/delaunay.hpp"
 #include "hm/core/input_error.hpp"
-#include "hm/analytic/validation.hpp"
+#include "hm/core/validation.hpp"
 #include "geometry/point_sampling.hpp"
 
 namespace hm::lattice2d {
@@ -30,7 +30,7 @@ DomainShape domain_shape_from_string(std::string_view name) {
 }
 
 void LatticeSpec::validate() const {
-  using namespace hm::analytic;
+  using namespace hm::core;
   const int shape = static_cast<int>(domain);
   if (shape < 0 || shape > static_cast<int>(DomainShape::rectangle))
     throw InputError("domain = " + to_string(domain) + ", allowed: disk, annulus, rectangle");

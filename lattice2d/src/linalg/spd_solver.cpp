@@ -11,7 +11,7 @@
 #include <cholmod.h>
 
 #include "hm/core/input_error.hpp"
-#include "hm/analytic/validation.hpp"
+#include "hm/core/validation.hpp"
 #include "linalg/subtree_solve.hpp"
 
 namespace hm::lattice2d {
@@ -25,7 +25,7 @@ SpdSolverKind spd_solver_kind_from_string(std::string_view name) {
 }
 
 void SpdSolverOptions::validate() const {
-  using namespace hm::analytic;
+  using namespace hm::core;
   require_at_least(max_modifications, "solver_options.max_modifications", 1);
   require_open(residual_tolerance, "solver_options.residual_tolerance", 0.0, 1.0);
   require_half_open(pivot_tolerance, "solver_options.pivot_tolerance", 0.0, 1.0);
@@ -253,8 +253,8 @@ void CholmodSolver::refactorize() {
   }
   if (!(d_min > options_.pivot_tolerance * d_max)) {
     report_.info = Eigen::NumericalIssue;
-    report_.message = "LDL' pivot " + hm::analytic::format_value(d_min) + " <= pivot_tolerance * max pivot " +
-                      hm::analytic::format_value(d_max) + ": matrix singular or indefinite";
+    report_.message = "LDL' pivot " + hm::core::format_value(d_min) + " <= pivot_tolerance * max pivot " +
+                      hm::core::format_value(d_max) + ": matrix singular or indefinite";
   }
   impl_->factor_ok = report_.info == Eigen::Success;
 }
@@ -334,7 +334,7 @@ void CholmodSolver::modify(const Matrix& W, int sigma) {
   }
   if (!(d_min > options_.pivot_tolerance * d_max)) {
     report_.info = Eigen::NumericalIssue;
-    report_.message = "LDL' pivot " + hm::analytic::format_value(d_min) +
+    report_.message = "LDL' pivot " + hm::core::format_value(d_min) +
                       " after a low-rank modification: matrix singular or indefinite";
   } else {
     report_.info = Eigen::Success;
@@ -397,7 +397,7 @@ Eigen::VectorXd CholmodSolver::solve(const Eigen::VectorXd& b) {
     }
     if (report_.info == Eigen::Success && !(report_.relative_residual <= options_.residual_tolerance)) {
       report_.info = Eigen::NumericalIssue;
-      report_.message = "relative residual " + hm::analytic::format_value(report_.relative_residual) +
+      report_.message = "relative residual " + hm::core::format_value(report_.relative_residual) +
                         " > residual_tolerance after refactorisation (ill-conditioned matrix?)";
     }
   }
@@ -522,7 +522,7 @@ Eigen::VectorXd PcgSolver::solve(const Eigen::VectorXd& b) {
                         ? ""
                         : "CG stopped after " + std::to_string(report_.iterations) +
                               " iterations at relative residual " +
-                              hm::analytic::format_value(report_.relative_residual);
+                              hm::core::format_value(report_.relative_residual);
   if (info == Eigen::Success) previous_ = x;
   return x;
 }

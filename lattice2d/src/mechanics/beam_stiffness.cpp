@@ -7,7 +7,7 @@
 
 #include <Eigen/Cholesky>
 
-#include "hm/analytic/validation.hpp"
+#include "hm/core/validation.hpp"
 #include "hm/core/input_error.hpp"
 
 namespace hm::lattice2d {
@@ -23,7 +23,7 @@ StiffnessScaling stiffness_scaling_from_string(std::string_view name) {
 }
 
 void BeamParameters::validate() const {
-  using namespace hm::analytic;
+  using namespace hm::core;
   require_positive(normal_stiffness, "normal_stiffness");
   require_positive(aspect, "aspect");
   require_open(beam_poisson, "beam_poisson", -1.0, 0.5);

@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "hm/core/input_error.hpp"
-#include "hm/analytic/validation.hpp"
+#include "hm/core/validation.hpp"
 #include "hm/lattice2d/geometry/dual_graph.hpp"
 #include "hm/lattice2d/mechanics/mechanics.hpp"
 #include "hm/lattice2d/mechanics/particle_stress.hpp"
@@ -16,7 +16,7 @@ namespace hm::lattice2d {
 
 namespace {
 
-using hm::analytic::format_value;
+using hm::core::format_value;
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -47,7 +47,7 @@ double sample_sd(const std::vector<double>& x, double mean) {
 }  // namespace
 
 void ElasticTestOptions::validate() const {
-  using namespace hm::analytic;
+  using namespace hm::core;
   require_finite(region_fraction, "elastic_test.region_fraction");
   if (!(region_fraction > 0.0 && region_fraction <= 0.95))
     throw hm::InputError("elastic_test.region_fraction = " + format_value(region_fraction) +
@@ -138,7 +138,7 @@ LatticeSpec calibration_rectangle(long long disk_particles, double side, std::ui
 }
 
 void CalibrationSpec::validate() const {
-  using namespace hm::analytic;
+  using namespace hm::core;
   require_at_least(n_particles, "calibration.n_particles", 500);
   require_positive(rectangle_side, "calibration.rectangle_side");
   const long long n_rectangle = calibration_rectangle(n_particles, rectangle_side, 1).n_particles;

@@ -12,7 +12,7 @@
 #include <Eigen/SparseCore>
 
 #include "hm/core/input_error.hpp"
-#include "hm/analytic/validation.hpp"
+#include "hm/core/validation.hpp"
 
 namespace hm::lattice2d {
 
@@ -25,7 +25,7 @@ BoundarySupport boundary_support_from_string(std::string_view name, std::string_
 }
 
 void BoundaryConditions::validate(const Lattice& lattice) const {
-  using namespace hm::analytic;
+  using namespace hm::core;
   const bool annulus = lattice.spec.domain == DomainShape::annulus;
   require_finite(inner_pressure, "boundary_conditions.inner_pressure");
   require_finite(outer_pressure, "boundary_conditions.outer_pressure");
@@ -58,7 +58,7 @@ void BoundaryConditions::validate(const Lattice& lattice) const {
 }
 
 void MechanicsOptions::validate() const {
-  using namespace hm::analytic;
+  using namespace hm::core;
   require_at_least(max_contact_iterations, "mechanics_options.max_contact_iterations", 1);
   require_half_open(contact_tolerance, "mechanics_options.contact_tolerance", 0.0, 1.0);
   solver_options.validate();
@@ -478,7 +478,7 @@ void BeamMechanics::set_normal_springs(const Eigen::VectorXd& stiffness) {
                          ", allowed: 0 or n_beams = " + std::to_string(lattice_.n_beams()));
   for (Eigen::Index e = 0; e < stiffness.size(); ++e)
     if (!(std::isfinite(stiffness[e]) && stiffness[e] >= 0.0))
-      throw hm::InputError("normal_springs[" + std::to_string(e) + "] = " + hm::analytic::format_value(stiffness[e]) +
+      throw hm::InputError("normal_springs[" + std::to_string(e) + "] = " + hm::core::format_value(stiffness[e]) +
                            ", allowed: finite, >= 0");
   springs_ = stiffness;
   setup_system();

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "hm/core/input_error.hpp"
-#include "hm/analytic/validation.hpp"
+#include "hm/core/validation.hpp"
 
 namespace hm::lattice2d {
 
@@ -73,7 +73,7 @@ ParticleStress compute_particle_stress(const Lattice& lattice, const DualGraph& 
   return out;
 }
 
-void CrackTipOptions::validate() const { hm::analytic::require_positive(material_length, "material_length"); }
+void CrackTipOptions::validate() const { hm::core::require_positive(material_length, "material_length"); }
 
 std::vector<bool> find_crack_tip_beams(const Lattice& lattice, const std::vector<BeamState>& states) {
   assert((states.empty() || static_cast<int>(states.size()) == lattice.n_beams()) && "one state per beam");
@@ -114,9 +114,9 @@ BeamStress compute_beam_stress(const Lattice& lattice, const ParticleStress& par
 }
 
 void AveragingRegion::validate() const {
-  hm::analytic::require_finite(center.x(), "region.center.x");
-  hm::analytic::require_finite(center.y(), "region.center.y");
-  hm::analytic::require_positive(radius, "region.radius");
+  hm::core::require_finite(center.x(), "region.center.x");
+  hm::core::require_finite(center.y(), "region.center.y");
+  hm::core::require_positive(radius, "region.radius");
 }
 
 PlaneStrainModuli plane_strain_moduli(double c11, double c12) {
@@ -153,7 +153,7 @@ AffineStiffness affine_effective_stiffness(const Lattice& lattice, const BeamPar
         (lattice.points.col(i) - region.center).norm() <= region.radius)
       chosen.push_back(i);
   if (chosen.empty())
-    throw hm::InputError("region.radius = " + hm::analytic::format_value(region.radius) +
+    throw hm::InputError("region.radius = " + hm::core::format_value(region.radius) +
                          ", allowed: a region holding at least one interior particle");
 
   const DualGraph dual = build_dual_graph(lattice);

@@ -1,4 +1,4 @@
-#include "hm/analytic/validation.hpp"
+#include "hm/core/validation.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include "hm/core/input_error.hpp"
 
-namespace hm::analytic {
+namespace hm::core {
 
 std::string format_value(double value) {
   char buf[32];
@@ -46,4 +46,4 @@ void require_at_least(long long value, std::string_view name, long long minimum)
   if (value < minimum) fail(name, std::to_string(value), n(name) + " >= " + std::to_string(minimum));
 }
 
-}  // namespace hm::analytic
+}  // namespace hm::core

@@ -5,7 +5,7 @@
 #include <string>
 #include <string_view>
 
-namespace hm::analytic {
+namespace hm::core {
 
 /// The value formatted as the user would write it (shortest round-trip form).
 std::string format_value(double value);
@@ -19,4 +19,4 @@ void require_half_open(double value, std::string_view name, double lo, double hi
 /// Integer count at least `minimum`.
 void require_at_least(long long value, std::string_view name, long long minimum);
 
-}  // namespace hm::analytic
+}  // namespace hm::core
