@@ -58,7 +58,7 @@ void add_rudnicki(CLI::App* parent) {
     m.b = a->b;
     m.nu = a->nu;
     m.E_over_M = a->E_over_M < 0 ? E_over_M_table1(a->b, a->nu) : a->E_over_M;
-    m.vol_strain = parse_vol_strain(a->vol_strain);
+    m.vol_strain = core::from_name<VolStrain>(a->vol_strain, "--vol_strain");
     m.validate();
     require_non_negative(a->Q, "Q");
     require_positive(a->t, "t");

@@ -36,7 +36,7 @@ void add_fdm1d_command(CLI::App& app, int& exit_code, const std::string& command
     const auto& p = c.physics.parameters;
     std::cout << "fdm1d: Q = " << p.Q << ", b = " << p.material.b << ", nu = " << p.material.nu
               << ", E/M = " << p.material.E_over_M << ", R_i = " << p.R_i << ", vol_strain = "
-              << to_string(p.material.vol_strain) << "; n_r = " << c.numerics.n_r << ", t_end = " << c.numerics.t_end
+              << core::name_of(p.material.vol_strain) << "; n_r = " << c.numerics.n_r << ", t_end = " << c.numerics.t_end
               << "\n";
 
     // 2. Run, with a progress line on long runs.

@@ -14,14 +14,14 @@ namespace hm::app {
 
 void add_fractures_command(CLI::App& app, const std::string& command_line) {
   struct Args {
-    std::string run_dir, link = lattice2d::to_string(lattice2d::FractureStatisticsOptions{}.link);
+    std::string run_dir, link = hm::core::name_of(lattice2d::FractureStatisticsOptions{}.link);
   };
   auto a = std::make_shared<Args>();
   auto* cmd = app.add_subcommand("fractures", "Recompute the fracture statistics of a finished run");
   cmd->add_option("run", a->run_dir, "output folder of `hmlattice run` with [fracture] enabled")->required();
   cmd->add_option("--link", a->link, "broken beams of one fracture share a 'particle' or a 'triangle'")->capture_default_str();
   cmd->callback([a, command_line] {
-    const auto link = lattice2d::fracture_link_from_string(a->link, "--link");
+    const auto link = core::from_name<lattice2d::FractureLink>(a->link, "--link");
     const auto done = cases::recompute_fracture_statistics(a->run_dir, link, command_line);
     std::cout << "fractures: " << done.n_breaks << " breaks, " << done.n_snapshots << " snapshots, fracture_link = "
               << a->link << "\nResults: " << a->run_dir << "/{fractures,fracture_summary}.csv, config.toml\n";

@@ -60,9 +60,9 @@ void add_run_command(CLI::App& app, int& exit_code, const std::string& command_l
     core::ResultFolder out(output_folder(a->out, a->case_file), "--out", a->overwrite, command_line);
     const auto& p = c.physics.parameters;
     std::cout << "run: Q = " << p.Q << ", b = " << p.material.b << ", E/M = " << p.material.E_over_M
-              << ", iota = " << p.iota << "; " << to_string(c.lattice.domain) << ", N = " << c.lattice.n_particles
-              << ", seed = " << c.lattice.seed << ", outer " << to_string(c.boundary.outer) << "; split "
-              << to_string(c.coupling.split) << ", Psi = " << c.coupling.terms.psi << ", xi = " << c.coupling.terms.xi
+              << ", iota = " << p.iota << "; " << core::name_of(c.lattice.domain) << ", N = " << c.lattice.n_particles
+              << ", seed = " << c.lattice.seed << ", outer " << core::name_of(c.boundary.outer) << "; split "
+              << core::name_of(c.coupling.split) << ", Psi = " << c.coupling.terms.psi << ", xi = " << c.coupling.terms.xi
               << "; t_end = " << c.stepping.t_end << "\n";
 
     // 2. Build the lattice and the coupled model (mechanics factorised once, with the Eq. 20 springs).

@@ -23,7 +23,7 @@ void add_verify_command(CLI::App& app, int& exit_code, const std::string& comman
   cmd->add_option("--filter", opt->filter, "run only benchmarks whose id contains this text");
   cmd->callback([opt, &exit_code, command_line] {
     verification::HarnessOptions options;
-    options.tier = verification::parse_tier(opt->tier);
+    options.tier = core::from_name<verification::Tier>(opt->tier, "--tier");
     options.out_dir = opt->out;
     options.overwrite = opt->overwrite;
     options.filter = opt->filter;

@@ -56,7 +56,7 @@ int main(int argc, char** argv) {
   const CoupledRunSummary run = model.run(stepping);
   const double total = seconds_since(start);
   std::printf("Fig. 12 b = 0.2 to t* = 0.0272 at N = %d particles: %s, %d steps, %d passes, %d beams broken\n",
-              lattice.n_particles(), to_string(run.status).c_str(), run.n_steps, run.total_iterations, model.n_broken());
+              lattice.n_particles(), hm::core::name_of(run.status).c_str(), run.n_steps, run.total_iterations, model.n_broken());
   std::printf("  %-40s %9s %7s\n", "part", "seconds", "share");
   const double parts[] = {setup,           run.mechanics_seconds, run.stress_seconds, run.break_seconds,
                           run.geometry_seconds, run.flow_seconds,  total};

@@ -7,17 +7,6 @@ namespace hm::analytic {
 
 using namespace hm::core;  // require_* and format_value
 
-VolStrain parse_vol_strain(std::string_view text, std::string_view key) {
-  if (text == "plane-strain") return VolStrain::plane_strain;
-  if (text == "appendix-a") return VolStrain::appendix_a;
-  throw InputError(std::string(key) + " = \"" + std::string(text) +
-                   "\", allowed: \"plane-strain\" or \"appendix-a\"");
-}
-
-std::string to_string(VolStrain v) {
-  return v == VolStrain::plane_strain ? "plane-strain" : "appendix-a";
-}
-
 double vol_strain_factor(VolStrain v) { return v == VolStrain::plane_strain ? 1.0 : 1.0 / 3.0; }
 
 void PoroelasticParameters::validate() const {

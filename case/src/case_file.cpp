@@ -138,8 +138,7 @@ struct PhysicsSi {
 
 template <class Case, class Field>
 void add_vol_strain(CaseKeys<Case>& k, Field field) {
-  k.choice("vol_strain", field, {analytic::VolStrain::plane_strain, analytic::VolStrain::appendix_a},
-           [](const std::string& s) { return analytic::parse_vol_strain(s); },
+  k.choice("vol_strain", field,
            "the fluid equation's volumetric strain: plane strain, or Appendix A's (docs/errata.md)");
 }
 

@@ -96,7 +96,7 @@ FractureReanalysis recompute_fracture_statistics(const std::filesystem::path& ru
   c.output.fracture_link = link;
   const std::string provenance = provenance_part(text_of(run_dir / "config.toml"));
   const std::string config =
-      run_case_to_toml(c, "# fracture statistics recomputed with fracture_link = \"" + lt::to_string(link) +
+      run_case_to_toml(c, "# fracture statistics recomputed with fracture_link = \"" + hm::core::name_of(link) +
                               "\" by: " + command_line + " (" + make_provenance(command_line).utc_time + ")\n" +
                               provenance);
   lt::write_fracture_table(run_dir / "fractures.csv", snapshots);

@@ -29,7 +29,7 @@ namespace {
 std::string calibration_comment(const RunCase& c) {
   const lt::BeamParameters beams = c.beams();
   const lt::ElasticConstants continuum = lt::calibrated_continuum(c.stiffness_scaling);
-  return "# beams: calibrated_beam_parameters(" + lt::to_string(c.stiffness_scaling) +
+  return "# beams: calibrated_beam_parameters(" + hm::core::name_of(c.stiffness_scaling) +
          ") k_n = " + core::format_value(beams.normal_stiffness) + ", a = " + core::format_value(beams.aspect) +
          ", nu0 = " + core::format_value(beams.beam_poisson) + ";\n# measured continuum (calibration, " +
          "docs/lattice.md): E = " + core::format_value(continuum.youngs_modulus) +
@@ -40,8 +40,8 @@ CaseKeys<RunCase> make_run_case_keys() {
   CaseKeys<RunCase> k;
   k.table("lattice")
       .choice("domain", [](auto& c) -> auto& { return c.lattice.domain; }, {lt::DomainShape::disk, lt::DomainShape::annulus},
-              [](const std::string& s) { return lt::domain_shape_from_string(s); },
-              "disk: point injection at r = 0; annulus: the borehole R_i <= r <= 1 (R_i from [physics])")
+              "disk: point injection at r = 0; annulus: the borehole R_i <= r <= 1 (R_i from [physics]); not the "
+              "lattice's rectangle: the flow needs a circular outer boundary")
       .integer("n_particles", [](auto& c) -> auto& { return c.lattice.n_particles; }, std::numeric_limits<long long>::min(),
                std::numeric_limits<long long>::max(), "500 <= n_particles <= 5e6", "number of particles (about; Poisson-disk sampling)")
       .integer("seed", [](auto& c) -> auto& { return c.lattice.seed; }, 0, std::numeric_limits<long long>::max(), ">= 0",
@@ -50,11 +50,8 @@ CaseKeys<RunCase> make_run_case_keys() {
             "1 <= factor <= 1.35", "boundary particles' spacing over the Poisson-disk radius")
       .choice("stiffness_scaling", [](auto& c) -> auto& { return c.stiffness_scaling; },
               {lt::StiffnessScaling::voronoi_facet, lt::StiffnessScaling::uniform},
-              [](const std::string& s) { return lt::stiffness_scaling_from_string(s); },
               "the calibrated beams of that scaling (docs/lattice.md)")
       .check([](CaseTable&, CaseTable& root, RunCase& c) {
-        if (c.lattice.domain == lt::DomainShape::rectangle)
-          throw InputError("domain = \"rectangle\", allowed: \"disk\" or \"annulus\" (the flow needs a circular outer boundary)");
         const double R_i = c.physics.parameters.R_i;
         const std::string physics_table = c.physics.physical ? "physics_si" : "physics";
         if (c.lattice.domain == lt::DomainShape::disk && R_i != 0.0)
@@ -67,28 +64,21 @@ CaseKeys<RunCase> make_run_case_keys() {
       })
       .comment(calibration_comment);
   k.table("mechanics")
-      .choice("outer", [](auto& c) -> auto& { return c.boundary.outer; }, {lt::BoundarySupport::free, lt::BoundarySupport::fixed},
-              [](const std::string& s) { return lt::boundary_support_from_string(s, "outer"); },
+      .choice("outer", [](auto& c) -> auto& { return c.boundary.outer; },
               "the outer boundary r = 1: traction-free or held")
-      .choice("solver", [](auto& c) -> auto& { return c.mechanics.solver; }, {lt::SpdSolverKind::cholmod, lt::SpdSolverKind::pcg},
-              [](const std::string& s) { return lt::spd_solver_kind_from_string(s); },
+      .choice("solver", [](auto& c) -> auto& { return c.mechanics.solver; },
               "the mechanics' linear solver: CHOLMOD's Cholesky factor or preconditioned CG");
   k.table("flow")
       .choice("borehole_storage", [](auto& c) -> auto& { return c.borehole_storage; },
-              {lt::BoreholeStorage::biot_modulus, lt::BoreholeStorage::none},
-              [](const std::string& s) { return lt::borehole_storage_from_string(s); },
               "the borehole node's storage: the fluid's compressibility (docs/flow.md) or none")
       .choice("borehole_deformation", [](auto& c) -> auto& { return c.borehole_deformation; },
-              {lt::BoreholeDeformation::biot, lt::BoreholeDeformation::none},
-              [](const std::string& s) { return lt::borehole_deformation_from_string(s); },
               "whether the borehole's volume change enters its balance (docs/flow.md)")
       .boolean("reuse_factorisation", [](auto& c) -> auto& { return c.reuse_flow_factorisation; },
                "reuse the flow matrix's factor while the geometry changes little (iterative refinement)")
       .integer("refresh_after_refinements", [](auto& c) -> auto& { return c.flow_refresh_after_refinements; }, 0, 1000000,
                "0 ... 1000000", "refactorise the flow matrix after this many refinement sweeps (0: never)");
   k.table("coupling", "coupling.")
-      .choice("split", [](auto& c) -> auto& { return c.coupling.split; }, {lt::CouplingSplit::undrained, lt::CouplingSplit::drained},
-              [](const std::string& s) { return lt::coupling_split_from_string(s); },
+      .choice("split", [](auto& c) -> auto& { return c.coupling.split; },
               "the operator split of Section 2.3")
       .real("psi", [](auto& c) -> auto& { return c.coupling.terms.psi; }, ">= 0, finite; 0 for split = \"drained\"",
             "Psi, the undrained split's feedback (Eq. 20)", [](const RunCase& c) { return lt::default_psi(c.coupling.split); },
@@ -103,20 +93,14 @@ CaseKeys<RunCase> make_run_case_keys() {
       .boolean("accept_unconverged", [](auto& c) -> auto& { return c.coupling.accept_unconverged; },
                "accept a step that hit max_iterations (the paper's one pass per step with max_iterations = 1)")
       .choice("relaxation", [](auto& c) -> auto& { return c.coupling.relaxation; },
-              {lt::CouplingRelaxation::none, lt::CouplingRelaxation::aitken, lt::CouplingRelaxation::anderson},
-              [](const std::string& s) { return lt::coupling_relaxation_from_string(s); },
               "how the next pass's guess is formed (docs/coupling.md, section 3)")
       .real("initial_relaxation", [](auto& c) -> auto& { return c.coupling.initial_relaxation; }, "0 < value <= 1",
             "Aitken's first factor, Anderson's mixing")
       .integer("anderson_depth", [](auto& c) -> auto& { return c.coupling.anderson_depth; }, 1, 50, "1 ... 50",
                "residual differences Anderson combines")
       .choice("fracture_check", [](auto& c) -> auto& { return c.coupling.fracture_check; },
-              {lt::FractureCheck::every_pass, lt::FractureCheck::at_convergence},
-              [](const std::string& s) { return lt::fracture_check_from_string(s); },
               "when beams are checked for failure: every pass (Fig. 5) or at the coupled equilibrium")
       .choice("predictor", [](auto& c) -> auto& { return c.coupling.predictor; },
-              {lt::CouplingPredictor::previous, lt::CouplingPredictor::linear},
-              [](const std::string& s) { return lt::coupling_predictor_from_string(s); },
               "the first pass's guess: the last step's state or its linear extrapolation")
       .check([](CaseTable&, CaseTable&, RunCase& c) { c.coupling.validate(); });
   k.table("numerics")
@@ -130,8 +114,6 @@ CaseKeys<RunCase> make_run_case_keys() {
   k.table("fracture")
       .boolean("enabled", [](auto& c) -> auto& { return c.fracture_enabled; }, "break beams (Eq. 11)")
       .choice("distribution", [](auto& c) -> auto& { return c.strength.distribution; },
-              {lt::StrengthDistribution::none, lt::StrengthDistribution::uniform, lt::StrengthDistribution::weibull},
-              [](const std::string& s) { return lt::strength_distribution_from_string(s); },
               "the beams' strength heterogeneity around [physics]' means")
       .real("width", [](auto& c) -> auto& { return c.strength.width; }, "0 <= width < 1", "uniform: relative half-width")
       .real("weibull_modulus", [](auto& c) -> auto& { return c.strength.weibull_modulus; }, "1 ... 1000", "weibull: modulus m")
@@ -161,8 +143,6 @@ CaseKeys<RunCase> make_run_case_keys() {
       .real("radial_max", [](auto& c) -> auto& { return c.output.radial_max; }, "R_i < radial_max <= 1",
             "outer edge of the radial shells")
       .choice("fracture_link", [](auto& c) -> auto& { return c.output.fracture_link; },
-              {lt::FractureLink::shared_particle, lt::FractureLink::shared_triangle},
-              [](const std::string& s) { return lt::fracture_link_from_string(s, "fracture_link"); },
               "which broken beams form one fracture in fractures.csv")
       .check([](CaseTable& out, CaseTable&, RunCase& c) {
         const double R_i = c.physics.parameters.R_i;

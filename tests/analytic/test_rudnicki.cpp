@@ -129,7 +129,7 @@ const std::vector<double> t_points = {3e-4, 1e-2, 1.0};
 
 TEST_CASE("Rudnicki storage is E/M + f b^2 (1+nu)(1-2nu)/(1-nu) for both vol_strain variants", "[analytic]") {
   for (const Case& c : cases()) {
-    SECTION(std::string(c.name) + ", " + hm::analytic::to_string(c.material.vol_strain)) {
+    SECTION(std::string(c.name) + ", " + hm::core::name_of(c.material.vol_strain)) {
       const RudnickiLineSource src(c.Q, c.material);
       CHECK(src.storage() == hm::test::roundoff(storage_of(c.material)));
     }
@@ -138,7 +138,7 @@ TEST_CASE("Rudnicki storage is E/M + f b^2 (1+nu)(1-2nu)/(1-nu) for both vol_str
 
 TEST_CASE("Rudnicki pressure solves S dp/dt = (1/r) d/dr (r dp/dr)", "[analytic]") {
   for (const Case& c : cases()) {
-    SECTION(std::string(c.name) + ", " + hm::analytic::to_string(c.material.vol_strain)) {
+    SECTION(std::string(c.name) + ", " + hm::core::name_of(c.material.vol_strain)) {
       const RudnickiLineSource src(c.Q, c.material);
       const double S = storage_of(c.material);
       for (double t : t_points) {
@@ -163,7 +163,7 @@ TEST_CASE("Rudnicki pressure solves S dp/dt = (1/r) d/dr (r dp/dr)", "[analytic]
 
 TEST_CASE("Rudnicki displacement solves the radial equilibrium Eq. A3 with its own pressure", "[analytic]") {
   for (const Case& c : cases()) {
-    SECTION(std::string(c.name) + ", " + hm::analytic::to_string(c.material.vol_strain)) {
+    SECTION(std::string(c.name) + ", " + hm::core::name_of(c.material.vol_strain)) {
       const RudnickiLineSource src(c.Q, c.material);
       const double S = storage_of(c.material), eta = eta_of(c.material);
       for (double t : t_points) {
@@ -192,7 +192,7 @@ TEST_CASE("Rudnicki displacement solves the radial equilibrium Eq. A3 with its o
 TEST_CASE("Rudnicki effective stresses follow Hooke's law with eps_r = du/dr and balance the total stress",
           "[analytic]") {
   for (const Case& c : cases()) {
-    SECTION(std::string(c.name) + ", " + hm::analytic::to_string(c.material.vol_strain)) {
+    SECTION(std::string(c.name) + ", " + hm::core::name_of(c.material.vol_strain)) {
       const RudnickiLineSource src(c.Q, c.material);
       const double S = storage_of(c.material), nu = c.material.nu, b = c.material.b;
       const double lambda = nu / ((1.0 + nu) * (1.0 - 2.0 * nu)), two_G = 1.0 / (1.0 + nu);
@@ -237,7 +237,7 @@ TEST_CASE("Rudnicki effective stresses follow Hooke's law with eps_r = du/dr and
 
 TEST_CASE("Rudnicki flux through a circle is Q exp(-X) and tends to Q at the source", "[analytic]") {
   for (const Case& c : cases()) {
-    SECTION(std::string(c.name) + ", " + hm::analytic::to_string(c.material.vol_strain)) {
+    SECTION(std::string(c.name) + ", " + hm::core::name_of(c.material.vol_strain)) {
       const RudnickiLineSource src(c.Q, c.material);
       const double S = storage_of(c.material), t = 3e-4;
       // X = 1e-12 lies in the series branch, 1e-9 in GSL's; at both, Q exp(-X) = Q to 1e-9.
@@ -259,7 +259,7 @@ TEST_CASE("Rudnicki flux through a circle is Q exp(-X) and tends to Q at the sou
 TEST_CASE("Rudnicki fluid content E/M p + f b eps_v integrates to the injected volume Q t", "[analytic]") {
   const GslErrorsAsStatus gsl_guard;
   for (const Case& c : cases()) {
-    SECTION(std::string(c.name) + ", " + hm::analytic::to_string(c.material.vol_strain)) {
+    SECTION(std::string(c.name) + ", " + hm::core::name_of(c.material.vol_strain)) {
       const RudnickiLineSource src(c.Q, c.material);
       const double S = storage_of(c.material), f = factor_of(c.material.vol_strain);
       const double nu = c.material.nu, E_over_M = c.material.E_over_M, b = c.material.b;
@@ -300,7 +300,7 @@ TEST_CASE("Rudnicki fluid content E/M p + f b eps_v integrates to the injected v
 TEST_CASE("Rudnicki pressure equals the time integral of the instantaneous line source", "[analytic]") {
   const GslErrorsAsStatus gsl_guard;
   for (const Case& c : cases()) {
-    SECTION(std::string(c.name) + ", " + hm::analytic::to_string(c.material.vol_strain)) {
+    SECTION(std::string(c.name) + ", " + hm::core::name_of(c.material.vol_strain)) {
       const RudnickiLineSource src(c.Q, c.material);
       const double S = storage_of(c.material);
       for (double t : t_points) {
@@ -328,7 +328,7 @@ TEST_CASE("Rudnicki pressure equals the time integral of the instantaneous line 
 TEST_CASE("Rudnicki fields vanish far away, match the small-X asymptotes, and are continuous across branches",
           "[analytic]") {
   for (const Case& c : cases()) {
-    SECTION(std::string(c.name) + ", " + hm::analytic::to_string(c.material.vol_strain)) {
+    SECTION(std::string(c.name) + ", " + hm::core::name_of(c.material.vol_strain)) {
       const RudnickiLineSource src(c.Q, c.material);
       const double S = storage_of(c.material), eta = eta_of(c.material), t = 3e-4;
       const double line_dilatation = eta * c.Q * t / (2.0 * pi * S);  // r u_r outside the plume
@@ -395,7 +395,7 @@ TEST_CASE("Rudnicki solution in Rudnicki's notation: c = 2 G kappa (1-nu)(nu_u-n
   // G = 1/(2(1+nu)), and nu_u from lambda_u = lambda + b^2 M. Only the plane-strain variant is Biot's
   // theory; Appendix A's factor 1/3 gives another S.
   for (const Case& c : cases()) {
-    SECTION(std::string(c.name) + ", " + hm::analytic::to_string(c.material.vol_strain)) {
+    SECTION(std::string(c.name) + ", " + hm::core::name_of(c.material.vol_strain)) {
       const RudnickiLineSource src(c.Q, c.material);
       const double nu = c.material.nu, b = c.material.b, M = 1.0 / c.material.E_over_M;
       const double G = 1.0 / (2.0 * (1.0 + nu)), lambda = 2.0 * G * nu / (1.0 - 2.0 * nu);

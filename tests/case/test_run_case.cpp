@@ -44,12 +44,12 @@ TEST_CASE("Bad 2D cases are rejected with one line naming table, key, value and 
   rejected("[physics]\nR_i = 0\n[lattice]\ndomain = \"annulus\"\n",
            "case.toml: [physics] R_i = 0, allowed: 0 < R_i < 1 for [lattice] domain = \"annulus\"");
   rejected(physics + "[lattice]\ndomain = \"square\"\n", "case.toml: [lattice] domain = 'square', allowed: disk, annulus");
-  rejected(physics + "[lattice]\ndomain = \"rectangle\"\n", "case.toml: [lattice] domain = \"rectangle\", allowed: \"disk\" or \"annulus\"");
+  rejected(physics + "[lattice]\ndomain = \"rectangle\"\n", "case.toml: [lattice] domain = 'rectangle', allowed: disk, annulus");
   rejected(physics + "[lattice]\nn_particles = 10\n", "case.toml: [lattice] n_particles = 10, allowed: ");
   rejected(physics + "[lattice]\nseed = -3\n", "case.toml: [lattice] seed = -3, allowed: >= 0");
   rejected(physics + "[lattice]\nN = 1000\n", "case.toml: [lattice] unknown key 'N', allowed: ");
   rejected(physics + "[lattice]\nstiffness_scaling = \"facet\"\n",
-           "case.toml: [lattice] stiffness_scaling = 'facet', allowed: uniform, voronoi_facet");
+           "case.toml: [lattice] stiffness_scaling = 'facet', allowed: voronoi_facet, uniform");
   rejected(physics + "[lattice]\nboundary_spacing_factor = 2\n", "case.toml: [lattice] boundary_spacing_factor = 2, allowed: ");
   rejected(physics + "[flow]\nrefresh_after_refinements = -2\n",
            "case.toml: [flow] refresh_after_refinements = -2, allowed: 0 ... 1000000");

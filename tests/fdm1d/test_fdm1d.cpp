@@ -218,7 +218,7 @@ TEST_CASE("The fluid volume balances at every step to round-off", "[fdm1d]") {
   // with margin (observed <= 1e-12).
   for (const auto vs : {VolStrain::plane_strain, VolStrain::appendix_a}) {
     for (const double b : {0.0, 0.5, 1.0}) {
-      CAPTURE(b, hm::analytic::to_string(vs));
+      CAPTURE(b, hm::core::name_of(vs));
       Fdm1dNumerics n;  // defaults: geometric steps 1e-5 .. 1e-3, landing on the output times
       n.n_r = 100;
       const Fdm1dResult res = run_fdm1d(hm::analytic::table1_borehole(b, 0.01, vs), n);
@@ -292,7 +292,7 @@ TEST_CASE("A transient negative pressure appears for b > 0 and not for b = 0", "
   n.output_times = {0.2};
   const double p_h_steady = -0.01 / (2.0 * 3.141592653589793) * std::log(0.138);
   for (const auto vs : {VolStrain::plane_strain, VolStrain::appendix_a}) {
-    CAPTURE(hm::analytic::to_string(vs));
+    CAPTURE(hm::core::name_of(vs));
     for (const double b : {0.5, 1.0}) {
       CAPTURE(b);
       const Fdm1dResult res = run_fdm1d(hm::analytic::table1_borehole(b, 0.01, vs), n);

@@ -169,7 +169,7 @@ TEST_CASE("The stored beam constants give E = 1 within 2% and the documented nu 
   struct Expected { StiffnessScaling scaling; double nu, band; };
   for (const Expected x : {Expected{StiffnessScaling::voronoi_facet, 0.25, 0.005},
                            Expected{StiffnessScaling::uniform, 0.2236, 0.002}}) {
-    INFO("stiffness_scaling = " << to_string(x.scaling));
+    INFO("stiffness_scaling = " << hm::core::name_of(x.scaling));
     double e = 0, nu = 0;
     for (std::uint64_t seed : {1, 2, 3}) {
       const ElasticProperties p = measure_elastic_properties(generate_lattice(calibration_rectangle(10000, 2.0, seed)),

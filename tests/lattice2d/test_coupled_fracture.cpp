@@ -175,8 +175,4 @@ TEST_CASE("Coupled fracture checked at convergence: the break sequence does not 
     CHECK(slow[k].beam == fast[k].beam);
     CHECK(slow[k].load == fast[k].load);
   }
-  CHECK(to_string(FractureCheck::at_convergence) == "at_convergence");
-  CHECK(fracture_check_from_string("every_pass") == FractureCheck::every_pass);
-  CHECK_THROWS_WITH(fracture_check_from_string("sometimes"),
-                    "coupling.fracture_check = 'sometimes', allowed: every_pass, at_convergence");
 }

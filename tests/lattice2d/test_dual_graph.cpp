@@ -34,7 +34,7 @@ TEST_CASE("Default dual-graph options are valid, a zero floor is rejected", "[la
 TEST_CASE("Particle areas and triangle areas both tile the polygonal domain", "[lattice2d]") {
   for (auto shape : {DomainShape::disk, DomainShape::annulus, DomainShape::rectangle})
     for (long long n : {700LL, 5000LL}) {
-      DYNAMIC_SECTION(to_string(shape) << " n = " << n) {
+      DYNAMIC_SECTION(hm::core::name_of(shape) << " n = " << n) {
         const Lattice lattice = generate_lattice(spec_of(shape, n, 9));
         const DualGraph dual = build_dual_graph(lattice);
         const double polygon = polygon_area(lattice);
@@ -56,7 +56,7 @@ TEST_CASE("Particle areas and triangle areas both tile the polygonal domain", "[
 TEST_CASE("Dual lengths and conductances are strictly positive and bounded", "[lattice2d]") {
   for (auto shape : {DomainShape::disk, DomainShape::annulus, DomainShape::rectangle})
     for (std::uint64_t seed : {1u, 2u, 3u}) {
-      DYNAMIC_SECTION(to_string(shape) << " seed " << seed) {
+      DYNAMIC_SECTION(hm::core::name_of(shape) << " seed " << seed) {
         const Lattice lattice = generate_lattice(spec_of(shape, 4000, seed));
         const DualGraph dual = build_dual_graph(lattice);
         const double ratio = dual.options.min_dual_ratio;

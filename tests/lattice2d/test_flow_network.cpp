@@ -142,12 +142,6 @@ TEST_CASE("Default flow parameters are valid and each bad value is rejected by n
   rejects([](FlowParameters& p) { p.iota = 0.0; }, "iota = 0");
   rejects([](FlowParameters& p) { p.time_step = -1e-3; }, "time_step = -0.001");
   rejects([](FlowParameters& p) { p.source_x = std::nan(""); }, "source_x");
-  CHECK(borehole_storage_from_string(to_string(BoreholeStorage::none)) == BoreholeStorage::none);
-  CHECK(borehole_storage_from_string(to_string(BoreholeStorage::biot_modulus)) == BoreholeStorage::biot_modulus);
-  CHECK_THROWS_WITH(borehole_storage_from_string("fluid"), Catch::Contains("borehole_storage = 'fluid'"));
-  CHECK(borehole_deformation_from_string(to_string(BoreholeDeformation::none)) == BoreholeDeformation::none);
-  CHECK(borehole_deformation_from_string(to_string(BoreholeDeformation::biot)) == BoreholeDeformation::biot);
-  CHECK_THROWS_WITH(borehole_deformation_from_string("full"), Catch::Contains("borehole_deformation = 'full'"));
 }
 
 TEST_CASE("Flow parameters come from the shared dimensionless set", "[lattice2d]") {
@@ -267,7 +261,7 @@ TEST_CASE("Every step conserves fluid volume: injected = stored + deformation + 
     REQUIRE(summary.is_ok());
     worst = std::max(worst, summary.balance_error);
   }
-  INFO(to_string(shape) << ", borehole storage " << to_string(storage) << ", deformation " << to_string(deformation)
+  INFO(hm::core::name_of(shape) << ", borehole storage " << hm::core::name_of(storage) << ", deformation " << hm::core::name_of(deformation)
                        << ": worst balance " << worst);
   // Measured <= 1e-13: the scheme is conservative and the direct solve's residual is round-off.
   CHECK(worst <= 1e-10);
@@ -407,7 +401,7 @@ TEST_CASE("A flux-boundary borehole ignores its own area change: Eq. 16 turns it
     const FlowStepSummary a = still.step(), b = expanding.step(dV);
     REQUIRE(a.is_ok());
     REQUIRE(b.is_ok());
-    INFO("borehole deformation " << to_string(deformation));
+    INFO("borehole deformation " << hm::core::name_of(deformation));
     if (deformation == BoreholeDeformation::none) {
       CHECK(expanding.pressure() == still.pressure());  // bit for bit: the term is not there
       CHECK(b.deformation == 0.0);

@@ -96,7 +96,7 @@ FlowParameters reusing_parameters() {
 TEST_CASE("The flow network's sparse factorisation agrees with a dense solve to round-off", "[lattice2d][flow]") {
   const DomainShape shape = GENERATE(DomainShape::annulus, DomainShape::disk);
   const BoreholeStorage storage = GENERATE(BoreholeStorage::biot_modulus, BoreholeStorage::none);
-  CAPTURE(static_cast<int>(shape), to_string(storage));
+  CAPTURE(static_cast<int>(shape), hm::core::name_of(storage));
   const Lattice lattice = make_lattice(shape, 600);
   DualGraph dual = build_dual_graph(lattice);
   FlowParameters parameters;

@@ -153,7 +153,7 @@ TEST_CASE("A crack away from the borehole is one secondary fracture", "[lattice2
   REQUIRE(s.fractures.size() == 1);
   const Fracture& f = s.fractures[0];
   CHECK(f.kind == FractureKind::secondary);
-  CHECK(to_string(f.kind) == "secondary");
+  CHECK(hm::core::name_of(f.kind) == "secondary");
   CHECK_FALSE(f.connected_to_borehole);
   CHECK_FALSE(f.reaches_outer);
   CHECK(f.r_min == Approx(0.5).margin(L));  // midpoints within L/2 of the segment, which ends at 0.5 and 0.7
@@ -297,10 +297,8 @@ TEST_CASE("Beams are connected through a shared particle, or only through a shar
   CHECK(count(particle) == 1);
   CHECK(count(triangle) == 1);
 
-  CHECK(to_string(FractureLink::shared_particle) == "particle");
-  CHECK(fracture_link_from_string("triangle", "output.fracture_link") == FractureLink::shared_triangle);
-  CHECK_THROWS_WITH(fracture_link_from_string("beam", "output.fracture_link"),
-                    "output.fracture_link = 'beam', allowed: particle, triangle");
+  CHECK(hm::core::name_of(FractureLink::shared_particle) == "particle");
+  CHECK(hm::core::name_of(FractureLink::shared_triangle) == "triangle");
 }
 
 TEST_CASE("The break log gives each fracture's tensile and shear counts", "[lattice2d][fracture_statistics]") {

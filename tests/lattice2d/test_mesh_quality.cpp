@@ -46,7 +46,7 @@ TEST_CASE("Triangles are well shaped: minimum angle above 20 degrees", "[lattice
     for (std::uint64_t seed : {1u, 2u, 3u, 4u}) {
       const Lattice lattice = generate_lattice(spec_of(shape, 3000, seed));
       const MeshQuality q = mesh_quality(lattice, build_dual_graph(lattice));
-      INFO(to_string(shape) << " seed " << seed << "\n" << q);
+      INFO(hm::core::name_of(shape) << " seed " << seed << "\n" << q);
       CHECK(q.triangle_angle_deg.min > 20.0);
       CHECK(q.triangle_angle_deg.max < 140.0);
       // Max beam length over r_min: Delaunay edges of a near-maximal sampling stay below ~2.5 r_min.
@@ -63,7 +63,7 @@ TEST_CASE("Lattice generation timing and quality at paper resolution", "[lattice
       const DualGraph dual = build_dual_graph(lattice);
       const auto t2 = std::chrono::steady_clock::now();
       const MeshQuality q = mesh_quality(lattice, dual);
-      std::cout << to_string(shape) << " n = " << n << ": generate + triangulate "
+      std::cout << hm::core::name_of(shape) << " n = " << n << ": generate + triangulate "
                 << std::chrono::duration<double>(t1 - t0).count() << " s, dual graph "
                 << std::chrono::duration<double>(t2 - t1).count() << " s\n"
                 << q << "\n";

@@ -33,7 +33,7 @@ TEST_CASE("Uniform shell edges run exactly from r_min to r_max", "[lattice2d]") 
 
 TEST_CASE("The shells partition the triangles and their area", "[lattice2d]") {
   for (auto shape : {DomainShape::disk, DomainShape::annulus}) {
-    DYNAMIC_SECTION(to_string(shape)) {
+    DYNAMIC_SECTION(hm::core::name_of(shape)) {
       const Lattice lattice = make_lattice(shape, 5000);
       const DualGraph dual = build_dual_graph(lattice);
       const Eigen::VectorXd ones = Eigen::VectorXd::Ones(lattice.n_triangles());

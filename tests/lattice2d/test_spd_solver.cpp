@@ -117,9 +117,6 @@ TEST_CASE("Solver options: defaults valid, bad values rejected naming the field"
   o = SpdSolverOptions{};
   o.cg_tolerance = 2.0;
   CHECK_THROWS_WITH(o.validate(), Catch::Contains("solver_options.cg_tolerance = 2"));
-  CHECK(spd_solver_kind_from_string("pcg") == SpdSolverKind::pcg);
-  CHECK(spd_solver_kind_from_string(to_string(SpdSolverKind::cholmod)) == SpdSolverKind::cholmod);
-  CHECK_THROWS_WITH(spd_solver_kind_from_string("lu"), Catch::Contains("solver = 'lu', allowed: cholmod, pcg"));
 }
 
 TEST_CASE("The beam factor reproduces the element stiffness, K_e = V V^T, in every state", "[lattice2d]") {

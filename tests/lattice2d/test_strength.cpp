@@ -45,11 +45,6 @@ TEST_CASE("Strength spec: defaults valid, every bad field rejected by name", "[l
   rejects([](StrengthSpec& s) { s.weibull_modulus = 0.5; }, "weibull_modulus = 0.5");
   rejects([](StrengthSpec& s) { s.tensile_strength = std::nan(""); }, "tensile_strength");
   CHECK_THROWS_WITH(draw_beam_strengths(StrengthSpec{}, -1), Catch::Contains("n_beams = -1"));
-  CHECK_THROWS_AS(strength_distribution_from_string("gauss"), hm::InputError);
-  CHECK_THROWS_WITH(strength_distribution_from_string("gauss"),
-                    Catch::Contains("distribution = 'gauss'") && Catch::Contains("none, uniform, weibull"));
-  for (auto d : {StrengthDistribution::none, StrengthDistribution::uniform, StrengthDistribution::weibull})
-    CHECK(strength_distribution_from_string(to_string(d)) == d);
 }
 
 TEST_CASE("Same seed gives identical strengths, another seed different ones", "[lattice2d]") {

@@ -54,7 +54,7 @@ TEST_CASE("Out-of-range analytic parameters name the parameter, the value and th
   }
   SECTION("unknown volumetric-strain variant") {
     require_clean_rejection(run_hmlattice("analytic rudnicki --vol_strain 3d --r 0.1", dir.path),
-                            "vol_strain = \"3d\", allowed: \"plane-strain\" or \"appendix-a\"");
+                            "--vol_strain = '3d', allowed: plane-strain, appendix-a");
   }
   SECTION("a value that is not a number") {
     require_clean_rejection(run_hmlattice("analytic rudnicki --Q fast --r 0.1", dir.path), "--Q = fast");
@@ -64,7 +64,7 @@ TEST_CASE("Out-of-range analytic parameters name the parameter, the value and th
 
 TEST_CASE("A bad verification tier writes no report", "[verification][cli]") {
   TempDir dir("cli-verify");
-  require_clean_rejection(run_hmlattice("verify --tier full --out report", dir.path), "--tier = full, allowed: quick or paper");
+  require_clean_rejection(run_hmlattice("verify --tier full --out report", dir.path), "--tier = 'full', allowed: quick, paper");
   CHECK(dir.is_empty());
 }
 

@@ -129,7 +129,7 @@ BenchmarkResult rudnicki(const BenchmarkContext& ctx) {
     m.vol_strain = vs;
     const RudnickiLineSource sol(Q, m);
     const double S = sol.storage(), eta = m.b * oedometric_compliance(m.nu);
-    const std::string tag = " (" + to_string(vs) + ")";
+    const std::string tag = " (" + core::name_of(vs) + ")";
 
     double diffusion = 0, diffusion_scale = 0, mech = 0, mech_scale = 0;
     for (double r : linspace(0.002, 0.1, 50)) {

@@ -197,14 +197,14 @@ BenchmarkResult section32(const BenchmarkContext&) {
       const Fdm1dResult r = fdm1d::run_fdm1d(params, n);
       worst_balance = std::max(worst_balance, r.summary.max_balance_error);
       const auto d = fdm1d::section32_diagnostics(r, params);
-      table.rows.push_back({fmt(b), to_string(vs), fmt(d.t_99), fmt(paper), fmt(d.min_pressure.p / d.p_h_steady),
+      table.rows.push_back({fmt(b), core::name_of(vs), fmt(d.t_99), fmt(paper), fmt(d.min_pressure.p / d.p_h_steady),
                             fmt(d.min_pressure.r), fmt(d.min_pressure.t), fmt(d.wall_ratio_steady),
                             fmt(d.wall_ratio_min), "≈ 5.5"});
       if (vs == VolStrain::plane_strain && b > 0)
         for (const auto& pr : d.probes)
           probe_table.rows.push_back({fmt(b), fmt(pr.r), fmt(pr.p_min), fmt(pr.t_min), fmt(pr.time_negative),
                                       fmt(pr.last_negative_t)});
-      const std::string tag = "b = " + fmt(b) + ", " + to_string(vs);
+      const std::string tag = "b = " + fmt(b) + ", " + core::name_of(vs);
       // The paper's t99 values are read off its text to about two digits; shown, not gated.
       res.metrics.push_back({.name = "t99, " + tag, .value = d.t_99, .reference = paper, .tolerance = 0.05,
                              .comparison = Comparison::abs_error,

@@ -214,7 +214,7 @@ BenchmarkResult rudnicki_paper(const BenchmarkContext& ctx) {
     return o;
   };
   for (lt::BoundarySupport outer : {lt::BoundarySupport::free, lt::BoundarySupport::fixed}) {
-    const std::string b = lt::to_string(outer);
+    const std::string b = core::name_of(outer);
     const RudnickiOutcome coarse = run({.label = b + "_N1e4", .n_particles = 10000, .outer = outer});
     const RudnickiOutcome fine = run({.label = b + "_N3e4", .n_particles = 30000, .outer = outer});
     const std::string why = "the lattice's discretisation error near the source, where the plume spans a few "

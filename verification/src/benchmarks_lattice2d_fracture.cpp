@@ -399,7 +399,7 @@ BenchmarkResult uniaxial_tension(const BenchmarkContext& ctx) {
                "strain at peak", "beams broken", "load steps", "solves", "status", "seconds"},
               {{fmt(e_prime), fmt(result.breaks.empty() ? 0 : result.breaks.front().load), fmt(first_stress / t_u),
                 fmt(peak / t_u), fmt(peak_strain), std::to_string(result.breaks.size()), std::to_string(result.steps.size()),
-                std::to_string(result.n_solves), l2::to_string(result.status), fmt(result.seconds)}}};
+                std::to_string(result.n_solves), core::name_of(result.status), fmt(result.seconds)}}};
   res.tables.push_back(table);
   res.figures.push_back({"verify_lattice_uniaxial.py", "verify_lattice_uniaxial.png",
                          "Uniaxial tension: mean stress over T_u against the applied strain, and the broken beams."});
@@ -478,7 +478,7 @@ BenchmarkResult cylinder_first_break(const BenchmarkContext& ctx) {
     });
     if (main_run) l2::write_break_log(ctx.data_dir / "lattice2d_cylinder_breaks.csv", result.breaks, "pressure");
     if (result.breaks.empty()) {
-      res.notes.push_back("strengths " + name + ": no break up to 3 p_crit (" + l2::to_string(result.status) + ")");
+      res.notes.push_back("strengths " + name + ": no break up to 3 p_crit (" + core::name_of(result.status) + ")");
       continue;
     }
     const l2::BreakEvent& first = result.breaks.front();
@@ -491,7 +491,7 @@ BenchmarkResult cylinder_first_break(const BenchmarkContext& ctx) {
     };
     const double stress_angle = angle_to_tangent(major_direction(intact.stress.col(first.beam)));
     const double beam_angle = angle_to_tangent(lattice.direction.col(first.beam));
-    table.rows.push_back({name, fmt(first.load / p_crit), l2::to_string(first.mode), fmt(first.position.norm()),
+    table.rows.push_back({name, fmt(first.load / p_crit), core::name_of(first.mode), fmt(first.position.norm()),
                           on_wall ? "yes" : "no", fmt(stress_angle), fmt(beam_angle), fmt(wall_ratio), fmt(wall_max / hoop), fmt(result.seconds)});
     const std::string tag = " (strengths " + name + ")";
     res.metrics.push_back({.name = "first-break pressure / Lamé p_crit, at most 1.05" + tag, .value = first.load / p_crit,
@@ -520,7 +520,7 @@ BenchmarkResult cylinder_first_break(const BenchmarkContext& ctx) {
       double r_max = 0;
       for (const auto& b : result.breaks) r_max = std::max(r_max, b.position.norm());
       res.notes.push_back("The main run continues to " + std::to_string(result.breaks.size()) + " breaks (status " +
-                          l2::to_string(result.status) + ", last at p/p_crit = " + fmt(result.breaks.back().load / p_crit) +
+                          core::name_of(result.status) + ", last at p/p_crit = " + fmt(result.breaks.back().load / p_crit) +
                           "); the farthest broken beam is at r = " + fmt(r_max) +
                           ". Break log lattice2d_cylinder_breaks.csv, VTK lattice2d_cylinder_vtk/.");
     }

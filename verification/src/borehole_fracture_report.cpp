@@ -82,7 +82,7 @@ void add_breakdown_row(const RunOutcome& o, Table& t) {
   for (const auto& s : o.snaps)
     if (!std::isnan(s.u_pre)) u = fmt(s.u_pre) + " (t* = " + fmt(s.t) + ")";
   t.rows.push_back({run_name(o), fmt(o.t_first), fmt(o.p_before), fmt(o.p_first),
-                    fmt(o.r_first) + " (" + fmt(o.R_i) + "), " + lt::to_string(o.mode_first), fmt(o.t_peak),
+                    fmt(o.r_first) + " (" + fmt(o.R_i) + "), " + hm::core::name_of(o.mode_first), fmt(o.t_peak),
                     fmt(o.p_peak), fmt(o.pre_max) + " (" + fmt(o.pre_max_t) + ")",
                     fmt(o.pre_signed_last) + " (" + fmt(o.pre_last_t) + ")", u,
                     o.twin_label.empty() ? "-" : fmt(o.twin.end_error) + "; " + fmt(o.twin.max_error) + " (" + fmt(o.twin.max_error_t) + ")",
@@ -116,7 +116,7 @@ void add_gating_metrics(const RunOutcome& o, std::vector<Metric>& m) {
   m.push_back(flag(tag + "first break tensile, at the borehole wall (|r - R_i| <= its beam length)",
                    o.mode_first == lt::FailureMode::tensile && std::abs(o.r_first - o.R_i) <= o.length_first,
                    "Section 3.2/3.3: the hoop stress is largest and tensile at the wall, so fractures initiate there "
-                   "in tension (measured: r = " + fmt(o.r_first) + ", " + lt::to_string(o.mode_first) + ")"));
+                   "in tension (measured: r = " + fmt(o.r_first) + ", " + hm::core::name_of(o.mode_first) + ")"));
   m.push_back({.name = tag + "radial fractures at the last output time", .value = o.snaps.empty() ? 0.0 : static_cast<double>(o.snaps.back().stats.n_radial),
                .reference = 1.0, .tolerance = 1.0, .comparison = Comparison::at_least,
                .justification = "Fig. 12: radial fractures initiate at the borehole wall in both cases; how many is "

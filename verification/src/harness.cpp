@@ -15,14 +15,6 @@ using cases::make_provenance;
 
 namespace fs = std::filesystem;
 
-std::string to_string(Tier tier) { return tier == Tier::quick ? "quick" : "paper"; }
-
-Tier parse_tier(const std::string& text) {
-  if (text == "quick") return Tier::quick;
-  if (text == "paper") return Tier::paper;
-  throw InputError("--tier = " + text + ", allowed: quick or paper");
-}
-
 HarnessSummary run_harness(const std::vector<Benchmark>& benchmarks, const HarnessOptions& options,
                            std::ostream& log) {
   core::ResultFolder out(options.out_dir, "--out", options.overwrite, options.command_line);

@@ -10,44 +10,6 @@
 
 namespace hm::lattice2d {
 
-std::string to_string(CouplingSplit split) { return split == CouplingSplit::undrained ? "undrained" : "drained"; }
-
-CouplingSplit coupling_split_from_string(std::string_view name) {
-  if (name == "undrained") return CouplingSplit::undrained;
-  if (name == "drained") return CouplingSplit::drained;
-  throw hm::InputError("coupling.split = '" + std::string(name) + "', allowed: undrained, drained");
-}
-
-std::string to_string(CouplingPredictor predictor) {
-  return predictor == CouplingPredictor::previous ? "previous" : "linear";
-}
-
-CouplingPredictor coupling_predictor_from_string(std::string_view name) {
-  if (name == "previous") return CouplingPredictor::previous;
-  if (name == "linear") return CouplingPredictor::linear;
-  throw hm::InputError("coupling.predictor = '" + std::string(name) + "', allowed: previous, linear");
-}
-
-std::string to_string(FractureCheck check) {
-  return check == FractureCheck::every_pass ? "every_pass" : "at_convergence";
-}
-
-FractureCheck fracture_check_from_string(std::string_view name) {
-  if (name == "every_pass") return FractureCheck::every_pass;
-  if (name == "at_convergence") return FractureCheck::at_convergence;
-  throw hm::InputError("coupling.fracture_check = '" + std::string(name) + "', allowed: every_pass, at_convergence");
-}
-
-std::string to_string(CoupledStatus status) {
-  switch (status) {
-    case CoupledStatus::converged: return "converged";
-    case CoupledStatus::accepted_unconverged: return "accepted unconverged";
-    case CoupledStatus::not_converged: return "not converged";
-    case CoupledStatus::solver_failure: return "solver failure";
-  }
-  return "?";
-}
-
 double default_psi(CouplingSplit split) { return split == CouplingSplit::drained ? 0.0 : CouplingTerms{}.psi; }
 
 void CouplingOptions::validate() const {
@@ -257,7 +219,7 @@ bool CoupledModel::break_beams(int pass, int& n_breaks, CoupledStepSummary& summ
   if (!bs.is_stable()) {
     summary.status = CoupledStatus::solver_failure;
     summary.message = "break loop at t = " + hm::core::format_value(summary.time) + ", pass " +
-                      std::to_string(pass) + ": " + to_string(bs.status) + " " + bs.message;
+                      std::to_string(pass) + ": " + core::name_of(bs.status) + " " + bs.message;
     return false;
   }
   if (n_breaks > 0) flow_->set_broken(broken_flags(mechanics_->states()));

@@ -8,22 +8,6 @@
 
 namespace hm::lattice2d {
 
-std::string to_string(CouplingRelaxation relaxation) {
-  switch (relaxation) {
-    case CouplingRelaxation::none: return "none";
-    case CouplingRelaxation::aitken: return "aitken";
-    case CouplingRelaxation::anderson: return "anderson";
-  }
-  return "?";
-}
-
-CouplingRelaxation coupling_relaxation_from_string(std::string_view name) {
-  if (name == "none") return CouplingRelaxation::none;
-  if (name == "aitken") return CouplingRelaxation::aitken;
-  if (name == "anderson") return CouplingRelaxation::anderson;
-  throw hm::InputError("coupling.relaxation = '" + std::string(name) + "', allowed: none, aitken, anderson");
-}
-
 namespace {
 
 // The paper's loop: the flow's pressure and the mechanics' displacement as they are.

@@ -29,26 +29,6 @@ double relative_imbalance(double injected, double storage, double deformation, d
 
 }  // namespace
 
-std::string to_string(BoreholeStorage storage) {
-  return storage == BoreholeStorage::biot_modulus ? "biot-modulus" : "none";
-}
-
-BoreholeStorage borehole_storage_from_string(std::string_view name) {
-  if (name == "biot-modulus") return BoreholeStorage::biot_modulus;
-  if (name == "none") return BoreholeStorage::none;
-  throw InputError("borehole_storage = '" + std::string(name) + "', allowed: biot-modulus, none");
-}
-
-std::string to_string(BoreholeDeformation deformation) {
-  return deformation == BoreholeDeformation::biot ? "biot" : "none";
-}
-
-BoreholeDeformation borehole_deformation_from_string(std::string_view name) {
-  if (name == "biot") return BoreholeDeformation::biot;
-  if (name == "none") return BoreholeDeformation::none;
-  throw InputError("borehole_deformation = '" + std::string(name) + "', allowed: biot, none");
-}
-
 void FlowParameters::validate() const {
   using namespace hm::core;
   require_non_negative(Q, "Q");

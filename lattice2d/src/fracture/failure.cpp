@@ -11,15 +11,6 @@
 
 namespace hm::lattice2d {
 
-std::string to_string(FailureMode mode) {
-  switch (mode) {
-    case FailureMode::none: return "none";
-    case FailureMode::tensile: return "tensile";
-    case FailureMode::shear: return "shear";
-  }
-  return "?";
-}
-
 namespace {
 
 bool is_intact(const std::vector<BeamState>& states, int beam) {

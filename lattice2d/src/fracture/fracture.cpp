@@ -237,26 +237,6 @@ void LoadSteppingOptions::validate() const {
   }
 }
 
-std::string to_string(BreakLoopStatus status) {
-  switch (status) {
-    case BreakLoopStatus::stable: return "stable";
-    case BreakLoopStatus::break_cap: return "break_cap";
-    case BreakLoopStatus::solve_failed: return "solve_failed";
-  }
-  return "?";
-}
-
-std::string to_string(LoadingStatus status) {
-  switch (status) {
-    case LoadingStatus::reached_max_load: return "reached_max_load";
-    case LoadingStatus::stopped: return "stopped";
-    case LoadingStatus::step_cap: return "step_cap";
-    case LoadingStatus::break_cap: return "break_cap";
-    case LoadingStatus::solve_failed: return "solve_failed";
-  }
-  return "?";
-}
-
 // --- break loop --------------------------------------------------------------------------------------
 
 BeamStress current_beam_stress(const BeamMechanics& mechanics, const DualGraph& dual, const CrackTipOptions& crack_tip,

@@ -20,28 +20,6 @@ void FractureStatisticsOptions::validate() const {
   hm::core::require_non_negative(sizable_extent, "fracture_statistics.sizable_extent");
 }
 
-std::string to_string(FractureKind kind) {
-  switch (kind) {
-    case FractureKind::radial: return "radial";
-    case FractureKind::secondary: return "secondary";
-  }
-  return "?";
-}
-
-std::string to_string(FractureLink link) {
-  switch (link) {
-    case FractureLink::shared_particle: return "particle";
-    case FractureLink::shared_triangle: return "triangle";
-  }
-  return "?";
-}
-
-FractureLink fracture_link_from_string(const std::string& text, const std::string& key) {
-  for (FractureLink link : {FractureLink::shared_particle, FractureLink::shared_triangle})
-    if (text == to_string(link)) return link;
-  throw hm::InputError(key + " = '" + text + "', allowed: particle, triangle");
-}
-
 namespace {
 
 constexpr double pi = 3.14159265358979323846;

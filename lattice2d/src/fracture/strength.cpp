@@ -8,21 +8,6 @@
 
 namespace hm::lattice2d {
 
-std::string to_string(StrengthDistribution distribution) {
-  switch (distribution) {
-    case StrengthDistribution::none: return "none";
-    case StrengthDistribution::uniform: return "uniform";
-    case StrengthDistribution::weibull: return "weibull";
-  }
-  return "?";
-}
-
-StrengthDistribution strength_distribution_from_string(std::string_view name) {
-  for (auto d : {StrengthDistribution::none, StrengthDistribution::uniform, StrengthDistribution::weibull})
-    if (name == to_string(d)) return d;
-  throw hm::InputError("distribution = '" + std::string(name) + "', allowed: none, uniform, weibull");
-}
-
 void StrengthSpec::validate() const {
   using namespace hm::core;
   require_positive(tensile_strength, "tensile_strength");

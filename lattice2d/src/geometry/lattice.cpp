@@ -14,26 +14,11 @@
 
 namespace hm::lattice2d {
 
-std::string to_string(DomainShape shape) {
-  switch (shape) {
-    case DomainShape::disk: return "disk";
-    case DomainShape::annulus: return "annulus";
-    case DomainShape::rectangle: return "rectangle";
-  }
-  return "unknown(" + std::to_string(static_cast<int>(shape)) + ")";
-}
-
-DomainShape domain_shape_from_string(std::string_view name) {
-  for (DomainShape shape : {DomainShape::disk, DomainShape::annulus, DomainShape::rectangle})
-    if (name == to_string(shape)) return shape;
-  throw InputError("domain = '" + std::string(name) + "', allowed: disk, annulus, rectangle");
-}
-
 void LatticeSpec::validate() const {
   using namespace hm::core;
   const int shape = static_cast<int>(domain);
   if (shape < 0 || shape > static_cast<int>(DomainShape::rectangle))
-    throw InputError("domain = " + to_string(domain) + ", allowed: disk, annulus, rectangle");
+    throw InputError("domain = " + core::name_of(domain) + ", allowed: " + core::names_list(core::enum_values<DomainShape>()));
   require_closed(static_cast<double>(n_particles), "n_particles", 500.0, 5e6);
   require_closed(bridson_attempts, "bridson_attempts", 5.0, 1000.0);
   require_closed(boundary_spacing_factor, "boundary_spacing_factor", 1.0, 1.35);

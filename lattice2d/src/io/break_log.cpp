@@ -20,7 +20,7 @@ void write_break_log(const std::filesystem::path& path, const std::vector<BreakE
       out << ev.sequence << ',' << ev.beam << ',' << ev.particle_i << ',' << ev.particle_j << ','
           << csv_number(ev.position.x()) << ',' << csv_number(ev.position.y()) << ',' << csv_number(ev.load) << ','
           << csv_number(ev.sigma_1) << ',' << csv_number(ev.sigma_3) << ',' << csv_number(ev.ratio) << ','
-          << csv_number(ev.crack_tip_factor) << ',' << to_string(ev.mode) << '\n';
+          << csv_number(ev.crack_tip_factor) << ',' << core::name_of(ev.mode) << '\n';
   });
 }
 
@@ -72,9 +72,11 @@ std::vector<BreakEvent> read_break_log(const std::filesystem::path& path) {
     } catch (const std::logic_error&) {  // std::invalid_argument and std::out_of_range
       fail("not a number in '" + line + "'");
     }
-    if (cells[11] == to_string(FailureMode::tensile)) ev.mode = FailureMode::tensile;
-    else if (cells[11] == to_string(FailureMode::shear)) ev.mode = FailureMode::shear;
-    else fail("mode '" + cells[11] + "', allowed: tensile, shear");
+    try {
+      ev.mode = core::from_name<FailureMode>(cells[11], "mode", {FailureMode::tensile, FailureMode::shear});
+    } catch (const InputError& e) {
+      fail(e.what());
+    }
     events.push_back(ev);
   }
   return events;

@@ -16,14 +16,6 @@
 
 namespace hm::lattice2d {
 
-std::string to_string(SpdSolverKind kind) { return kind == SpdSolverKind::cholmod ? "cholmod" : "pcg"; }
-
-SpdSolverKind spd_solver_kind_from_string(std::string_view name) {
-  if (name == "cholmod") return SpdSolverKind::cholmod;
-  if (name == "pcg") return SpdSolverKind::pcg;
-  throw hm::InputError("solver = '" + std::string(name) + "', allowed: cholmod, pcg");
-}
-
 void SpdSolverOptions::validate() const {
   using namespace hm::core;
   require_at_least(max_modifications, "solver_options.max_modifications", 1);

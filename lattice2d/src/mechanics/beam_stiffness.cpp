@@ -12,16 +12,6 @@
 
 namespace hm::lattice2d {
 
-std::string to_string(StiffnessScaling scaling) {
-  return scaling == StiffnessScaling::uniform ? "uniform" : "voronoi_facet";
-}
-
-StiffnessScaling stiffness_scaling_from_string(std::string_view name) {
-  if (name == "uniform") return StiffnessScaling::uniform;
-  if (name == "voronoi_facet") return StiffnessScaling::voronoi_facet;
-  throw InputError("stiffness_scaling = '" + std::string(name) + "', allowed: uniform, voronoi_facet");
-}
-
 void BeamParameters::validate() const {
   using namespace hm::core;
   require_positive(normal_stiffness, "normal_stiffness");

@@ -16,14 +16,6 @@
 
 namespace hm::lattice2d {
 
-std::string to_string(BoundarySupport support) { return support == BoundarySupport::free ? "free" : "fixed"; }
-
-BoundarySupport boundary_support_from_string(std::string_view name, std::string_view field) {
-  if (name == "free") return BoundarySupport::free;
-  if (name == "fixed") return BoundarySupport::fixed;
-  throw hm::InputError(std::string(field) + " = '" + std::string(name) + "', allowed: free, fixed");
-}
-
 void BoundaryConditions::validate(const Lattice& lattice) const {
   using namespace hm::core;
   const bool annulus = lattice.spec.domain == DomainShape::annulus;

@@ -3,6 +3,8 @@
 /// Principal stresses and the paper's failure criteria (Section 2.1, Eq. 11, Fig. 3). Tension positive.
 #include <array>
 
+#include "hm/core/enum_names.hpp"
+
 namespace hm::analytic {
 
 /// Principal values of a symmetric 2D tensor, sigma_1 >= sigma_2, and the angle (rad) of sigma_1's
@@ -28,6 +30,10 @@ double coulomb_stress(double sigma_1, double sigma_3, double friction);
 
 /// Failure mode of a stress state against T_u and C_u; `none` if neither criterion is met.
 enum class FailureMode { none, tensile, shear };
+constexpr auto enum_names(FailureMode) {
+  return core::enum_table<FailureMode>({
+      {FailureMode::none, "none"}, {FailureMode::tensile, "tensile"}, {FailureMode::shear, "shear"}});
+}
 
 /// Which criterion a stress state exceeds, and by how much relative to its strength
 /// (max(sigma_1/T_u, sigma_CC/C_u)); the mode is the one with the larger ratio.

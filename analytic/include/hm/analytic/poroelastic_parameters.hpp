@@ -3,10 +3,12 @@
 /// Dimensionless poroelastic material parameters shared by every model (paper Section 2.4).
 /// Units: lengths / R, stresses and pressures / E (pressure as deviation from p0), time / t_s.
 /// Sign convention, once for the whole toolkit: tension positive, pressure positive when dilative.
+#include <array>
 #include <string>
 #include <string_view>
 
 #include "hm/analytic/biot_modulus.hpp"
+#include "hm/core/enum_names.hpp"
 
 namespace hm::analytic {
 
@@ -14,10 +16,10 @@ namespace hm::analytic {
 /// plane_strain: eps_v = eps_r + eps_theta (what plane-strain kinematics give).
 /// appendix_a:   eps_v = (eps_r + eps_theta)/3, as printed in the paper's Eq. A5 (see docs/errata.md).
 enum class VolStrain { plane_strain, appendix_a };
-
-/// "plane-strain" or "appendix-a"; throws hm::InputError naming `key` for anything else.
-VolStrain parse_vol_strain(std::string_view text, std::string_view key = "vol_strain");
-std::string to_string(VolStrain v);
+constexpr auto enum_names(VolStrain) {
+  return core::enum_table<VolStrain>({
+      {VolStrain::plane_strain, "plane-strain"}, {VolStrain::appendix_a, "appendix-a"}});
+}
 
 /// Factor multiplying (eps_r + eps_theta) in the fluid equation: 1 or 1/3.
 double vol_strain_factor(VolStrain v);

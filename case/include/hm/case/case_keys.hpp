@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "hm/case/case_file.hpp"
+#include "hm/core/enum_names.hpp"
 
 namespace hm::cases {
 
@@ -120,18 +121,25 @@ class CaseKeys {
                 [field](const Case& c) { return toml_bool(field(c)); }});
   }
 
-  /// One of the names of `values` (to_string of each); parse is the library's inverse of to_string,
-  /// whose message names the allowed values.
-  template <class Field, class Parse, class Enum = std::invoke_result_t<Parse, const std::string&>>
-  CaseKeys& choice(std::string name, Field field, const std::vector<Enum>& values, Parse parse, std::string help) {
+  /// One of the names of `values` (the enum's names table, hm/core/enum_names.hpp); anything else is
+  /// "<name> = 'x', allowed: <the names of values>".
+  template <class Field, class Enum = std::remove_cvref_t<std::invoke_result_t<Field, Case&>>>
+  CaseKeys& choice(std::string name, Field field, std::vector<Enum> values, std::string help) {
     std::string allowed;
-    for (const Enum& v : values) allowed += (allowed.empty() ? "" : ", ") + toml_quoted(to_string(v));
-    const std::string prefix = tables_.back().message_prefix;
+    for (const Enum& v : values) allowed += (allowed.empty() ? "" : ", ") + toml_quoted(core::name_of(v));
     return key({name, "string", "", "one of " + allowed, std::move(help),
-                [name, field, parse, prefix](CaseTable& t, Case& c) {
-                  located(t, prefix, [&] { field(c) = parse(t.get_string(name, to_string(field(c)))); });
+                [name, field, values](CaseTable& t, Case& c) {
+                  located(t, "", [&] {
+                    field(c) = core::from_name(t.get_string(name, core::name_of(field(c))), name, values);
+                  });
                 },
-                [field](const Case& c) { return toml_quoted(to_string(field(c))); }});
+                [field](const Case& c) { return toml_quoted(core::name_of(field(c))); }});
+  }
+  /// Any value of the enum.
+  template <class Field>
+  CaseKeys& choice(std::string name, Field field, std::string help) {
+    using Enum = std::remove_cvref_t<std::invoke_result_t<Field, Case&>>;
+    return choice(std::move(name), field, core::enum_values<Enum>(), std::move(help));
   }
 
   template <class Field>

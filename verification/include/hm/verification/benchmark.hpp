@@ -2,16 +2,22 @@
 /// \file
 /// The verification harness's vocabulary: a benchmark is a small descriptor (what is compared with
 /// what, how, and why the tolerance is what it is) plus a function that runs it and returns metrics.
+#include <array>
 #include <filesystem>
 #include <functional>
 #include <ostream>
 #include <string>
 #include <vector>
 
+#include "hm/core/enum_names.hpp"
+
 namespace hm::verification {
 
 /// quick: seconds, runs in CI on every change. paper: paper resolution, runs on request.
 enum class Tier { quick, paper };
+constexpr auto enum_names(Tier) {
+  return core::enum_table<Tier>({{Tier::quick, "quick"}, {Tier::paper, "paper"}});
+}
 
 /// How a metric's value is judged against its reference and tolerance.
 enum class Comparison {

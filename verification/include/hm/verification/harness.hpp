@@ -37,7 +37,5 @@ struct HarnessSummary {
 HarnessSummary run_harness(const std::vector<Benchmark>& benchmarks, const HarnessOptions& options,
                            std::ostream& log);
 
-std::string to_string(Tier tier);
-Tier parse_tier(const std::string& text);  ///< "quick" | "paper", else hm::InputError
 
 }  // namespace hm::verification

@@ -4,6 +4,7 @@
 /// dual-graph flow network (flow_network.hpp) advanced together in time by the drained or undrained
 /// operator split, iterated inside each time step until the pressure and the displacement both stop
 /// changing. Dimensionless. Choices the paper leaves open: docs/coupling.md.
+#include <array>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -24,6 +25,7 @@
 #include "hm/lattice2d/geometry/lattice.hpp"
 #include "hm/lattice2d/mechanics/mechanics.hpp"
 #include "hm/lattice2d/fracture/strength.hpp"
+#include "hm/core/enum_names.hpp"
 
 namespace hm::lattice2d {
 
@@ -32,10 +34,10 @@ enum class CouplingSplit {
   undrained,  ///< the mechanical step sees the undrained pressure predictor (Eq. 20, Psi > 0 allowed)
   drained,    ///< the mechanical step sees the last pressure only (Psi = 0)
 };
-/// "undrained" or "drained".
-std::string to_string(CouplingSplit split);
-/// Inverse of to_string; throws hm::InputError "coupling.split = 'x', allowed: undrained, drained".
-CouplingSplit coupling_split_from_string(std::string_view name);
+constexpr auto enum_names(CouplingSplit) {
+  return core::enum_table<CouplingSplit>({
+      {CouplingSplit::undrained, "undrained"}, {CouplingSplit::drained, "drained"}});
+}
 
 
 /// When the coupling loop looks for failing beams (with fracture enabled).
@@ -48,10 +50,10 @@ enum class FractureCheck {
   /// coupled equilibria only.
   at_convergence,
 };
-/// "every_pass" or "at_convergence".
-std::string to_string(FractureCheck check);
-/// Inverse of to_string; throws hm::InputError "coupling.fracture_check = 'x', allowed: every_pass, at_convergence".
-FractureCheck fracture_check_from_string(std::string_view name);
+constexpr auto enum_names(FractureCheck) {
+  return core::enum_table<FractureCheck>({
+      {FractureCheck::every_pass, "every_pass"}, {FractureCheck::at_convergence, "at_convergence"}});
+}
 
 /// Where the first pass of a step starts.
 enum class CouplingPredictor {
@@ -62,10 +64,10 @@ enum class CouplingPredictor {
   /// previous. Our addition: fewer passes on the smooth part of a run; same fixed point.
   linear,
 };
-/// "previous" or "linear".
-std::string to_string(CouplingPredictor predictor);
-/// Inverse of to_string; throws hm::InputError "coupling.predictor = 'x', allowed: previous, linear".
-CouplingPredictor coupling_predictor_from_string(std::string_view name);
+constexpr auto enum_names(CouplingPredictor) {
+  return core::enum_table<CouplingPredictor>({
+      {CouplingPredictor::previous, "previous"}, {CouplingPredictor::linear, "linear"}});
+}
 
 /// Options of the coupling iteration (Fig. 5). Every default is set here.
 struct CouplingOptions {
@@ -136,7 +138,11 @@ enum class CoupledStatus {
   not_converged,   ///< max_iterations hit: the step was not taken
   solver_failure,  ///< the mechanics or the flow solve failed: the step was not taken
 };
-std::string to_string(CoupledStatus status);
+constexpr auto enum_names(CoupledStatus) {
+  return core::enum_table<CoupledStatus>({
+      {CoupledStatus::converged, "converged"}, {CoupledStatus::accepted_unconverged, "accepted unconverged"},
+      {CoupledStatus::not_converged, "not converged"}, {CoupledStatus::solver_failure, "solver failure"}});
+}
 
 /// What one coupled time step did (Ceres' Summary in small).
 struct CoupledStepSummary {

@@ -4,11 +4,14 @@
 /// mechanics sees the pressure guess p_g and relaxes the Eq. 20 springs at u_g; the flow then gives
 /// p, the mechanics u). Every strategy has the plain loop's fixed point (p, u) = (p_g, u_g); they
 /// differ in the path, which matters for the borehole's stiff feedback (docs/coupling.md, section 3).
+#include <array>
 #include <memory>
 #include <string>
 #include <string_view>
 
 #include <Eigen/Core>
+
+#include "hm/core/enum_names.hpp"
 
 namespace hm::lattice2d {
 
@@ -18,10 +21,11 @@ enum class CouplingRelaxation {
   aitken,  ///< Aitken's dynamic relaxation of the pressure update (same fixed point; our addition)
   anderson,  ///< Anderson acceleration of the pressure update (same fixed point; our addition)
 };
-/// "none", "aitken" or "anderson".
-std::string to_string(CouplingRelaxation relaxation);
-/// Inverse of to_string; throws hm::InputError "coupling.relaxation = 'x', allowed: none, aitken, anderson".
-CouplingRelaxation coupling_relaxation_from_string(std::string_view name);
+constexpr auto enum_names(CouplingRelaxation) {
+  return core::enum_table<CouplingRelaxation>({
+      {CouplingRelaxation::none, "none"}, {CouplingRelaxation::aitken, "aitken"},
+      {CouplingRelaxation::anderson, "anderson"}});
+}
 
 /// One strategy, with the history it keeps within a time step.
 class PassRelaxation {

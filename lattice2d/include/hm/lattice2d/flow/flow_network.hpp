@@ -16,6 +16,7 @@
 #include "hm/analytic/physical_parameters.hpp"
 #include "hm/lattice2d/geometry/dual_graph.hpp"
 #include "hm/lattice2d/geometry/lattice.hpp"
+#include "hm/core/enum_names.hpp"
 
 namespace hm::lattice2d {
 
@@ -24,20 +25,20 @@ enum class BoreholeStorage {
   biot_modulus,  ///< (E/M) V_h (p_h^{n+1} - p_h^n), Eq. 16 as printed (dimensionless form); default
   none,          ///< no storage term: the borehole only passes Q on (Appendix A / fdm1d's choice)
 };
-/// "biot-modulus" or "none".
-std::string to_string(BoreholeStorage storage);
-/// Inverse of to_string; throws hm::InputError "borehole_storage = 'x', allowed: biot-modulus, none".
-BoreholeStorage borehole_storage_from_string(std::string_view name);
+constexpr auto enum_names(BoreholeStorage) {
+  return core::enum_table<BoreholeStorage>({
+      {BoreholeStorage::biot_modulus, "biot-modulus"}, {BoreholeStorage::none, "none"}});
+}
 
 /// Whether the borehole node takes the deformation term of Eq. 16, -b (V_h^{n+1} - V_h^n).
 enum class BoreholeDeformation {
   biot,  ///< Eq. 16 as printed: the borehole's area change weighted by b, like a triangle's; default
   none,  ///< no term: the borehole is a flux boundary that passes Q on (Appendix A / fdm1d's choice)
 };
-/// "biot" or "none".
-std::string to_string(BoreholeDeformation deformation);
-/// Inverse of to_string; throws hm::InputError "borehole_deformation = 'x', allowed: biot, none".
-BoreholeDeformation borehole_deformation_from_string(std::string_view name);
+constexpr auto enum_names(BoreholeDeformation) {
+  return core::enum_table<BoreholeDeformation>({
+      {BoreholeDeformation::biot, "biot"}, {BoreholeDeformation::none, "none"}});
+}
 
 /// Parameters of the flow network. Every default is set here; validate() checks each rule.
 struct FlowParameters {

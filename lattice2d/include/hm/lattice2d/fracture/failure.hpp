@@ -29,9 +29,6 @@ namespace hm::lattice2d {
 
 using hm::analytic::FailureMode;
 
-/// "none", "tensile" or "shear".
-std::string to_string(FailureMode mode);
-
 /// hm::analytic::check_failure with Eq. 11's friction factor [(1 + mu_i^2)^(1/2) + mu_i]^2 formed once
 /// instead of per call: bitwise the same ratio and mode (the same operations in the same order), for
 /// loops over every beam (evaluate_failure, the break loop of fracture.hpp).

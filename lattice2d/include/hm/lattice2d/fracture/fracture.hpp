@@ -14,6 +14,7 @@
 /// and no change of BeamMechanics when the load grows. Limits: proportional loading only (no fixed
 /// load plus a growing one, e.g. a confinement plus an increasing pressure); detached fragments
 /// (mechanics.hpp) are frozen at their reference-scale rigid motion, which only their drawing sees.
+#include <array>
 #include <functional>
 #include <string>
 #include <vector>
@@ -26,6 +27,7 @@
 #include "hm/lattice2d/mechanics/mechanics.hpp"
 #include "hm/lattice2d/mechanics/particle_stress.hpp"
 #include "hm/lattice2d/fracture/strength.hpp"
+#include "hm/core/enum_names.hpp"
 
 namespace hm::lattice2d {
 
@@ -50,8 +52,11 @@ enum class BreakLoopStatus {
   break_cap,     ///< max_breaks beams broken, the last solve may still have failing beams
   solve_failed,  ///< a mechanical solve did not converge (linear solver or contact set); see message
 };
-/// "stable", "break_cap" or "solve_failed".
-std::string to_string(BreakLoopStatus status);
+constexpr auto enum_names(BreakLoopStatus) {
+  return core::enum_table<BreakLoopStatus>({
+      {BreakLoopStatus::stable, "stable"}, {BreakLoopStatus::break_cap, "break_cap"},
+      {BreakLoopStatus::solve_failed, "solve_failed"}});
+}
 
 /// What one break loop did (Ceres' Summary in small).
 struct BreakLoopSummary {
@@ -150,8 +155,12 @@ enum class LoadingStatus {
   break_cap,         ///< max_breaks beams broken
   solve_failed,      ///< a solve did not converge; see message
 };
-/// "reached_max_load", "stopped", "step_cap", "break_cap" or "solve_failed".
-std::string to_string(LoadingStatus status);
+constexpr auto enum_names(LoadingStatus) {
+  return core::enum_table<LoadingStatus>({
+      {LoadingStatus::reached_max_load, "reached_max_load"}, {LoadingStatus::stopped, "stopped"},
+      {LoadingStatus::step_cap, "step_cap"}, {LoadingStatus::break_cap, "break_cap"},
+      {LoadingStatus::solve_failed, "solve_failed"}});
+}
 
 /// Result of run_load_stepping.
 struct LoadingResult {

@@ -6,6 +6,7 @@
 /// vs secondary fractures, radial arms crossing a circle) and CSV writers. Dimensionless lengths
 /// (over R), undeformed geometry, radii measured from the origin (the domain centre).
 /// Definitions, choices and limits: docs/fracture_statistics.md.
+#include <array>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "hm/lattice2d/mechanics/beam_stiffness.hpp"
 #include "hm/lattice2d/fracture/failure.hpp"
 #include "hm/lattice2d/geometry/lattice.hpp"
+#include "hm/core/enum_names.hpp"
 
 namespace hm::lattice2d {
 
@@ -25,10 +27,10 @@ enum class FractureLink {
   /// They are edges of one Delaunay triangle: their Voronoi segments meet, a continuous crack face.
   shared_triangle,
 };
-/// "particle" or "triangle".
-std::string to_string(FractureLink link);
-/// Inverse of to_string; throws hm::InputError "<key> = '<text>', allowed: particle, triangle".
-FractureLink fracture_link_from_string(const std::string& text, const std::string& key);
+constexpr auto enum_names(FractureLink) {
+  return core::enum_table<FractureLink>({
+      {FractureLink::shared_particle, "particle"}, {FractureLink::shared_triangle, "triangle"}});
+}
 
 /// Options of compute_fracture_statistics.
 struct FractureStatisticsOptions {
@@ -57,8 +59,9 @@ struct FractureStatisticsOptions {
 
 /// "radial" (connected to the borehole) or "secondary" (everything else).
 enum class FractureKind { radial, secondary };
-/// "radial" or "secondary".
-std::string to_string(FractureKind kind);
+constexpr auto enum_names(FractureKind) {
+  return core::enum_table<FractureKind>({{FractureKind::radial, "radial"}, {FractureKind::secondary, "secondary"}});
+}
 
 /// One fracture: a connected cluster of broken beams (FractureStatisticsOptions::link).
 struct Fracture {

@@ -8,11 +8,14 @@
 /// Reproducible: std::mt19937_64 and our own mapping of its top 53 bits to (0, 1); no std
 /// distributions (their output differs between standard libraries). Same spec and n_beams give
 /// identical strengths; only std::log/std::pow (Weibull) could differ in the last ulp between libms.
+#include <array>
 #include <cstdint>
 #include <string>
 #include <string_view>
 
 #include <Eigen/Core>
+
+#include "hm/core/enum_names.hpp"
 
 namespace hm::lattice2d {
 
@@ -22,11 +25,12 @@ enum class StrengthDistribution {
   uniform,  ///< mean x (1 + width (2U - 1)), U uniform in (0, 1): bounded in mean x [1 - width, 1 + width]
   weibull,  ///< Weibull with modulus m, scaled so the mean is T_u (C_u): unbounded below, weakest-link size effect
 };
+constexpr auto enum_names(StrengthDistribution) {
+  return core::enum_table<StrengthDistribution>({
+      {StrengthDistribution::none, "none"}, {StrengthDistribution::uniform, "uniform"},
+      {StrengthDistribution::weibull, "weibull"}});
+}
 
-/// "none", "uniform" or "weibull".
-std::string to_string(StrengthDistribution distribution);
-/// Inverse of to_string; throws hm::InputError "distribution = 'x', allowed: none, uniform, weibull".
-StrengthDistribution strength_distribution_from_string(std::string_view name);
 
 /// Failure parameters of the beams (Section 2.1, Eq. 11, Table 1) and their heterogeneity.
 struct StrengthSpec {

@@ -12,6 +12,8 @@
 
 #include <Eigen/Core>
 
+#include "hm/core/enum_names.hpp"
+
 namespace hm::lattice2d {
 
 /// The three domains of the toolkit.
@@ -20,11 +22,11 @@ enum class DomainShape {
   annulus,    ///< R_i <= r <= 1, the borehole geometry (Fig. 1, dashed)
   rectangle,  ///< [-width/2, width/2] x [-height/2, height/2], for calibration and unit tests
 };
+constexpr auto enum_names(DomainShape) {
+  return core::enum_table<DomainShape>({
+      {DomainShape::disk, "disk"}, {DomainShape::annulus, "annulus"}, {DomainShape::rectangle, "rectangle"}});
+}
 
-/// "disk", "annulus" or "rectangle".
-std::string to_string(DomainShape shape);
-/// Inverse of to_string; throws hm::InputError "domain = 'x', allowed: disk, annulus, rectangle".
-DomainShape domain_shape_from_string(std::string_view name);
 
 /// Which boundary a particle or a boundary beam lies on.
 enum class BoundaryTag : std::uint8_t {

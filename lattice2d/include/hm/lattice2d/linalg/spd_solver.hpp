@@ -14,12 +14,15 @@
 ///    cross-checking.
 /// Numerical trouble (a non-positive pivot, no convergence) is reported by info(), Eigen style, never
 /// thrown. Dimensionless; the interface knows nothing about beams.
+#include <array>
 #include <memory>
 #include <string>
 #include <string_view>
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+
+#include "hm/core/enum_names.hpp"
 
 namespace hm::lattice2d {
 
@@ -28,10 +31,9 @@ enum class SpdSolverKind {
   cholmod,  ///< sparse LDL' factor with rank-k updates/downdates (default)
   pcg,      ///< preconditioned conjugate gradients (cross-check)
 };
-/// "cholmod" or "pcg".
-std::string to_string(SpdSolverKind kind);
-/// Inverse of to_string; throws hm::InputError "solver = 'x', allowed: cholmod, pcg".
-SpdSolverKind spd_solver_kind_from_string(std::string_view name);
+constexpr auto enum_names(SpdSolverKind) {
+  return core::enum_table<SpdSolverKind>({{SpdSolverKind::cholmod, "cholmod"}, {SpdSolverKind::pcg, "pcg"}});
+}
 
 /// Fill-reducing orderings of the CHOLMOD factor.
 enum class CholmodOrdering {

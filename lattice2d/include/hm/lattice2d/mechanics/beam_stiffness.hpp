@@ -13,6 +13,7 @@
 /// Its Hessian reproduces every coefficient of Eqs. 5-7 except that Eq. 7 prints 2 k_omega L (not
 /// L^2) on the rotation terms; the L^2 of Eq. 4 is the consistent one (docs/lattice.md).
 /// Limits: small displacements and rotations (geometrically linear); no pressure terms (Eq. 17-20).
+#include <array>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -22,6 +23,7 @@
 #include <Eigen/SparseCore>
 
 #include "hm/lattice2d/geometry/lattice.hpp"
+#include "hm/core/enum_names.hpp"
 
 namespace hm::lattice2d {
 
@@ -37,11 +39,11 @@ enum class StiffnessScaling : std::uint8_t {
   /// normalises to the regular triangular lattice (d/L = 1/sqrt(3) -> factor 1).
   voronoi_facet,
 };
+constexpr auto enum_names(StiffnessScaling) {
+  return core::enum_table<StiffnessScaling>({
+      {StiffnessScaling::uniform, "uniform"}, {StiffnessScaling::voronoi_facet, "voronoi_facet"}});
+}
 
-/// "uniform" or "voronoi_facet".
-std::string to_string(StiffnessScaling scaling);
-/// Inverse of to_string; throws hm::InputError "stiffness_scaling = 'x', allowed: uniform, voronoi_facet".
-StiffnessScaling stiffness_scaling_from_string(std::string_view name);
 
 /// Beam constants of Eqs. 3-4. The defaults are generic unit values; the calibrated constants
 /// (E = 1, nu = 0.2236 measured on the lattice, docs/lattice.md "Calibration") come from

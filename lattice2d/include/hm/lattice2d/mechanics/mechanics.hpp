@@ -7,6 +7,7 @@
 /// modification of the kept factor (spd_solver.hpp). Dimensionless: lengths over R, forces and
 /// pressures over E (per unit thickness). Displacements are small (geometrically linear, about the
 /// undeformed lattice). Rules and reasons: docs/lattice.md, "Mechanical solve".
+#include <array>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -17,6 +18,7 @@
 #include "hm/lattice2d/mechanics/beam_stiffness.hpp"
 #include "hm/lattice2d/geometry/lattice.hpp"
 #include "hm/lattice2d/linalg/spd_solver.hpp"
+#include "hm/core/enum_names.hpp"
 
 namespace hm::lattice2d {
 
@@ -25,11 +27,9 @@ enum class BoundarySupport {
   free,   ///< no constraint (the paper's default: "mechanically free unless confinement is included")
   fixed,  ///< x and y of the boundary particles held at 0; rotation free (the paper fixes "x- and y-coordinates")
 };
-/// "free" or "fixed".
-std::string to_string(BoundarySupport support);
-/// Inverse of to_string; throws hm::InputError "<field> = 'x', allowed: free, fixed".
-BoundarySupport boundary_support_from_string(std::string_view name,
-                                             std::string_view field = "boundary_conditions.outer");
+constexpr auto enum_names(BoundarySupport) {
+  return core::enum_table<BoundarySupport>({{BoundarySupport::free, "free"}, {BoundarySupport::fixed, "fixed"}});
+}
 
 /// One prescribed displacement component of one particle.
 struct PrescribedDisplacement {
