@@ -2,6 +2,8 @@
 // (a header row, then one row per radius) to stdout. Dimensionless, tension positive.
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <sstream>
 
 #include "commands.hpp"
 #include "hm/analytic/biot_modulus.hpp"
@@ -22,12 +24,22 @@ using core::CsvWriter;
 
 const std::vector<std::string> radial_columns = {"r", "p", "u_r", "sigma_r", "sigma_theta", "sigma_z"};
 
+// Prints the table once every value is known to be finite: an overflowing closed form (t = 1e308,
+// R_o = 1e308) is bad input, reported in one line with nothing printed, not a row of inf or nan.
+void print_table(const std::vector<std::string>& columns, const std::vector<std::vector<double>>& rows) {
+  std::ostringstream table;
+  CsvWriter w(table, columns, core::NonFinite::reject);
+  for (const auto& row : rows) w.row(row);
+  std::cout << table.str();
+}
+
 void print_radial(const std::vector<double>& radii, const std::function<RadialState(double)>& state) {
-  CsvWriter w(std::cout, radial_columns);
+  std::vector<std::vector<double>> rows;
   for (double r : radii) {
     const RadialState s = state(r);
-    w.row({r, s.p, s.u_r, s.sigma_r, s.sigma_theta, s.sigma_z});
+    rows.push_back({r, s.p, s.u_r, s.sigma_r, s.sigma_theta, s.sigma_z});
   }
+  print_table(radial_columns, rows);
 }
 
 void require_radii_within(const std::vector<double>& radii, const char* name, double lo, double hi) {
@@ -40,7 +52,8 @@ CLI::Option* add_radii(CLI::App* cmd, std::vector<double>& radii, const char* na
 
 void add_rudnicki(CLI::App* parent) {
   struct Args {
-    double Q = 0.1, b = 0.5, nu = 0.25, t = 3e-4, E_over_M = -1;
+    double Q = 0.1, b = 0.5, nu = 0.25, t = 3e-4;
+    std::optional<double> E_over_M;  // unset: Eq. 22
     std::string vol_strain = "plane-strain";
     std::vector<double> r;
   };
@@ -57,7 +70,7 @@ void add_rudnicki(CLI::App* parent) {
     PoroelasticParameters m;
     m.b = a->b;
     m.nu = a->nu;
-    m.E_over_M = a->E_over_M < 0 ? E_over_M_table1(a->b, a->nu) : a->E_over_M;
+    m.E_over_M = a->E_over_M.value_or(E_over_M_table1(a->b, a->nu));
     m.vol_strain = core::from_name<VolStrain>(a->vol_strain, "--vol_strain");
     m.validate();
     require_non_negative(a->Q, "Q");
@@ -108,8 +121,9 @@ void add_sneddon(CLI::App* parent) {
     require_open(a->nu, "nu", 0.0, 0.5);
     for (double x : a->x) require_finite(x, "x");
     const SneddonCrack crack{a->p, a->c, a->nu};
-    CsvWriter w(std::cout, {"x", "w"});
-    for (double x : a->x) w.row({x, crack.half_aperture(x)});
+    std::vector<std::vector<double>> rows;
+    for (double x : a->x) rows.push_back({x, crack.half_aperture(x)});
+    print_table({"x", "w"}, rows);
   });
 }
 
@@ -134,11 +148,12 @@ void add_lame(CLI::App* parent) {
     require_open(a->nu, "nu", 0.0, 0.5);
     require_radii_within(a->r, "r", a->Ri, a->Ro);
     const LameCylinder sol(a->pi, a->po, a->Ri, a->Ro, a->nu);
-    CsvWriter w(std::cout, {"r", "u_r", "sigma_r", "sigma_theta", "sigma_z"});
+    std::vector<std::vector<double>> rows;
     for (double r : a->r) {
       const RadialState s = sol.state(r);
-      w.row({r, s.u_r, s.sigma_r, s.sigma_theta, s.sigma_z});
+      rows.push_back({r, s.u_r, s.sigma_r, s.sigma_theta, s.sigma_z});
     }
+    print_table({"r", "u_r", "sigma_r", "sigma_theta", "sigma_z"}, rows);
   });
 }
 

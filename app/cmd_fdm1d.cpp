@@ -49,7 +49,8 @@ void add_fdm1d_command(CLI::App& app, int& exit_code, const std::string& command
                     " factorisations, max volume-balance error " + balance);
     if (!s.is_success()) {
       std::cerr << "hmlattice fdm1d: numerical failure: " << s.message << "\n";
-      exit_code = 1;
+      // An overflow comes from the inputs: bad input (2); a singular matrix is the solver's (1).
+      exit_code = s.status == fdm1d::Fdm1dSummary::Status::non_finite ? 2 : 1;
       return;
     }
 

@@ -20,6 +20,10 @@
 #include "commands.hpp"
 #include "hm/case/coupled_model_of_case.hpp"
 #include "hm/core/file_output.hpp"
+#include "hm/core/input_error.hpp"
+#include "hm/core/interrupt.hpp"
+#include "hm/core/toml_text.hpp"
+#include "hm/core/validation.hpp"
 #include "hm/core/result_folder.hpp"
 #include "hm/lattice2d/mechanics/calibration.hpp"
 #include "hm/lattice2d/coupled/coupled_model.hpp"
@@ -41,6 +45,22 @@ int remaining_steps(double t, double dt, const lattice2d::TimeStepping& s) {
     t += dt;
   }
   return n;
+}
+
+// status.toml of a run that stopped before t_end: why, the last step it finished, how to run it again.
+void write_status(const std::filesystem::path& path, const std::string& why, int last_step, double t, double t_end,
+                  const std::filesystem::path& folder) {
+  core::write_file_atomically(path, [&](std::ostream& f) {
+    f << "# This run stopped before t_end. Every file here holds the steps up to last_step, complete;\n"
+      << "# nothing after it. Checkpoints are not written yet: a run is repeated from its config.toml.\n"
+      << "complete = false\n"
+      << "stopped = " << core::toml_string(why) << "\n"
+      << "last_step = " << last_step << "\n"
+      << "t_last = " << core::format_value(t) << "\n"
+      << "t_end = " << core::format_value(t_end) << "\n"
+      << "rerun = " << core::toml_string("hmlattice run " + (folder / "config.toml").string() + " --out <new folder>")
+      << "\n";
+  });
 }
 
 }  // namespace
@@ -79,6 +99,7 @@ void add_run_command(CLI::App& app, int& exit_code, const std::string& command_l
     // 3. Run: the initial state, then while time remains a coupled step; each step is recorded.
     cases::RunRecorder recorder(out.path(), c);
     cases::ProgressReporter progress(std::cout, "run");
+    const core::InterruptRequest interrupt;  // Ctrl-C or SIGTERM: stop after the step, keep the results
     int step = 0;
     double step_seconds = 0.0;  // for the ETA of the progress line
     const auto run = model->run(c.stepping, [&](const lattice2d::CoupledModel& m, const lattice2d::CoupledStepSummary& s,
@@ -96,7 +117,7 @@ void add_run_command(CLI::App& app, int& exit_code, const std::string& command_l
                                ? "; last failed update: " + m.mechanics().solver().report().last_update_failure
                                : std::string()));
       ++step;
-    });
+    }, [&] { return interrupt.signal() != 0; });
     char summary[500];
     std::snprintf(summary, sizeof summary,
                   "%d steps (%d halved), %d coupling iterations (= flow factorisations and solves), %d beams broken "
@@ -111,17 +132,26 @@ void add_run_command(CLI::App& app, int& exit_code, const std::string& command_l
     progress.finish(summary);
     if (run.n_mechanics_update_failures > 0)  // each cost a refactorisation: say what CHOLMOD reported (docs/borehole_fracture.md)
       std::cout << "last failed update: " << model->mechanics().solver().report().last_update_failure << "\n";
-    if (!run.is_ok()) {
-      std::cerr << "hmlattice run: numerical failure: " << run.message << "\n";
-      exit_code = 1;
-      return;  // the staging folder is removed: no partial results
-    }
 
-    // 4. The resolved configuration beside the results, then everything appears at once.
+    // 4. The resolved configuration beside the results, then everything appears at once. A run that
+    //    stopped early (interrupted, or a numerical failure) keeps every step it finished, marked
+    //    incomplete, with status.toml saying why and where it stopped.
     recorder.finish();
     core::write_file_atomically(out.path() / "config.toml", [&](std::ostream& f) {
       f << cases::run_case_to_toml(c, cases::to_toml(cases::make_provenance(command_line)));
     });
+    if (!run.is_ok()) {
+      const bool interrupted = run.status == lattice2d::CoupledStatus::interrupted;
+      const std::string why = interrupted ? std::string("interrupted by ") + interrupt.signal_name()
+                                          : "numerical failure: " + run.message;
+      write_status(out.path() / "status.toml", why, step - 1, model->time(), c.stepping.t_end, out.target());
+      out.commit(why);
+      std::cerr << "hmlattice run: " << core::one_line(why, 300) << "; the " << step - 1 << " steps done (t = "
+                << model->time() << " of " << c.stepping.t_end << ") are in " << out.target().string()
+                << ", marked incomplete (status.toml)\n";
+      exit_code = interrupted ? interrupt.exit_code() : 1;
+      return;
+    }
     out.commit();
     std::cout << "Results: " << out.target().string() << (c.fracture_enabled ? "/{series,radial,breaks,breakdown,fractures,fracture_summary}.csv, " : "/{series,radial}.csv, ") << (c.output.vtk ? "vtk/lattice.pvd, " : "")
               << "config.toml\n";

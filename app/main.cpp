@@ -25,6 +25,17 @@ std::string joined(int argc, char** argv) {
   return s;
 }
 
+// CLI11 reads an empty value as 0 for a number: "--Q ''" would run with Q = 0. Every option that
+// takes a value refuses an empty one.
+void reject_empty_values(CLI::App& app) {
+  for (CLI::Option* opt : app.get_options())
+    if (opt->get_type_size_max() > 0)
+      opt->check(CLI::Validator(
+          [](std::string& value) { return value.empty() ? std::string("'' (empty), allowed: a value") : std::string(); },
+          "", "non-empty"));
+  for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) reject_empty_values(*sub);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -39,6 +50,7 @@ int main(int argc, char** argv) {
   hm::app::add_fractures_command(app, joined(argc, argv));
   hm::app::add_analytic_command(app, exit_code);
   hm::app::add_case_format_command(app);
+  reject_empty_values(app);
 
   try {
     app.parse(argc, argv);
@@ -59,13 +71,13 @@ int main(int argc, char** argv) {
       }
       if (!known) what = std::string("unknown subcommand '") + argv[1] + "', allowed: " + allowed;
     }
-    std::cerr << "hmlattice: " << what << " (see hmlattice --help)\n";
+    std::cerr << "hmlattice: " << hm::core::one_line(what, 500) << " (see hmlattice --help)\n";
     return 2;
   } catch (const hm::InputError& e) {
-    std::cerr << "hmlattice: " << e.what() << "\n";
+    std::cerr << "hmlattice: " << hm::core::one_line(e.what(), 500) << "\n";
     return 2;
   } catch (const std::exception& e) {
-    std::cerr << "hmlattice: error: " << e.what() << "\n";
+    std::cerr << "hmlattice: error: " << hm::core::one_line(e.what(), 500) << "\n";
     return 1;
   }
   return exit_code;

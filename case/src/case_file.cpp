@@ -21,7 +21,7 @@ void CaseTable::fail(const std::string& message) const {
 }
 
 void CaseTable::wrong_type(const std::string& key, const std::string& wanted) const {
-  fail(key + " = " + toml::format(table_.at(key)) + ", allowed: " + wanted);
+  fail(key + " = " + core::echo(toml::format(table_.at(key))) + ", allowed: " + wanted);
 }
 
 bool CaseTable::has(const std::string& key) const { return table_.is_table() && table_.contains(key); }
@@ -95,7 +95,7 @@ void CaseTable::reject_unknown() const {
     if (used_.count(key)) continue;
     std::string known;
     for (const auto& k : used_) known += (known.empty() ? "" : ", ") + k;
-    fail("unknown key '" + key + "', allowed: " + (known.empty() ? "none here" : known));
+    fail("unknown key '" + core::echo(key) + "', allowed: " + (known.empty() ? "none here" : known));
   }
 }
 
@@ -117,8 +117,11 @@ std::string one_line_toml_error(const std::string& path, const std::string& what
 }  // namespace
 
 CaseFile::CaseFile(const std::filesystem::path& path) : path_(path) {
-  if (!std::filesystem::is_regular_file(path))
-    throw InputError(path.string() + ": no such case file, allowed: a TOML file (see cases/)");
+  std::error_code error;  // a dangling link or a link loop is bad input too, not a crash
+  const bool is_file = std::filesystem::is_regular_file(path, error);
+  if (error && error != std::errc::no_such_file_or_directory)
+    throw InputError(core::echo(path.string()) + ": cannot read: " + error.message());
+  if (!is_file) throw InputError(core::echo(path.string()) + ": no such case file, allowed: a TOML file (see cases/)");
   try {
     root_ = toml::parse(path.string());
   } catch (const toml::syntax_error& e) {
@@ -147,7 +150,9 @@ const CaseKeys<analytic::DimensionlessParameters>& physics_keys() {
     CaseKeys<analytic::DimensionlessParameters> k;
     k.table("physics")
         .real("Q", [](auto& d) -> auto& { return d.Q; }, ">= 0", "injection rate mu q/(k E) (Eq. 14)")
+        .required()
         .real("b", [](auto& d) -> auto& { return d.material.b; }, "0 <= b <= 1", "Biot coefficient")
+        .required()
         .real("nu", [](auto& d) -> auto& { return d.material.nu; }, "0 < nu < 0.5", "Poisson ratio")
         .real("E_over_M", [](auto& d) -> auto& { return d.material.E_over_M; }, "> 0",
               "E/M, the inverse dimensionless Biot modulus (Eqs. 14, 22)",
@@ -176,11 +181,13 @@ const CaseKeys<PhysicsSi>& physics_si_keys() {
         .real("k_f", [](auto& s) -> auto& { return s.p.k_f_si; }, "> 0", "permeability in fractures [m^2]")
         .real("mu", [](auto& s) -> auto& { return s.p.mu_si; }, "> 0", "fluid viscosity [Pa s]")
         .real("q", [](auto& s) -> auto& { return s.p.q_si; }, ">= 0", "injection rate per unit axial length [m^2/s]")
+        .required()
         .real("R", [](auto& s) -> auto& { return s.p.R_si; }, "> 0", "domain outer radius [m]")
         .real("R_i", [](auto& s) -> auto& { return s.p.R_i_si; }, "0 <= R_i < R", "borehole radius [m]")
         .real("porosity", [](auto& s) -> auto& { return s.p.porosity; }, "0 < porosity < 1, <= b", "porosity")
         .real("K_w", [](auto& s) -> auto& { return s.p.K_w_si; }, "> 0", "fluid bulk modulus [Pa]")
         .real("b", [](auto& s) -> auto& { return s.p.b; }, "0 <= b <= 1", "Biot coefficient")
+        .required()
         .real("T_u", [](auto& s) -> auto& { return s.p.T_u_si; }, "> 0", "uniaxial tensile strength [Pa]")
         .real("C_u", [](auto& s) -> auto& { return s.p.C_u_si; }, "> 0", "uniaxial compressive strength [Pa]")
         .real("mu_i", [](auto& s) -> auto& { return s.p.mu_i; }, ">= 0", "internal friction coefficient");
@@ -211,6 +218,16 @@ CasePhysics read_physics(CaseTable& root) {
     physics_keys().read(root, out.parameters);
   }
   return out;
+}
+
+void require_physics_present(CaseTable& root) {
+  const bool dimensionless = root.has("physics"), physical = root.has("physics_si");
+  if (!dimensionless && !physical)
+    root.fail("neither [physics] nor [physics_si] given, allowed: exactly one of them (required)");
+  if (physical)
+    physics_si_keys().require_present(root);
+  else
+    physics_keys().require_present(root);
 }
 
 std::string physics_to_toml(const CasePhysics& c) {

@@ -15,12 +15,13 @@ CaseKeys<Fdm1dCase> make_fdm1d_case_keys() {
   CaseKeys<Fdm1dCase> k;
   k.table("numerics")
       .integer("n_r", [](auto& c) -> auto& { return c.numerics.n_r; }, std::numeric_limits<int>::min(),
-               std::numeric_limits<int>::max(), ">= 8", "grid intervals on [R_i, 1]")
+               std::numeric_limits<int>::max(), "8 <= n_r <= 1000000", "grid intervals on [R_i, 1]")
       .real("dt_initial", [](auto& c) -> auto& { return c.numerics.dt_initial; }, "> 0", "first time step")
       .real("dt_growth", [](auto& c) -> auto& { return c.numerics.dt_growth; }, ">= 1",
             "dt_(k+1) = min(dt_growth dt_k, dt_max)")
       .real("dt_max", [](auto& c) -> auto& { return c.numerics.dt_max; }, ">= dt_initial", "largest time step")
-      .real("t_end", [](auto& c) -> auto& { return c.numerics.t_end; }, "> 0", "end time t*");
+      .real("t_end", [](auto& c) -> auto& { return c.numerics.t_end; }, "> 0", "end time t*")
+      .required();
   k.table("output")
       .reals("times", [](auto& c) -> auto& { return c.numerics.output_times; }, "increasing, in (0, t_end]",
              "times of the stored profiles; t_end is always stored")
@@ -60,6 +61,10 @@ Fdm1dCase read_fdm1d_case(const std::filesystem::path& file) {
       for (std::size_t at; (at = what.find(field)) != std::string::npos;) what.replace(at, std::strlen(field), key);
     root.table(is_output ? "output" : "numerics").fail(what);
   }
+  // What an empty or truncated file lacks, once every given value has been checked.
+  if (!root.has("model")) root.fail("model is missing, allowed: \"fdm1d\" (required)");
+  require_physics_present(root);
+  fdm1d_case_keys().require_present(root);
   return c;
 }
 

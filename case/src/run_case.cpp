@@ -44,6 +44,7 @@ CaseKeys<RunCase> make_run_case_keys() {
               "lattice's rectangle: the flow needs a circular outer boundary")
       .integer("n_particles", [](auto& c) -> auto& { return c.lattice.n_particles; }, std::numeric_limits<long long>::min(),
                std::numeric_limits<long long>::max(), "500 <= n_particles <= 5e6", "number of particles (about; Poisson-disk sampling)")
+      .required()
       .integer("seed", [](auto& c) -> auto& { return c.lattice.seed; }, 0, std::numeric_limits<long long>::max(), ">= 0",
                "seed of the lattice's points; equal seeds give bitwise equal lattices")
       .real("boundary_spacing_factor", [](auto& c) -> auto& { return c.lattice.boundary_spacing_factor; },
@@ -107,6 +108,7 @@ CaseKeys<RunCase> make_run_case_keys() {
       .real("dt_initial", [](auto& c) -> auto& { return c.stepping.dt_initial; }, "> 0, finite, <= t_end", "first time step")
       .real("dt_growth", [](auto& c) -> auto& { return c.stepping.dt_growth; }, ">= 1, finite", "factor between consecutive steps")
       .real("t_end", [](auto& c) -> auto& { return c.stepping.t_end; }, "> 0, finite", "end time t*")
+      .required()
       .real("dt_max", [](auto& c) -> auto& { return c.stepping.dt_max; }, ">= dt_initial, finite", "largest time step",
             [](const RunCase& c) { return c.stepping.t_end; }, "t_end (no cap)")
       .integer("max_step_halvings", [](auto& c) -> auto& { return c.stepping.max_step_halvings; }, 0, 50, "0 ... 50",
@@ -183,6 +185,10 @@ RunCase read_run_case(const std::filesystem::path& file) {
   }
   CaseTable numerics = root.table("numerics");
   located(numerics, "", [&] { c.flow_parameters().validate(); });
+  // What an empty or truncated file lacks, once every given value has been checked.
+  if (!root.has("model")) root.fail("model is missing, allowed: \"lattice2d\" (required)");
+  require_physics_present(root);
+  run_case_keys().require_present(root);
   return c;
 }
 

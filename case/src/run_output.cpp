@@ -58,6 +58,10 @@ RunRecorder::RunRecorder(const std::filesystem::path& dir, const RunCase& c)
   radial_ = std::make_unique<CsvWriter>(radial_file_,
                                         std::vector<std::string>{"t", "r", "r_mean", "n_triangles", "u_r", "p"});
   if (output_.vtk) vtk_ = std::make_unique<lt::VtkSeries>(dir / "vtk", "lattice");
+  if (fracture_) {
+    breaks_file_ = core::open_for_writing(dir / "breaks.csv");
+    lt::write_break_log_header(breaks_file_, "time");
+  }
 }
 
 void RunRecorder::record(const lt::CoupledModel& model, const lt::CoupledStepSummary& step, bool is_output) {
@@ -80,14 +84,19 @@ void RunRecorder::record(const lt::CoupledModel& model, const lt::CoupledStepSum
       b.x_first = log.front().position.x();
       b.y_first = log.front().position.y();
     }
-    breaks_.insert(breaks_.end(), log.begin() + static_cast<std::ptrdiff_t>(breaks_.size()), log.end());
+    const std::vector<lt::BreakEvent> new_breaks(log.begin() + static_cast<std::ptrdiff_t>(breaks_.size()), log.end());
+    lt::write_break_log_rows(breaks_file_, new_breaks);
+    breaks_file_.flush();
+    breaks_.insert(breaks_.end(), new_breaks.begin(), new_breaks.end());
     b.n_broken = model.n_broken();
   }
+  series_file_.flush();
   last_p_h_ = p_h;
   if (!is_output) return;
   const RadialFields f = radial_fields(model, lt::uniform_shell_edges(r_min_, output_.radial_max, output_.radial_bins));
   for (std::size_t k = 0; k < f.r_mid.size(); ++k)
     radial_->row({model.time(), f.r_mid[k], f.r_mean[k], static_cast<double>(f.n_triangles[k]), f.u_r[k], f.p[k]});
+  radial_file_.flush();
   if (fracture_)
     fractures_.push_back({model.time(), lt::compute_fracture_statistics(model.lattice(), model.mechanics().states(),
                                                                          model.break_log(), statistics_options_)});
@@ -109,7 +118,7 @@ void RunRecorder::finish() {
   core::close_checked(series_file_, dir_ / "series.csv");
   core::close_checked(radial_file_, dir_ / "radial.csv");
   if (!fracture_) return;
-  lt::write_break_log(dir_ / "breaks.csv", breaks_, "time");
+  core::close_checked(breaks_file_, dir_ / "breaks.csv");
   lt::write_fracture_table(dir_ / "fractures.csv", fractures_);
   lt::write_fracture_summary(dir_ / "fracture_summary.csv", fractures_);
   core::write_file_atomically(dir_ / "breakdown.csv", [&](std::ostream& file) {

@@ -1,6 +1,8 @@
 #include "hm/core/result_folder.hpp"
 
 #include <sys/stat.h>
+#include <signal.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -80,6 +82,47 @@ fs::path make_unique_folder(const fs::path& parent, const std::string& prefix, s
   return name;
 }
 
+constexpr const char* staging_prefix = ".hmlattice-staging-";
+
+std::string host_name() {
+  char name[256] = {};
+  return ::gethostname(name, sizeof name - 1) == 0 ? std::string(name) : std::string();
+}
+
+// The value of `key = ...` in a marker file ("" if absent), for the few keys written above.
+std::string marker_value(const fs::path& marker, const std::string& key) {
+  std::ifstream in(marker);
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind(key + " = ", 0) == 0) {
+      std::string v = line.substr(key.size() + 3);
+      if (v.size() >= 2 && v.front() == '"' && v.back() == '"') v = v.substr(1, v.size() - 2);
+      return v;
+    }
+  return "";
+}
+
+// One line on stderr for each staging folder in `parent` whose writing process no longer runs on
+// this machine (killed with SIGKILL, out of memory, a crash): its partial results stay where they are.
+void report_orphaned_staging(const fs::path& parent) {
+  std::error_code ec;
+  for (fs::directory_iterator it(parent, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.rfind(staging_prefix, 0) != 0 || !it->is_directory(ec)) continue;
+    const fs::path marker = it->path() / result_marker_name;
+    const std::string pid = marker_value(marker, "pid");
+    if (!pid.empty() && marker_value(marker, "host") == host_name()) {
+      const long id = std::strtol(pid.c_str(), nullptr, 10);
+      if (id > 0 && (::kill(static_cast<pid_t>(id), 0) == 0 || errno != ESRCH)) continue;  // still running
+    } else if (!pid.empty()) {
+      continue;  // written on another machine: cannot tell
+    }
+    std::cerr << "hmlattice: note: " << quoted(it->path()) << " holds the partial results of a run that was killed ("
+              << (marker_value(marker, "command_line").empty() ? std::string("command unknown")
+                                                               : marker_value(marker, "command_line"))
+              << "); kept: look inside, then remove it\n";
+  }
+}
+
 }  // namespace
 
 bool is_result_folder(const fs::path& folder) {
@@ -151,13 +194,28 @@ ResultFolder::ResultFolder(const fs::path& target, const std::string& option, bo
     }
     made_.push_back(*it);
   }
-  staging_ = make_unique_folder(parent, ".hmlattice-staging-", ec);
+  report_orphaned_staging(parent);
+  staging_ = make_unique_folder(parent, staging_prefix, ec);
   if (ec) {
     const std::string reason = ec.message();
     for (auto made = made_.rbegin(); made != made_.rend(); ++made) fs::remove(*made, ec);
     refuse(option_, shown_, "cannot be written: its folder " + quoted(parent) + " refuses new files (" + reason + ")",
            "allowed: a folder in a place you can write to");
   }
+  write_marker("running");
+}
+
+void ResultFolder::write_marker(const std::string& state) const {
+  write_file_atomically(staging_ / result_marker_name, [&](std::ostream& out) {
+    out << marker_first_line << ": written by the command below; `--overwrite` may replace this folder.\n"
+        << "command_line = " << toml_string(command_line_) << "\n"
+        << "version = " << toml_string(HM_VERSION) << "\n"
+        << "utc_time = " << toml_string(utc_now()) << "\n";
+    if (state == "running")
+      out << "state = \"running\"\nhost = " << toml_string(host_name()) << "\npid = " << ::getpid() << "\n";
+    else if (!state.empty())
+      out << "complete = false\nstopped = " << toml_string(state) << "\n";
+  });
 }
 
 ResultFolder::~ResultFolder() {
@@ -167,13 +225,8 @@ ResultFolder::~ResultFolder() {
   for (auto made = made_.rbegin(); made != made_.rend(); ++made) fs::remove(*made, ec);
 }
 
-void ResultFolder::commit() {
-  write_file_atomically(staging_ / result_marker_name, [&](std::ostream& out) {
-    out << marker_first_line << ": written by the command below; `--overwrite` may replace this folder.\n"
-        << "command_line = " << toml_string(command_line_) << "\n"
-        << "version = " << toml_string(HM_VERSION) << "\n"
-        << "utc_time = " << toml_string(utc_now()) << "\n";
-  });
+void ResultFolder::commit(const std::string& incomplete) {
+  write_marker(incomplete);
   const auto keep = [&](const std::string& why) {
     done_ = true;  // a finished result is never deleted by the toolkit
     throw std::runtime_error("the finished results could not be put in " + quoted(shown_) + " (" + why +

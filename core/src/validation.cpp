@@ -1,5 +1,6 @@
 #include "hm/core/validation.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <string>
@@ -44,6 +45,25 @@ void require_half_open(double value, std::string_view name, double lo, double hi
 }
 void require_at_least(long long value, std::string_view name, long long minimum) {
   if (value < minimum) fail(name, std::to_string(value), n(name) + " >= " + std::to_string(minimum));
+}
+
+void require_feasible_stepping(double dt_initial, double dt_growth, double dt_max, double t_end,
+                               std::string_view prefix) {
+  const std::string p(prefix);
+  if (t_end > SteppingLimits::max_t_end)
+    fail(p + "t_end", format_value(t_end), "t_end <= 1e6 (t* over the diffusion time; steady by t* ~ 10)");
+  if (dt_initial < SteppingLimits::min_dt_over_t_end * t_end)
+    fail(p + "dt_initial", format_value(dt_initial),
+         "dt_initial >= 1e-12 t_end = " + format_value(SteppingLimits::min_dt_over_t_end * t_end));
+  long long steps = 0;
+  for (double t = 0.0, dt = dt_initial; t < t_end && steps <= SteppingLimits::max_steps; ++steps) {
+    t += dt;
+    dt = std::min(dt * dt_growth, dt_max);
+  }
+  if (steps > SteppingLimits::max_steps)
+    fail(p + "dt_initial", format_value(dt_initial),
+         "a stepping of at most 1e6 steps; with dt_growth = " + format_value(dt_growth) + ", dt_max = " +
+             format_value(dt_max) + " and t_end = " + format_value(t_end) + " it takes more (raise dt_growth or dt_max)");
 }
 
 }  // namespace hm::core

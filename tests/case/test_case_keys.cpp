@@ -79,7 +79,8 @@ TEST_CASE("A key added as one table entry is read, written to config.toml and li
 TEST_CASE("Every key of the 2D case tables is in the resolved config.toml and reads back to the same case",
           "[case]") {
   TempDir dir("case-keys-run");
-  dir.write("case.toml", "[physics]\nR_i = 0\n[coupling]\nsplit = \"drained\"\n[numerics]\nt_end = 2e-4\n");
+  dir.write("case.toml", "model = \"lattice2d\"\n[physics]\nQ = 0.01\nb = 0.5\nR_i = 0\n[lattice]\nn_particles = 1000\n"
+                         "[coupling]\nsplit = \"drained\"\n[numerics]\nt_end = 2e-4\n");
   const hm::cases::RunCase c = hm::cases::read_run_case(dir.path / "case.toml");
   const std::string config = hm::cases::run_case_to_toml(c, "");
   for (const auto& table : hm::cases::run_case_keys().tables())

@@ -19,7 +19,7 @@ namespace {
 
 // A valid small case: N = 600 disk, two steps. Tests prepend or append one bad table.
 const std::string small_case =
-    "model = \"lattice2d\"\n[physics]\nQ = 0.1\nR_i = 0\n[lattice]\nn_particles = 600\n"
+    "model = \"lattice2d\"\n[physics]\nQ = 0.1\nb = 0.5\nR_i = 0\n[lattice]\nn_particles = 600\n"
     "[numerics]\ndt_initial = 5e-6\nt_end = 1e-5\n";
 
 }  // namespace
@@ -115,7 +115,7 @@ TEST_CASE("hmlattice run writes series, radial profiles, VTK and a resolved conf
   CHECK_THAT(config, Catch::Contains("stiffness_scaling = \"voronoi_facet\""));
   CHECK_THAT(config, Catch::Contains("boundary_spacing_factor = 1.3"));
   // ... and the paper's uniform lattice is a different, repeatable model.
-  const std::string uniform_case = "model = \"lattice2d\"\n[physics]\nQ = 0.1\nR_i = 0\n[lattice]\nn_particles = 600\n"
+  const std::string uniform_case = "model = \"lattice2d\"\n[physics]\nQ = 0.1\nb = 0.5\nR_i = 0\n[lattice]\nn_particles = 600\n"
                                    "stiffness_scaling = \"uniform\"\nboundary_spacing_factor = 1.0\n"
                                    "[numerics]\ndt_initial = 5e-6\nt_end = 1e-5\n[output]\ntimes = [5e-6]\nradial_bins = 5\n";
   dir.write("uniform.toml", uniform_case);
@@ -126,7 +126,8 @@ TEST_CASE("hmlattice run writes series, radial profiles, VTK and a resolved conf
   CHECK_THAT(hm::test::slurp(dir.path / "run3" / "config.toml"), Catch::Contains("stiffness_scaling = \"uniform\""));
 }
 
-TEST_CASE("A coupled run that does not converge exits 1 with the reason and writes nothing", "[verification][cli]") {
+TEST_CASE("A coupled run that does not converge exits 1 with the reason and keeps its steps, marked incomplete",
+          "[verification][cli]") {
   TempDir dir("cli-run-fail");
   dir.write("case.toml", small_case + "max_step_halvings = 0\n[coupling]\nmax_iterations = 1\n");
   const auto r = run_hmlattice("run case.toml --out run", dir.path);
@@ -137,7 +138,12 @@ TEST_CASE("A coupled run that does not converge exits 1 with the reason and writ
   const auto retried = run_hmlattice("run case2.toml --out run2", dir.path);
   CHECK(retried.exit_code == 1);
   CHECK_THAT(retried.err, Catch::Contains("coupling at t = 1.25e-06: not converged after 1 passes"));
-  CHECK_FALSE(std::filesystem::exists(dir.path / "run"));
+  // The steps before the failure (here none: it is the first) are kept with the reason.
+  CHECK(count_lines(r.err) == 1);
+  CHECK_THAT(hm::test::slurp(dir.path / "run" / "status.toml"),
+             Catch::Contains("complete = false") && Catch::Contains("not converged after 1 passes") &&
+                 Catch::Contains("last_step = 0\n"));
+  CHECK(count_lines(hm::test::slurp(dir.path / "run" / "series.csv")) == 2);  // header and t = 0
 }
 
 TEST_CASE("A 2D case in SI units gives the same dimensionless results as its dimensionless twin", "[verification][cli]") {
@@ -146,8 +152,8 @@ TEST_CASE("A 2D case in SI units gives the same dimensionless results as its dim
   TempDir dir("cli-run-si");
   const std::string rest = "[lattice]\nn_particles = 600\n[numerics]\ndt_initial = 5e-6\nt_end = 1e-5\n"
                            "[output]\nradial_bins = 5\nvtk = false\n";
-  dir.write("dimensionless.toml", "[physics]\nQ = 0.1\nb = 0.5\nnu = 0.25\nR_i = 0\n" + rest);
-  dir.write("si.toml", "[physics_si]\nE = 1e10\nnu = 0.25\nk = 1e-14\nmu = 1e-3\nq = 1e-2\nR = 1\nR_i = 0\nb = 0.5\n" + rest);
+  dir.write("dimensionless.toml", "model = \"lattice2d\"\n[physics]\nQ = 0.1\nb = 0.5\nnu = 0.25\nR_i = 0\n" + rest);
+  dir.write("si.toml", "model = \"lattice2d\"\n[physics_si]\nE = 1e10\nnu = 0.25\nk = 1e-14\nmu = 1e-3\nq = 1e-2\nR = 1\nR_i = 0\nb = 0.5\n" + rest);
   REQUIRE(run_hmlattice("run dimensionless.toml --out a", dir.path).exit_code == 0);
   REQUIRE(run_hmlattice("run si.toml --out b", dir.path).exit_code == 0);
   auto numbers = [](const std::string& csv) {

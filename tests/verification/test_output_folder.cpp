@@ -20,7 +20,7 @@ namespace {
 const std::string fdm1d_case = "'" HM_SOURCE_DIR "/cases/fig10_fdm1d_b0.5.toml'";
 // A 2D run of a few seconds: N = 600 disk, two steps.
 const std::string small_run_case =
-    "model = \"lattice2d\"\n[physics]\nQ = 0.1\nR_i = 0\n[lattice]\nn_particles = 600\n"
+    "model = \"lattice2d\"\n[physics]\nQ = 0.1\nb = 0.5\nR_i = 0\n[lattice]\nn_particles = 600\n"
     "[numerics]\ndt_initial = 5e-6\nt_end = 1e-5\n";
 const std::string allowed = "allowed: a new or empty folder, or an earlier hmlattice result with --overwrite";
 
@@ -135,9 +135,9 @@ TEST_CASE("On a full disk every command fails with the file named, and leaves no
 
 TEST_CASE("A run that fails while replacing an earlier result leaves that result intact", "[verification][cli]") {
   TempDir dir("out-failed-replace");
-  hm::test::SmallDisk disk(dir.path / "disk", 48);
+  hm::test::SmallDisk disk(dir.path / "disk", 64);
   // A result that fits: the 1D model's coarse grid with few outputs.
-  dir.write("small.toml", "model = \"fdm1d\"\n[numerics]\nn_r = 40\nt_end = 0.01\n[output]\ntimes = [0.01]\n");
+  dir.write("small.toml", "model = \"fdm1d\"\n[physics]\nQ = 0.01\nb = 0.5\n[numerics]\nn_r = 40\nt_end = 0.01\n[output]\ntimes = [0.01]\n");
   const auto first = run_hmlattice("fdm1d small.toml --out disk/res", dir.path, disk.shell_prefix());
   INFO("stderr: " << first.err);
   REQUIRE(first.exit_code == 0);

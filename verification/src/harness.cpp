@@ -17,16 +17,21 @@ namespace fs = std::filesystem;
 
 HarnessSummary run_harness(const std::vector<Benchmark>& benchmarks, const HarnessOptions& options,
                            std::ostream& log) {
-  core::ResultFolder out(options.out_dir, "--out", options.overwrite, options.command_line);
-  const fs::path data_dir = out.path() / "data", figure_dir = out.path() / "figures";
-  fs::create_directories(data_dir);
-  fs::create_directories(figure_dir);
-
   std::vector<const Benchmark*> selected;
   for (const auto& b : benchmarks)
     if ((options.tier == Tier::paper || b.tier == Tier::quick) &&
         b.id.find(options.filter) != std::string::npos)
       selected.push_back(&b);
+  // A filter that selects nothing is a typo, not an empty report.
+  if (selected.empty())
+    throw InputError("--filter = '" + core::echo(options.filter) + "' matches no benchmark id of the " +
+                     core::name_of(options.tier) + " tier, allowed: part of an id (" +
+                     (benchmarks.empty() ? std::string("none registered") : "e.g. '" + benchmarks.front().id + "'") + ")");
+
+  core::ResultFolder out(options.out_dir, "--out", options.overwrite, options.command_line);
+  const fs::path data_dir = out.path() / "data", figure_dir = out.path() / "figures";
+  fs::create_directories(data_dir);
+  fs::create_directories(figure_dir);
 
   HarnessSummary summary;
   std::vector<BenchmarkOutcome> outcomes;

@@ -41,6 +41,7 @@ void TimeStepping::validate() const {
     throw hm::InputError("numerics.max_step_halvings = " + std::to_string(max_step_halvings) + ", allowed: 0 ... 50");
   if (!(dt_max >= dt_initial))
     throw hm::InputError("numerics.dt_max = " + format_value(dt_max) + ", allowed: >= dt_initial = " + format_value(dt_initial));
+  require_feasible_stepping(dt_initial, dt_growth, dt_max, t_end, "numerics.");
   for (std::size_t k = 0; k < output_times.size(); ++k) {
     const double t = output_times[k];
     if (!(t > 0.0 && t <= t_end))
@@ -287,7 +288,8 @@ void CoupledRunSummary::add_accepted_step(const CoupledStepSummary& s) {
   n_mechanics_update_failures += s.n_mechanics_update_failures;
 }
 
-CoupledRunSummary CoupledModel::run(const TimeStepping& stepping, const Observer& observer) {
+CoupledRunSummary CoupledModel::run(const TimeStepping& stepping, const Observer& observer,
+                                    const std::function<bool()>& stop) {
   stepping.validate();
   const auto start = std::chrono::steady_clock::now();
   CoupledRunSummary run;
@@ -328,6 +330,11 @@ CoupledRunSummary CoupledModel::run(const TimeStepping& stepping, const Observer
     if (observer) observer(*this, s, is_output);
     // Geometric growth of the nominal step; a step shortened to hit an output does not reset it.
     if (dt >= dt_nominal * (1.0 - 1e-12)) dt_nominal = std::min(dt_nominal * stepping.dt_growth, stepping.dt_max);
+    if (stop && stop() && time() < stepping.t_end - snap) {
+      run.status = CoupledStatus::interrupted;
+      run.message = "stopped on request at t = " + hm::core::format_value(time());
+      break;
+    }
   }
   run.time = time();
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

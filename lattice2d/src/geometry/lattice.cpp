@@ -22,7 +22,15 @@ void LatticeSpec::validate() const {
   require_closed(static_cast<double>(n_particles), "n_particles", 500.0, 5e6);
   require_closed(bridson_attempts, "bridson_attempts", 5.0, 1000.0);
   require_closed(boundary_spacing_factor, "boundary_spacing_factor", 1.0, 1.35);
-  if (domain == DomainShape::annulus) require_open(inner_radius, "inner_radius", 0.0, 1.0);
+  if (domain == DomainShape::annulus) {
+    require_open(inner_radius, "inner_radius", 0.0, 1.0);
+    // The ring must hold a few particles across, or the beams of its two boundary rows form a
+    // strip without interior (a singular stiffness): 3 mean spacings sqrt(area / N).
+    const double spacing = std::sqrt(domain_area(*this) / static_cast<double>(n_particles));
+    if (1.0 - inner_radius < 3.0 * spacing)
+      throw InputError("inner_radius = " + format_value(inner_radius) + ", allowed: a ring 1 - inner_radius >= 3 particle "
+                       "spacings wide (3 x " + format_value(spacing) + " at n_particles = " + std::to_string(n_particles) + ")");
+  }
   if (domain == DomainShape::rectangle) {
     require_positive(width, "width");
     require_positive(height, "height");

@@ -6,30 +6,38 @@
 
 #include "hm/core/csv_writer.hpp"
 #include "hm/core/file_output.hpp"
+#include "hm/core/input_error.hpp"
 
 namespace hm::lattice2d {
 
 using core::csv_number;
 
+void write_break_log_header(std::ostream& out, const std::string& load_column) {
+  out << "sequence,beam,particle_i,particle_j,x,y," << load_column << ",sigma_1,sigma_3,ratio,crack_tip_factor,mode\n";
+}
+
+void write_break_log_rows(std::ostream& out, const std::vector<BreakEvent>& events) {
+  for (const BreakEvent& ev : events)
+    out << ev.sequence << ',' << ev.beam << ',' << ev.particle_i << ',' << ev.particle_j << ','
+        << csv_number(ev.position.x()) << ',' << csv_number(ev.position.y()) << ',' << csv_number(ev.load) << ','
+        << csv_number(ev.sigma_1) << ',' << csv_number(ev.sigma_3) << ',' << csv_number(ev.ratio) << ','
+        << csv_number(ev.crack_tip_factor) << ',' << core::name_of(ev.mode) << '\n';
+}
+
 void write_break_log(const std::filesystem::path& path, const std::vector<BreakEvent>& events,
                      const std::string& load_column) {
   core::write_file_atomically(path, [&](std::ostream& out) {
-    out << "sequence,beam,particle_i,particle_j,x,y," << load_column
-        << ",sigma_1,sigma_3,ratio,crack_tip_factor,mode\n";
-    for (const BreakEvent& ev : events)
-      out << ev.sequence << ',' << ev.beam << ',' << ev.particle_i << ',' << ev.particle_j << ','
-          << csv_number(ev.position.x()) << ',' << csv_number(ev.position.y()) << ',' << csv_number(ev.load) << ','
-          << csv_number(ev.sigma_1) << ',' << csv_number(ev.sigma_3) << ',' << csv_number(ev.ratio) << ','
-          << csv_number(ev.crack_tip_factor) << ',' << core::name_of(ev.mode) << '\n';
+    write_break_log_header(out, load_column);
+    write_break_log_rows(out, events);
   });
 }
 
 std::vector<BreakEvent> read_break_log(const std::filesystem::path& path) {
   std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot read the break log " + path.string());
+  if (!in) throw InputError("cannot read the break log " + path.string());
   int line_no = 1;
   const auto fail = [&](const std::string& what) {
-    throw std::runtime_error(path.string() + ":" + std::to_string(line_no) + ": " + what);
+    throw InputError(path.string() + ":" + std::to_string(line_no) + ": " + what);
   };
   std::string line;
   std::getline(in, line);
@@ -37,7 +45,7 @@ std::vector<BreakEvent> read_break_log(const std::filesystem::path& path) {
   const std::string after = ",sigma_1,sigma_3,ratio,crack_tip_factor,mode";
   if (line.rfind(before, 0) != 0 || line.size() < before.size() + after.size() ||
       line.compare(line.size() - after.size(), after.size(), after) != 0)
-    fail("header '" + line + "', expected '" + before + "<load>" + after + "'");
+    fail("header '" + core::echo(line) + "', expected '" + before + "<load>" + after + "'");
   std::vector<BreakEvent> events;
   while (std::getline(in, line)) {
     ++line_no;
@@ -70,7 +78,7 @@ std::vector<BreakEvent> read_break_log(const std::filesystem::path& path) {
       ev.ratio = real(cells[9]);
       ev.crack_tip_factor = real(cells[10]);
     } catch (const std::logic_error&) {  // std::invalid_argument and std::out_of_range
-      fail("not a number in '" + line + "'");
+      fail("not a number in '" + core::echo(line) + "'");
     }
     try {
       ev.mode = core::from_name<FailureMode>(cells[11], "mode", {FailureMode::tensile, FailureMode::shear});

@@ -69,6 +69,9 @@ struct CasePhysics {
   std::optional<hm::analytic::Scales> scales;
 };
 CasePhysics read_physics(CaseTable& root);
+/// Fails for the first required key of the physics (Q and b, or q and b) the file lacks, or if it has
+/// neither table. Called after everything else is read, so that wrong values are reported first.
+void require_physics_present(CaseTable& root);
 
 /// The reference of [physics] and [physics_si]: every key, its default, rule and meaning (markdown).
 std::string physics_reference_markdown();

@@ -37,6 +37,7 @@ struct CaseKey {
   std::string help;          ///< what it means, one line
   std::function<void(CaseTable&, Case&)> read;      ///< reads the key, or sets its default
   std::function<std::string(const Case&)> to_toml;  ///< the resolved value as TOML
+  bool required = false;  ///< no default: a case without the key is an error
 };
 
 /// One [table] of a case file: its keys in order, and what is checked once they are read.
@@ -82,6 +83,13 @@ class CaseKeys {
     return *this;
   }
 
+  /// The key declared last has no default: the experiment is never implied (an empty or truncated
+  /// file is an error naming what is missing; see require_present).
+  CaseKeys& required() {
+    tables_.back().keys.back().required = true;
+    return *this;
+  }
+
   /// Any key: `read` and `to_toml` spelled out.
   CaseKeys& key(CaseKey<Case> entry) {
     tables_.back().keys.push_back(std::move(entry));
@@ -106,9 +114,11 @@ class CaseKeys {
                     std::string help) {
     return key({name, "integer", "", allowed, std::move(help),
                 [name, field, lo, hi, allowed](CaseTable& t, Case& c) {
-                  const long long v = t.get_int(name, static_cast<long long>(field(c)));
-                  if (v < lo || v > hi) t.fail(name + " = " + std::to_string(v) + ", allowed: " + allowed);
                   using Int = std::remove_reference_t<decltype(field(c))>;
+                  const long long v = t.get_int(name, static_cast<long long>(field(c)));
+                  // Checked before the conversion: 4294967696 must not become an int's 400.
+                  if (v < lo || v > hi || !std::in_range<Int>(v))
+                    t.fail(name + " = " + std::to_string(v) + ", allowed: " + allowed);
                   field(c) = static_cast<Int>(v);
                 },
                 [field](const Case& c) { return std::to_string(field(c)); }});
@@ -161,6 +171,16 @@ class CaseKeys {
     }
   }
 
+  /// Fails for the first required key `root` lacks. Called once the whole file has been read, so
+  /// that a wrong value is reported before a missing one.
+  void require_present(CaseTable& root) const {
+    for (const CaseKeyTable<Case>& spec : tables_) {
+      CaseTable t = root.table(spec.name);
+      for (const CaseKey<Case>& k : spec.keys)
+        if (k.required && !t.has(k.name)) t.fail(k.name + " is missing, allowed: " + k.allowed + " (required)");
+    }
+  }
+
   /// Every table with every key's resolved value, in declaration order.
   std::string to_toml(const Case& c) const {
     std::string out;
@@ -181,8 +201,9 @@ class CaseKeys {
       out += "### [" + spec.name + "]\n\n| key | type | default | allowed | meaning |\n|---|---|---|---|---|\n";
       for (const CaseKey<Case>& k : spec.keys) {
         // Appended piece by piece: g++ 12 warns (-Wrestrict, falsely) on a literal + string chain here.
-        const std::string default_cell = k.default_text.empty() ? std::string(1, '`').append(k.to_toml(defaults)).append(1, '`')
-                                                                : k.default_text;
+        const std::string default_cell = k.required             ? std::string("required")
+                                         : k.default_text.empty() ? std::string(1, '`').append(k.to_toml(defaults)).append(1, '`')
+                                                                  : k.default_text;
         out.append("| `").append(k.name).append("` | ").append(k.type).append(" | ").append(default_cell);
         out.append(" | ").append(k.allowed).append(" | ").append(k.help).append(" |\n");
       }

@@ -51,7 +51,8 @@ struct Breakdown {
 };
 
 /// Writes the files above into `dir` (created by the caller) while a CoupledModel runs; pass
-/// record() as the model's observer. Nothing here decides anything about the run.
+/// record() as the model's observer. series.csv and breaks.csv are flushed at every step, so an
+/// interrupted or failed run keeps every step it finished. Nothing here decides anything about the run.
 class RunRecorder {
  public:
   RunRecorder(const std::filesystem::path& dir, const RunCase& c);
@@ -71,7 +72,7 @@ class RunRecorder {
   double last_p_h_ = 0.0;
   std::vector<hm::lattice2d::BreakEvent> breaks_;
   std::vector<hm::lattice2d::FractureSnapshot> fractures_;
-  std::ofstream series_file_, radial_file_;
+  std::ofstream series_file_, radial_file_, breaks_file_;
   std::unique_ptr<core::CsvWriter> series_, radial_;
   std::unique_ptr<hm::lattice2d::VtkSeries> vtk_;
 };

@@ -12,15 +12,20 @@ namespace hm::core {
 /// `v` with 10 significant digits, printf's %.10g.
 std::string csv_number(double v);
 
+/// What a row with an inf or nan does: written as it is, or refused (an InputError naming the
+/// column: results that overflowed double precision are bad input, not results).
+enum class NonFinite { write, reject };
+
 class CsvWriter {
  public:
-  CsvWriter(std::ostream& out, const std::vector<std::string>& columns);
+  CsvWriter(std::ostream& out, const std::vector<std::string>& columns, NonFinite non_finite = NonFinite::write);
   void row(const std::vector<double>& values);
   void row(std::initializer_list<double> values) { row(std::vector<double>(values)); }
 
  private:
   std::ostream& out_;
-  std::size_t n_columns_;
+  std::vector<std::string> columns_;
+  NonFinite non_finite_;
 };
 
 }  // namespace hm::core

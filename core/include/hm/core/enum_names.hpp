@@ -66,7 +66,7 @@ template <class Enum>
 Enum from_name(std::string_view name, std::string_view field, const std::vector<Enum>& allowed = enum_values<Enum>()) {
   for (Enum v : allowed)
     if (name == name_of(v)) return v;
-  throw InputError(std::string(field) + " = '" + std::string(name) + "', allowed: " + names_list(allowed));
+  throw InputError(std::string(field) + " = '" + echo(name) + "', allowed: " + names_list(allowed));
 }
 
 }  // namespace hm::core

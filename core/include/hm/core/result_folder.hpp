@@ -14,6 +14,9 @@
 /// takes the target's place on commit() in one rename; an earlier result is first renamed aside and
 /// removed only once the new one is in place, so at no moment is neither there. If the last rename
 /// fails, the finished staging folder is kept and the error says where.
+/// A staging folder carries the marker from the start, with the writing process's id: a staging
+/// folder whose process is gone (killed, or the machine went down) is reported, never removed, by
+/// the next ResultFolder made beside it — what it holds may be all that is left of a long run.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -56,10 +59,13 @@ class ResultFolder {
 
   /// Writes the marker and moves the staged results into place. Throws std::runtime_error if they
   /// cannot be put there (the target changed meanwhile, a rename failed): the finished results are
-  /// then kept in the staging folder, whose path the message gives.
-  void commit();
+  /// then kept in the staging folder, whose path the message gives. A non-empty `incomplete` (why
+  /// the run stopped early) goes into the marker as `complete = false`; the results are still kept.
+  void commit(const std::string& incomplete = "");
 
  private:
+  void write_marker(const std::string& state) const;  // "running", "" (complete) or why it stopped
+
   std::filesystem::path shown_, target_, staging_;
   std::string option_, command_line_;
   bool overwrite_;

@@ -19,4 +19,18 @@ void require_half_open(double value, std::string_view name, double lo, double hi
 /// Integer count at least `minimum`.
 void require_at_least(long long value, std::string_view name, long long minimum);
 
+/// Limits of a geometric time stepping (dt_initial, growing by dt_growth up to dt_max, to t_end),
+/// for both models; times are t* (over the diffusion time t_s). The borehole problems are steady
+/// by t* ~ 10, so t_end above 1e6 is a typo; a first step below 1e-12 t_end loses dt in t + dt
+/// (16 digits) or never grows (5e-324 x 1.05 == 5e-324); more than 1e6 steps would not finish.
+struct SteppingLimits {
+  static constexpr double max_t_end = 1e6;
+  static constexpr double min_dt_over_t_end = 1e-12;
+  static constexpr long long max_steps = 1000000;
+};
+/// Throws InputError "<prefix>dt_initial = ..., allowed: ..." when the stepping breaks a limit; the
+/// message gives the number of steps it would take. Call after each value is checked on its own.
+void require_feasible_stepping(double dt_initial, double dt_growth, double dt_max, double t_end,
+                               std::string_view prefix);
+
 }  // namespace hm::core

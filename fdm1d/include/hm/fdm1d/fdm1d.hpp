@@ -76,7 +76,8 @@ struct PressureMinimum {
 
 /// Outcome of a run: numerical trouble is reported here, never thrown.
 struct Fdm1dSummary {
-  enum class Status { success, singular_matrix };
+  /// non_finite: the solution overflowed (inputs beyond double precision, e.g. Q = 1e308).
+  enum class Status { success, singular_matrix, non_finite };
   Status status = Status::success;
   std::string message;             ///< human-readable; empty on success
   long n_steps = 0;                ///< time steps taken

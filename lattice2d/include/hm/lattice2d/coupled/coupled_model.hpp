@@ -137,11 +137,13 @@ enum class CoupledStatus {
   accepted_unconverged,  ///< max_iterations hit and accept_unconverged set
   not_converged,   ///< max_iterations hit: the step was not taken
   solver_failure,  ///< the mechanics or the flow solve failed: the step was not taken
+  interrupted,     ///< run() stopped between steps because its stop request said so
 };
 constexpr auto enum_names(CoupledStatus) {
   return core::enum_table<CoupledStatus>({
       {CoupledStatus::converged, "converged"}, {CoupledStatus::accepted_unconverged, "accepted unconverged"},
-      {CoupledStatus::not_converged, "not converged"}, {CoupledStatus::solver_failure, "solver failure"}});
+      {CoupledStatus::not_converged, "not converged"}, {CoupledStatus::solver_failure, "solver failure"},
+      {CoupledStatus::interrupted, "interrupted"}});
 }
 
 /// What one coupled time step did (Ceres' Summary in small).
@@ -227,8 +229,10 @@ class CoupledModel {
   /// Observer of run(): called after every accepted step, with `is_output` true at t = 0, at each
   /// output time and at t_end.
   using Observer = std::function<void(const CoupledModel&, const CoupledStepSummary&, bool is_output)>;
-  /// Initial state (observer at t = 0), then while time remains, a step. Stops at the first failed step.
-  CoupledRunSummary run(const TimeStepping& stepping, const Observer& observer = {});
+  /// Initial state (observer at t = 0), then while time remains, a step. Stops at the first failed step,
+  /// or (status interrupted) after an accepted step and its observer when `stop` returns true.
+  CoupledRunSummary run(const TimeStepping& stepping, const Observer& observer = {},
+                        const std::function<bool()>& stop = {});
 
   /// Called after every pass of step() with the pass number (1-based), that pass's flow pressure
   /// (trial, size n_unknowns) and displacement: for studies of the iteration itself (Fig. 8).

@@ -3,6 +3,7 @@
 /// The break log of a run (breaks.csv): one row per broken beam, in breaking order, written once
 /// and read back by the fracture re-analysis and the figure scripts.
 #include <filesystem>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,11 @@ namespace hm::lattice2d {
 /// Numbers with 10 significant digits. Throws std::runtime_error naming the path if it cannot write.
 void write_break_log(const std::filesystem::path& path, const std::vector<BreakEvent>& events,
                      const std::string& load_column = "load");
+
+/// The two parts of write_break_log, for a log written while a run goes on (one flush per step):
+/// the header row, and the rows of `events`.
+void write_break_log_header(std::ostream& out, const std::string& load_column);
+void write_break_log_rows(std::ostream& out, const std::vector<BreakEvent>& events);
 
 /// Reads a log written by write_break_log (any load column name; numbers as written, so 10
 /// significant digits). Throws std::runtime_error "<path>:<line>: ..." if the file cannot be read,

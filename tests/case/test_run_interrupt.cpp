@@ -1,0 +1,84 @@
+// A run stopped by SIGINT or SIGTERM keeps every step it finished: the folder appears as --out,
+// marked incomplete, with status.toml, series.csv and breaks.csv up to the last step; the exit status
+// is the shell's for the signal (130, 143); one line on stderr says so.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "run_command.hpp"
+
+using hm::test::count_lines;
+using hm::test::slurp;
+using hm::test::TempDir;
+
+namespace {
+
+// The Fig. 12 quick case (fracture on) with a constant step, so that it runs for minutes and the
+// signal arrives in the middle.
+std::string long_case() {
+  std::string text = slurp(std::filesystem::path(HM_SOURCE_DIR) / "cases/fig12_b0.2_quick.toml");
+  text.replace(text.find("dt_growth = 1.2"), 15, "dt_growth = 1.0");
+  return text;
+}
+
+// Starts the run in the background, sends `signal` once the staged series.csv has 6 rows (t = 0 and
+// five steps, flushed as they finish), waits; returns the exit status.
+int run_and_signal(const TempDir& dir, const std::string& signal) {
+  dir.write("case.toml", long_case());
+  dir.write("interrupt.sh",
+            "'" + std::string(HMLATTICE_EXE) + "' run case.toml --out run > out.txt 2> err.txt & pid=$!\n"
+            "for i in $(seq 1200); do\n"
+            "  n=$(cat .hmlattice-staging-*/series.csv 2>/dev/null | wc -l)\n"
+            "  [ \"$n\" -ge 7 ] && break\n"
+            "  sleep 0.05\n"
+            "done\n"
+            "kill -" + signal + " $pid\nwait $pid\necho $? > rc.txt\n");
+  REQUIRE(std::system(("cd '" + dir.path.string() + "' && bash interrupt.sh").c_str()) == 0);
+  return std::stoi(slurp(dir.path / "rc.txt"));
+}
+
+}  // namespace
+
+TEST_CASE("An interrupted run keeps its finished steps in --out, marked incomplete", "[case][cli]") {
+  for (const auto& [signal, code] : {std::pair{"INT", 130}, std::pair{"TERM", 143}}) {
+    TempDir dir(std::string("run-interrupt-") + signal);
+    CHECK(run_and_signal(dir, signal) == code);
+    const std::string err = slurp(dir.path / "err.txt");
+    INFO(err);
+    CHECK(count_lines(err) == 1);
+    CHECK_THAT(err, Catch::Contains(std::string("interrupted by SIG") + signal) && Catch::Contains("marked incomplete"));
+    const auto run = dir.path / "run";
+    REQUIRE(std::filesystem::is_directory(run));
+    // No staging folder is left beside it.
+    for (const auto& entry : std::filesystem::directory_iterator(dir.path))
+      CHECK(entry.path().filename().string().rfind(".hmlattice-staging-", 0) != 0);
+    const std::string status = slurp(run / "status.toml");
+    CHECK_THAT(status, Catch::Contains("complete = false"));
+    CHECK_THAT(slurp(run / ".hmlattice"), Catch::Contains("complete = false"));
+    // series.csv: the header, t = 0 and every finished step; status.toml names the last one.
+    const int rows = count_lines(slurp(run / "series.csv"));
+    CHECK(rows >= 7);
+    CHECK_THAT(status, Catch::Contains("last_step = " + std::to_string(rows - 2) + "\n"));
+    CHECK(slurp(run / "breaks.csv").rfind("sequence,beam,particle_i,particle_j,x,y,time,", 0) == 0);
+    // The folder is a complete description of what was done: its config reruns the whole case.
+    CHECK(std::filesystem::exists(run / "config.toml"));
+  }
+}
+
+TEST_CASE("A killed run's staging folder is reported by the next run beside it, and kept", "[case][cli]") {
+  TempDir dir("run-killed");
+  CHECK(run_and_signal(dir, "KILL") == 128 + 9);
+  std::filesystem::path staging;
+  for (const auto& entry : std::filesystem::directory_iterator(dir.path))
+    if (entry.path().filename().string().rfind(".hmlattice-staging-", 0) == 0) staging = entry.path();
+  REQUIRE_FALSE(staging.empty());
+  dir.write("small.toml", "model = \"fdm1d\"\n[physics]\nQ = 0.01\nb = 0.5\n[numerics]\nn_r = 40\nt_end = 0.01\n[output]\ntimes = [0.01]\n");
+  const auto r = hm::test::run_hmlattice("fdm1d small.toml --out other", dir.path);
+  CHECK(r.exit_code == 0);
+  CHECK(count_lines(r.err) == 1);
+  CHECK_THAT(r.err, Catch::Contains(staging.filename().string()) && Catch::Contains("run case.toml --out run") &&
+                        Catch::Contains("kept"));
+  CHECK(std::filesystem::exists(staging / "series.csv"));
+}
