@@ -31,7 +31,9 @@ void PhysicalParameters::validate() const {
 
 void DimensionlessParameters::validate() const {
   material.validate();
-  require_non_negative(Q, "Q");
+  // Pressures scale with Q (p_h ~ Q ln(1/R_i) / 2 pi): Q = 1e6 is already a borehole pressure of
+  // ~3e5 E, beyond any rock; far above it the solvers' numbers overflow.
+  require_closed(Q, "Q", 0.0, 1e6);
   require_positive(iota, "iota");
   require_half_open(R_i, "R_i", 0.0, 1.0);
   require_positive(tensile_strength, "tensile_strength");

@@ -149,7 +149,7 @@ const CaseKeys<analytic::DimensionlessParameters>& physics_keys() {
   static const CaseKeys<analytic::DimensionlessParameters> keys = [] {
     CaseKeys<analytic::DimensionlessParameters> k;
     k.table("physics")
-        .real("Q", [](auto& d) -> auto& { return d.Q; }, ">= 0", "injection rate mu q/(k E) (Eq. 14)")
+        .real("Q", [](auto& d) -> auto& { return d.Q; }, "0 <= Q <= 1e6", "injection rate mu q/(k E) (Eq. 14)")
         .required()
         .real("b", [](auto& d) -> auto& { return d.material.b; }, "0 <= b <= 1", "Biot coefficient")
         .required()

@@ -153,7 +153,7 @@ TEST_CASE("Dimensionless parameters: each rule rejects its bad value with field,
   check_rejected_dimensionless([](D& d) { d.material.nu = 0.5; }, "nu = 0.5, allowed: 0 < nu < 0.5");
   check_rejected_dimensionless([](D& d) { d.material.b = 1.01; }, "b = 1.01, allowed: 0 <= b <= 1");
   check_rejected_dimensionless([](D& d) { d.material.E_over_M = 0.0; }, "E_over_M = 0, allowed: E_over_M > 0");
-  check_rejected_dimensionless([](D& d) { d.Q = -0.01; }, "Q = -0.01, allowed: Q >= 0");
+  check_rejected_dimensionless([](D& d) { d.Q = -0.01; }, "Q = -0.01, allowed: 0 <= Q <= 1e+06");
   check_rejected_dimensionless([](D& d) { d.iota = 0.0; }, "iota = 0, allowed: iota > 0");
   check_rejected_dimensionless([](D& d) { d.R_i = 1.0; }, "R_i = 1, allowed: 0 <= R_i < 1");
   check_rejected_dimensionless([](D& d) { d.tensile_strength = 0.0; },

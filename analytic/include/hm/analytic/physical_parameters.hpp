@@ -29,7 +29,7 @@ struct PhysicalParameters {
 /// The dimensionless parameter set every model reads (Section 2.4).
 struct DimensionlessParameters {
   PoroelasticParameters material;  ///< nu, b, E/M, vol_strain
-  /// Q = mu q/(k E), dimensionless injection rate (Eq. 14). Allowed: >= 0.
+  /// Q = mu q/(k E), dimensionless injection rate (Eq. 14). Allowed: 0 <= Q <= 1e6.
   double Q = 0.01;
   /// iota = k_f/k, fracture permeability enhancement (Section 2.2). Allowed: > 0.
   double iota = 1.0;

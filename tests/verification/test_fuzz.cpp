@@ -1,0 +1,119 @@
+// Seeded fuzzing of case files and command lines: every mutated input ends either as a valid run
+// (exit 0, the result folder with its config.toml) or as bad input (exit 2, exactly one line on
+// stderr, no result folder), never a crash, a signal, a hang, another exit code or a half-written
+// folder. The seed is fixed, so a failure is reproducible; the failing input is printed.
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "run_command.hpp"
+
+using hm::test::count_lines;
+using hm::test::TempDir;
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string fdm1d_case =
+    "model = \"fdm1d\"\n[physics]\nQ = 0.01\nb = 0.2\nnu = 0.25\nR_i = 0.138\n[numerics]\nn_r = 40\n"
+    "dt_initial = 1e-4\ndt_growth = 1.2\nt_end = 0.01\n[output]\ntimes = [0.005, 0.01]\nprobes = [0.2, 0.5]\n";
+const std::string lattice_case =
+    "model = \"lattice2d\"\n[physics]\nQ = 0.1\nb = 0.5\nR_i = 0\n[lattice]\ndomain = \"disk\"\nn_particles = 500\n"
+    "seed = 3\n[coupling]\nsplit = \"undrained\"\nmax_iterations = 50\n[numerics]\ndt_initial = 5e-6\nt_end = 1e-5\n"
+    "[output]\nvtk = false\nradial_bins = 4\n";
+
+// Values that once slipped through somewhere (wrapping, overflow, empty, wrong type), and plain ones.
+const std::vector<std::string> values = {
+    "-1", "0", "0.5", "2", "1e308", "-1e308", "nan", "inf", "-inf", "4294967696", "9223372036854775807",
+    "1e-320", "\"\"", "\"x\"", "[1, 2]", "{ a = 1 }", "true", "\"" + std::string(3000, 'y') + "\"", "0x10", "1_000"};
+
+std::string mutate(const std::string& text, std::mt19937& rng) {
+  std::vector<std::string> lines;
+  for (std::size_t at = 0, next; at < text.size(); at = next + 1) {
+    next = text.find('\n', at);
+    lines.push_back(text.substr(at, next - at));
+  }
+  const auto pick = [&](std::size_t n) { return std::uniform_int_distribution<std::size_t>(0, n - 1)(rng); };
+  const std::size_t k = pick(lines.size());
+  switch (pick(6)) {
+    case 0: lines.erase(lines.begin() + static_cast<std::ptrdiff_t>(k)); break;  // a key or table left out
+    case 1: lines.insert(lines.begin() + static_cast<std::ptrdiff_t>(k), lines[k]); break;  // given twice
+    case 2: {  // a value replaced
+      const auto eq = lines[k].find(" = ");
+      if (eq != std::string::npos) lines[k] = lines[k].substr(0, eq + 3) + values[pick(values.size())];
+      break;
+    }
+    case 3: {  // the file cut at a random byte
+      std::string joined;
+      for (const auto& l : lines) joined += l + "\n";
+      return joined.substr(0, pick(joined.size() + 1));
+    }
+    case 4: lines[k].insert(pick(lines[k].size() + 1), 1, "=[]{}\"#\\\n\t\x01\xff"[pick(12)]); break;  // a stray byte
+    default: lines[k] = lines[k].empty() ? "x" : lines[k].substr(0, lines[k].size() / 2);  // a line cut
+  }
+  std::string out;
+  for (const auto& l : lines) out += l + "\n";
+  return out;
+}
+
+// No staging or replaced folder may be left in `dir` after a command.
+bool has_leftovers(const fs::path& dir) {
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().filename().string().rfind(".hmlattice-", 0) == 0) return true;
+  return false;
+}
+
+void check_outcome(const hm::test::CommandResult& r, const fs::path& dir, const fs::path& out, const std::string& input) {
+  INFO("input:\n" << input << "\nexit " << r.exit_code << ", stderr: " << r.err);
+  const bool valid_run = r.exit_code == 0 && fs::exists(out / "config.toml");
+  const bool bad_input = r.exit_code == 2 && count_lines(r.err) == 1 && !fs::exists(out);
+  CHECK((valid_run || bad_input));
+  CHECK_FALSE(has_leftovers(dir));
+}
+
+}  // namespace
+
+TEST_CASE("Fuzzed case files end as a valid run or as one line of bad input", "[verification][cli][fuzz]") {
+  TempDir dir("fuzz-cases");
+  std::mt19937 rng(20261202);
+  int n = 0;
+  for (const auto& [command, base, count] :
+       {std::tuple{"fdm1d", fdm1d_case, 300}, std::tuple{"run", lattice_case, 150}}) {
+    for (int i = 0; i < count; ++i, ++n) {
+      const std::string input = mutate(base, rng);
+      dir.write("case.toml", input);
+      const fs::path out = dir.path / ("out" + std::to_string(n));
+      // A hang is a failure too: 60 s is ~100x what any of these runs takes.
+      const auto r = hm::test::run_hmlattice(std::string(command) + " case.toml --out " + out.filename().string(),
+                                             dir.path, "ulimit -t 60; ");
+      check_outcome(r, dir.path, out, input);
+      fs::remove_all(out);
+    }
+  }
+}
+
+TEST_CASE("Fuzzed command lines end as a valid result or as one line of bad input", "[verification][cli][fuzz]") {
+  TempDir dir("fuzz-cli");
+  std::mt19937 rng(7);
+  const std::vector<std::string> commands = {"analytic rudnicki --r 0.1,0.2", "analytic borehole-steady --r 0.2,0.5",
+                                             "analytic sneddon --x 0,0.05", "analytic lame --r 0.5,1"};
+  const std::vector<std::string> options = {"--Q", "--b", "--nu", "--t", "--E_over_M", "--Ri", "--Ro", "--pi",
+                                            "--po", "--p", "--c", "--vol_strain", "--r", "--x", "--bogus"};
+  const std::vector<std::string> cli_values = {"''", "-1", "0", "0.3", "1e308", "nan", "inf", "x", "1,2",
+                                               "0.1,,0.2", "plane-strain", "appendix-a", "1e-320"};
+  const auto pick = [&](std::size_t n) { return std::uniform_int_distribution<std::size_t>(0, n - 1)(rng); };
+  for (int i = 0; i < 200; ++i) {
+    std::string line = commands[pick(commands.size())];
+    for (std::size_t k = 0, m = 1 + pick(3); k < m; ++k)
+      line += " " + options[pick(options.size())] + " " + cli_values[pick(cli_values.size())];
+    const auto r = hm::test::run_hmlattice(line, dir.path, "ulimit -t 60; ");
+    INFO(line << "\nexit " << r.exit_code << ", stderr: " << r.err);
+    const bool valid = r.exit_code == 0 && r.err.empty() && (r.out.rfind("r,", 0) == 0 || r.out.rfind("x,", 0) == 0);
+    const bool bad_input = r.exit_code == 2 && count_lines(r.err) == 1 && r.out.empty();
+    CHECK((valid || bad_input));
+    CHECK(dir.is_empty());
+  }
+}
