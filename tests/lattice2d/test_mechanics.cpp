@@ -395,3 +395,65 @@ TEST_CASE("At N = 1e5, twenty breaks with factor downdates keep every solve in e
   // factor; round-off of the solve (cond grows like N: ~1e6 here) times the 1e-3 load scale.
   CHECK(worst < 1e-9);
 }
+
+TEST_CASE("Pure traction: a pinned particle that loses its last intact beam hands the pin on, not singular",
+          "[lattice2d]") {
+  // The automatic pin sits at the particle nearest the centroid: on an annulus, a borehole-wall particle,
+  // where fluid-driven fractures start (Fig. 12 at N = 600 broke all five beams of its pin in the first
+  // step). Springs and contacts carry no moment and all point at the pin, so the rest of the lattice
+  // could turn about it for free; without springs the detachment search froze the whole body.
+  const Lattice l = annulus(2000);
+  BoundaryConditions bc;
+  bc.inner_pressure = 1e-3;  // outer free: pure traction, pinned automatically
+  auto break_pin = [&](BeamMechanics& m) {
+    const int pin = m.pinned_particle();
+    for (int e = 0; e < l.n_beams(); ++e)
+      if (l.beams[static_cast<std::size_t>(e)][0] == pin || l.beams[static_cast<std::size_t>(e)][1] == pin) m.break_beam(e);
+    return pin;
+  };
+  auto check_new_pin = [&](const BeamMechanics& m, int old_pin) {
+    REQUIRE(m.is_pinned());
+    const int pin = m.pinned_particle();
+    CHECK(pin != old_pin);
+    CHECK_FALSE(m.detached_particles()[static_cast<std::size_t>(pin)]);
+    for (int k = 0; k < 3; ++k) CHECK(m.held_dofs()[static_cast<std::size_t>(3 * pin + k)]);
+  };
+  // The wall moves outward and the new pin carries no more than the loads lost on frozen particles
+  // (the boundary pressure is self-equilibrated): it is a gauge.
+  auto check_solution = [&](const BeamMechanics& m, const MechanicsSummary& s, int old_pin) {
+    REQUIRE(s.is_converged());
+    CHECK(s.equilibrium_residual < 1e-10);  // round-off, as above
+    CHECK(m.displacement().allFinite());
+    double ur_min = INFINITY;
+    for (int p = 0; p < l.n_particles(); ++p)
+      if (p != old_pin && l.boundary[static_cast<std::size_t>(p)] == BoundaryTag::inner)
+        ur_min = std::min(ur_min, l.points.col(p).normalized().dot(m.displacement().segment<2>(3 * p)));
+    CHECK(ur_min > 0.0);
+    const double f_max = m.loads().cwiseAbs().maxCoeff();
+    const Eigen::VectorXd r = m.reactions();
+    Eigen::Vector2d resultant = r.segment<2>(3 * m.pinned_particle());
+    if (m.detached_particles()[static_cast<std::size_t>(old_pin)]) resultant += r.segment<2>(3 * old_pin);
+    CHECK(resultant.cwiseAbs().maxCoeff() < 1e-10 * f_max);  // round-off x cond
+  };
+  SECTION("dry lattice: only the old pin is loose (frozen), the body keeps deforming") {
+    BeamMechanics m(l, BeamParameters{}, bc);
+    REQUIRE(m.solve().is_converged());
+    const int old_pin = break_pin(m);
+    check_new_pin(m, old_pin);
+    CHECK(m.detached_particles()[static_cast<std::size_t>(old_pin)]);
+    CHECK(m.n_detached_particles() == 1);  // was n - 1: the whole body frozen, the pin left as "the" body
+    check_solution(m, m.solve(), old_pin);
+  }
+  SECTION("with the undrained split's normal springs: the old pin hangs on its springs, rotation held") {
+    BeamMechanics m(l, BeamParameters{}, bc);
+    m.set_normal_springs(Eigen::VectorXd::Constant(l.n_beams(), 0.05));  // ~ Psi xi b^2 (M/E) d/L of Fig. 12
+    REQUIRE(m.solve().is_converged());
+    const int old_pin = break_pin(m);
+    check_new_pin(m, old_pin);
+    CHECK(m.n_detached_particles() == 0);
+    CHECK_FALSE(m.held_dofs()[static_cast<std::size_t>(3 * old_pin)]);
+    CHECK_FALSE(m.held_dofs()[static_cast<std::size_t>(3 * old_pin + 1)]);
+    CHECK(m.held_dofs()[static_cast<std::size_t>(3 * old_pin + 2)]);
+    check_solution(m, m.solve(), old_pin);  // was: LDL' pivot ~1e-16, the body's rotation about the old pin
+  }
+}

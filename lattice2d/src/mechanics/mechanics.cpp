@@ -404,16 +404,23 @@ void BeamMechanics::check_detachment(int i, int j) {
     }
     return false;
   };
+  bool changed = false;
+  // The gauge pin of a pure traction problem stops the body's rigid motions only while an intact beam
+  // (which carries a moment) ties it to the body. Left with springs or contacts alone, the pin is a
+  // point the rest of the lattice turns about at no energy (every spring and contact points at it: a
+  // zero pivot), and without them the detachment search below would freeze the whole body instead of
+  // the one loose particle. Move the pin into the intact body first; then the old pin is an ordinary
+  // particle, handled below like any other.
+  if (is_pinned() && (i == pinned_particle_ || j == pinned_particle_) && !has_intact_beam(pinned_particle_)) {
+    move_pin();
+    changed = true;
+  }
   // With springs (which carry no moment), a particle left without intact beams keeps its translations
   // through them but has a free rotation: hold that at its current value.
-  bool changed = false;
   if (springs_.size() > 0) {
     for (int p : {i, j}) {
-      bool has_intact = false;
-      for (int a = adjacency_start_[static_cast<std::size_t>(p)]; a < adjacency_start_[static_cast<std::size_t>(p) + 1]; ++a)
-        has_intact = has_intact || states_[static_cast<std::size_t>(adjacency_beam_[static_cast<std::size_t>(a)])] == BeamState::intact;
       const Eigen::Index d = dof_index(p, 2);
-      if (has_intact || held_[static_cast<std::size_t>(d)]) continue;
+      if (has_intact_beam(p) || held_[static_cast<std::size_t>(d)]) continue;
       held_[static_cast<std::size_t>(d)] = true;
       held_value_[d] = raw_[d];
       changed = true;
@@ -462,6 +469,73 @@ void BeamMechanics::check_detachment(int i, int j) {
     changed = true;
   }
   if (changed) setup_system();
+}
+
+bool BeamMechanics::has_intact_beam(int p) const {
+  for (int a = adjacency_start_[static_cast<std::size_t>(p)]; a < adjacency_start_[static_cast<std::size_t>(p) + 1]; ++a)
+    if (states_[static_cast<std::size_t>(adjacency_beam_[static_cast<std::size_t>(a)])] == BeamState::intact) return true;
+  return false;
+}
+
+void BeamMechanics::move_pin() {
+  // The new pin: of the largest set of attached particles connected by intact beams (the body), the
+  // particle nearest the lattice's centroid (the constructor's rule) with all its beams intact. The
+  // gauge is arbitrary (solve() removes the rigid motion of the reported displacement), so the pin
+  // holds its last displacement: raw_ stays continuous.
+  const int n_p = lattice_.n_particles();
+  std::vector<int> label(static_cast<std::size_t>(n_p), -1), queue;
+  int body = -1;
+  std::size_t body_size = 0;
+  for (int s = 0; s < n_p; ++s) {
+    if (label[static_cast<std::size_t>(s)] >= 0 || detached_[static_cast<std::size_t>(s)]) continue;
+    queue.assign(1, s);
+    label[static_cast<std::size_t>(s)] = s;
+    for (std::size_t k = 0; k < queue.size(); ++k) {
+      const int p = queue[k];
+      for (int a = adjacency_start_[static_cast<std::size_t>(p)]; a < adjacency_start_[static_cast<std::size_t>(p) + 1]; ++a) {
+        const int e = adjacency_beam_[static_cast<std::size_t>(a)];
+        if (states_[static_cast<std::size_t>(e)] != BeamState::intact) continue;
+        const auto& b = lattice_.beams[static_cast<std::size_t>(e)];
+        const int q = b[0] == p ? b[1] : b[0];
+        if (label[static_cast<std::size_t>(q)] >= 0 || detached_[static_cast<std::size_t>(q)]) continue;
+        label[static_cast<std::size_t>(q)] = s;
+        queue.push_back(q);
+      }
+    }
+    if (queue.size() > body_size) {
+      body_size = queue.size();
+      body = s;
+    }
+  }
+  const Eigen::Vector2d c = lattice_.points.rowwise().mean();
+  int best = -1;
+  for (bool all_intact : {true, false}) {
+    double best_d2 = std::numeric_limits<double>::infinity();
+    for (int p = 0; p < n_p; ++p) {
+      if (label[static_cast<std::size_t>(p)] != body) continue;
+      if (all_intact) {
+        bool intact = true;
+        for (int a = adjacency_start_[static_cast<std::size_t>(p)]; a < adjacency_start_[static_cast<std::size_t>(p) + 1]; ++a)
+          intact = intact && states_[static_cast<std::size_t>(adjacency_beam_[static_cast<std::size_t>(a)])] == BeamState::intact;
+        if (!intact) continue;
+      }
+      const double d2 = (lattice_.points.col(p) - c).squaredNorm();
+      if (d2 < best_d2) {
+        best_d2 = d2;
+        best = p;
+      }
+    }
+    if (best >= 0) break;
+  }
+  if (best < 0) return;  // no attached particle left: nothing to pin
+  for (int k = 0; k < 3; ++k) {
+    const Eigen::Index old_dof = dof_index(pinned_particle_, k), new_dof = dof_index(best, k);
+    held_[static_cast<std::size_t>(old_dof)] = false;
+    held_value_[old_dof] = 0.0;
+    held_[static_cast<std::size_t>(new_dof)] = true;
+    held_value_[new_dof] = raw_[new_dof];
+  }
+  pinned_particle_ = best;
 }
 
 void BeamMechanics::set_normal_springs(const Eigen::VectorXd& stiffness) {

@@ -130,7 +130,10 @@ struct MechanicsSummary {
 ///    centroid are pinned at 0 and, after each solve, the least-squares rigid motion of all particles
 ///    is subtracted from the reported displacement (the gauge: zero mean translation and rotation).
 ///    Exact when the loads are self-equilibrated, as boundary pressures are; pin_reaction reports
-///    what the pin carries otherwise.
+///    what the pin carries otherwise. When break_beam leaves the pinned particle without an intact
+///    beam (springs and contacts carry no moment: the body could turn about it), the pin moves, at
+///    its current displacement, to the particle nearest the centroid with all beams intact in the
+///    largest intact-connected part; pinned_particle() is then that particle.
 ///  - Detachment: a particle or cluster whose intact (or sprung, set_normal_springs) beams no longer connect it to held degrees of
 ///    freedom that stop all three rigid motions (a particle with only contacts left has a free
 ///    rotation) is frozen at the least-squares rigid motion of its last displacement (so it carries no
@@ -196,6 +199,8 @@ class BeamMechanics {
   BeamParameters beam_parameters(int beam) const;  // = beam_parameters_for(lattice_, parameters_, beam), cached k_n
   void change_state(int beam, BeamState to);
   void check_detachment(int i, int j);
+  bool has_intact_beam(int particle) const;
+  void move_pin();  // pure traction: re-pin on the intact body (check_detachment)
   Eigen::VectorXd full_vector(const Eigen::VectorXd& x_free) const;
 
   Lattice lattice_;
