@@ -1,4 +1,5 @@
-// hmlattice run <case.toml> [--out DIR] [--overwrite]
+// hmlattice run <case.toml> [--out DIR] [--overwrite] [--checkpoint-every SECONDS] [--stop-after-steps N]
+// hmlattice run --resume DIR
 //
 // Runs the two-way coupled 2D lattice model of Sections 2.1-2.3 (beam mechanics + dual-graph flow,
 // drained or undrained operator split iterated to convergence in every time step, Fig. 5) on a case
@@ -8,6 +9,7 @@
 //   radial.csv   radially averaged u_r and p at the output times (Figs. 7, 13, 15)
 //   vtk/         lattice.pvd + lattice_NNNN.vtu snapshots for ParaView (pressure per triangle)
 //   config.toml  the resolved case + provenance; rerunnable as a case
+//   checkpoint.bin  while the run is not complete: the state --resume continues from (checkpoint.hpp)
 // DIR must be new or empty, or an earlier result folder with --overwrite (hm/core/result_folder.hpp).
 // Examples:
 //   hmlattice run cases/fig07_rudnicki_free_quick.toml --out out/fig07_quick
@@ -18,6 +20,7 @@
 #include <iostream>
 
 #include "commands.hpp"
+#include "hm/case/checkpoint.hpp"
 #include "hm/case/coupled_model_of_case.hpp"
 #include "hm/core/file_output.hpp"
 #include "hm/core/input_error.hpp"
@@ -47,114 +50,176 @@ int remaining_steps(double t, double dt, const lattice2d::TimeStepping& s) {
   return n;
 }
 
-// status.toml of a run that stopped before t_end: why, the last step it finished, how to run it again.
+// status.toml of a run that stopped before t_end: why, the last step it finished, how to go on.
 void write_status(const std::filesystem::path& path, const std::string& why, int last_step, double t, double t_end,
-                  const std::filesystem::path& folder) {
+                  const std::filesystem::path& folder, int checkpoint_step, double checkpoint_t) {
   core::write_file_atomically(path, [&](std::ostream& f) {
     f << "# This run stopped before t_end. Every file here holds the steps up to last_step, complete;\n"
-      << "# nothing after it. Checkpoints are not written yet: a run is repeated from its config.toml.\n"
+      << "# nothing after it. `resume` continues it from its checkpoint (bitwise as if never stopped).\n"
       << "complete = false\n"
       << "stopped = " << core::toml_string(why) << "\n"
       << "last_step = " << last_step << "\n"
       << "t_last = " << core::format_value(t) << "\n"
-      << "t_end = " << core::format_value(t_end) << "\n"
-      << "rerun = " << core::toml_string("hmlattice run " + (folder / "config.toml").string() + " --out <new folder>")
+      << "t_end = " << core::format_value(t_end) << "\n";
+    if (checkpoint_step >= 0)
+      f << "checkpoint_step = " << checkpoint_step << "\n"
+        << "checkpoint_t = " << core::format_value(checkpoint_t) << "\n"
+        << "resume = " << core::toml_string("hmlattice run --resume " + folder.string()) << "\n";
+    f << "rerun = " << core::toml_string("hmlattice run " + (folder / "config.toml").string() + " --out <new folder>")
       << "\n";
   });
+}
+
+struct RunArgs {
+  std::string case_file, out, resume;
+  bool overwrite = false;
+  double checkpoint_seconds = 300.0;
+  int stop_after_steps = -1;
+};
+
+void run_case(const RunArgs& a, int& exit_code, const std::string& command_line) {
+  // 1. Read and validate everything, the output folder and a checkpoint to resume included, before
+  //    computing. A resumed run reads its folder's config.toml and continues in that folder.
+  const bool resuming = !a.resume.empty();
+  std::unique_ptr<core::ResultFolder> out =
+      resuming ? std::make_unique<core::ResultFolder>(core::ResultFolder::Resume{}, a.resume, "--resume", command_line)
+               : std::make_unique<core::ResultFolder>(output_folder(a.out, a.case_file), "--out", a.overwrite,
+                                                      command_line);
+  const cases::RunCase c = cases::read_run_case(resuming ? out->path() / "config.toml" : std::filesystem::path(a.case_file));
+  const std::string case_text = cases::run_case_to_toml(c, "");
+  const auto& p = c.physics.parameters;
+  std::cout << "run: Q = " << p.Q << ", b = " << p.material.b << ", E/M = " << p.material.E_over_M
+            << ", iota = " << p.iota << "; " << core::name_of(c.lattice.domain) << ", N = " << c.lattice.n_particles
+            << ", seed = " << c.lattice.seed << ", outer " << core::name_of(c.boundary.outer) << "; split "
+            << core::name_of(c.coupling.split) << ", Psi = " << c.coupling.terms.psi << ", xi = " << c.coupling.terms.xi
+            << "; t_end = " << c.stepping.t_end << "\n";
+
+  // 2. Build the lattice and the coupled model (mechanics factorised once, with the Eq. 20 springs).
+  //    The beams are the toolkit's calibrated constants (E = 1; the lattice's nu is
+  //    calibrated_continuum().poisson_ratio, docs/lattice.md), whatever [physics] nu says: nu there
+  //    enters E/M (Eq. 22) only. A resumed model then takes the checkpoint's state.
+  const auto setup_start = std::chrono::steady_clock::now();
+  const auto model = cases::make_coupled_model(c);
+  std::unique_ptr<cases::RunRecorder> recorder;
+  if (resuming) {
+    core::StateReader state = cases::read_checkpoint(out->path(), case_text, *model);
+    recorder = std::make_unique<cases::RunRecorder>(out->path(), c, *model, state);
+  } else {
+    recorder = std::make_unique<cases::RunRecorder>(out->path(), c);
+    // The resolved configuration first: a run killed at any point leaves it beside its steps.
+    core::write_file_atomically(out->path() / "config.toml", [&](std::ostream& f) {
+      f << cases::run_case_to_toml(c, cases::to_toml(cases::make_provenance(command_line)));
+    });
+  }
+  const double setup_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_start).count();
+  std::cout << "lattice: " << model->lattice().n_particles() << " particles, " << model->lattice().n_beams()
+            << " beams, " << model->lattice().n_triangles() << " triangles\n";
+  const int first_step = model->run_cursor().totals.n_steps;
+  if (resuming)
+    std::cout << "resumed at step " << first_step << ", t = " << model->time() << ", from "
+              << (out->path() / cases::checkpoint_file_name).string() << "\n";
+
+  // 3. Run: the initial state, then while time remains a coupled step; each step is recorded, and a
+  //    checkpoint written at the output times and every checkpoint_seconds of wall time.
+  cases::ProgressReporter progress(std::cout, "run");
+  const core::InterruptRequest interrupt;  // Ctrl-C or SIGTERM: stop after the step, keep the results
+  int step = first_step;
+  int checkpoint_step = resuming ? first_step : -1;
+  double checkpoint_t = model->time();
+  auto last_checkpoint = std::chrono::steady_clock::now();
+  const auto checkpoint = [&](const lattice2d::CoupledModel& m) {
+    cases::write_checkpoint(out->path(), case_text, m, *recorder);
+    checkpoint_step = step;
+    checkpoint_t = m.time();
+    last_checkpoint = std::chrono::steady_clock::now();
+  };
+  double step_seconds = 0.0;  // for the ETA of the progress line
+  const auto run = model->run(c.stepping, [&](const lattice2d::CoupledModel& m, const lattice2d::CoupledStepSummary& s,
+                                              bool is_output) {
+    recorder->record(m, s, is_output);
+    step = m.run_cursor().totals.n_steps;  // accepted steps so far (0 at the initial state)
+    const double since = std::chrono::duration<double>(std::chrono::steady_clock::now() - last_checkpoint).count();
+    if (step > 0 && (is_output || since >= a.checkpoint_seconds || step == a.stop_after_steps)) checkpoint(m);
+    step_seconds += s.seconds;
+    const int remaining = remaining_steps(m.time(), s.dt, c.stepping);
+    const int done = step - first_step;
+    progress.update(m.time(), c.stepping.t_end,
+                    "step " + std::to_string(step) + ", broken " + std::to_string(m.n_broken()) + ", iterations " +
+                        std::to_string(s.iterations) + ", contact switches " + std::to_string(s.n_contact_changes) +
+                        ", refactorisations " + std::to_string(s.n_mechanics_factorizations) + " (" +
+                        std::to_string(s.n_mechanics_update_failures) + " after failed updates), ETA " +
+                        std::to_string(static_cast<int>(done > 0 ? step_seconds / done * remaining : 0.0)) + " s" +
+                        (s.n_mechanics_update_failures > 0
+                             ? "; last failed update: " + m.mechanics().solver().report().last_update_failure
+                             : std::string()));
+  }, [&] { return interrupt.signal() != 0 || step == a.stop_after_steps; });
+  char summary[500];
+  std::snprintf(summary, sizeof summary,
+                "%d steps (%d halved), %d coupling iterations (= flow factorisations and solves), %d beams broken "
+                "(= factor downdates), %lld mechanical solves, %lld contact switches, %lld mechanical "
+                "refactorisations (%lld after failed updates), max volume-balance error %.2e; set-up %.1f s, "
+                "mechanics solves %.1f s, stresses and failure checks %.1f s, downdates %.1f s, geometry %.1f s, "
+                "flow %.1f s",
+                run.n_steps, run.n_step_halvings, run.total_iterations, model->n_broken(), run.n_mechanics_solves,
+                run.n_contact_changes, run.n_mechanics_factorizations, run.n_mechanics_update_failures,
+                run.max_balance_error, setup_seconds, run.mechanics_seconds, run.stress_seconds, run.break_seconds,
+                run.geometry_seconds, run.flow_seconds);
+  progress.finish(summary);
+  if (run.n_mechanics_update_failures > 0)  // each cost a refactorisation: say what CHOLMOD reported (docs/borehole_fracture.md)
+    std::cout << "last failed update: " << model->mechanics().solver().report().last_update_failure << "\n";
+
+  // 4. Everything appears at once. A run that stopped early keeps every step it finished, marked
+  //    incomplete, with status.toml saying why and where it stopped; an interrupted one has a
+  //    checkpoint of its last step (a numerical failure keeps the last one before: the failed
+  //    attempts' breaks stay in the model, so its state is not a step's).
+  if (run.status == lattice2d::CoupledStatus::interrupted && checkpoint_step != step) checkpoint(*model);
+  recorder->finish();
+  if (!run.is_ok()) {
+    const bool interrupted = run.status == lattice2d::CoupledStatus::interrupted;
+    const std::string why = !interrupted                ? "numerical failure: " + run.message
+                            : interrupt.signal() != 0 ? std::string("interrupted by ") + interrupt.signal_name()
+                                                      : "stopped after step " + std::to_string(step) + " (--stop-after-steps)";
+    write_status(out->path() / "status.toml", why, step, model->time(), c.stepping.t_end, out->target(),
+                 checkpoint_step, checkpoint_t);
+    out->commit(why);
+    std::cerr << "hmlattice run: " << core::one_line(why, 300) << "; the " << step << " steps done (t = "
+              << model->time() << " of " << c.stepping.t_end << ") are in " << out->target().string()
+              << ", marked incomplete (status.toml)"
+              << (checkpoint_step >= 0 ? "; continue with hmlattice run --resume " + out->target().string() : std::string())
+              << "\n";
+    exit_code = !interrupted ? 1 : interrupt.signal() != 0 ? interrupt.exit_code() : 0;
+    return;
+  }
+  std::error_code ec;
+  std::filesystem::remove(out->path() / "status.toml", ec);  // a resumed run is complete now
+  std::filesystem::remove(out->path() / cases::checkpoint_file_name, ec);
+  out->commit();
+  std::cout << "Results: " << out->target().string() << (c.fracture_enabled ? "/{series,radial,breaks,breakdown,fractures,fracture_summary}.csv, " : "/{series,radial}.csv, ") << (c.output.vtk ? "vtk/lattice.pvd, " : "")
+            << "config.toml\n";
 }
 
 }  // namespace
 
 void add_run_command(CLI::App& app, int& exit_code, const std::string& command_line) {
-  struct Args {
-    std::string case_file, out;
-    bool overwrite = false;
-  };
-  auto a = std::make_shared<Args>();
+  auto a = std::make_shared<RunArgs>();
   auto* cmd = app.add_subcommand("run", "Run the coupled 2D lattice model (Sections 2.1-2.3) on a case");
-  cmd->add_option("case", a->case_file, "case file (TOML), e.g. cases/fig07_rudnicki_free.toml")->required();
+  auto* file = cmd->add_option("case", a->case_file, "case file (TOML), e.g. cases/fig07_rudnicki_free.toml");
   add_output_options(*cmd, a->out, a->overwrite);
-  cmd->callback([a, &exit_code, command_line] {
-    // 1. Read and validate everything, the output folder included, before computing.
-    const cases::RunCase c = cases::read_run_case(a->case_file);
-    core::ResultFolder out(output_folder(a->out, a->case_file), "--out", a->overwrite, command_line);
-    const auto& p = c.physics.parameters;
-    std::cout << "run: Q = " << p.Q << ", b = " << p.material.b << ", E/M = " << p.material.E_over_M
-              << ", iota = " << p.iota << "; " << core::name_of(c.lattice.domain) << ", N = " << c.lattice.n_particles
-              << ", seed = " << c.lattice.seed << ", outer " << core::name_of(c.boundary.outer) << "; split "
-              << core::name_of(c.coupling.split) << ", Psi = " << c.coupling.terms.psi << ", xi = " << c.coupling.terms.xi
-              << "; t_end = " << c.stepping.t_end << "\n";
-
-    // 2. Build the lattice and the coupled model (mechanics factorised once, with the Eq. 20 springs).
-    //    The beams are the toolkit's calibrated constants (E = 1; the lattice's nu is
-    //    calibrated_continuum().poisson_ratio, docs/lattice.md), whatever [physics] nu says: nu there
-    //    enters E/M (Eq. 22) only.
-    const auto setup_start = std::chrono::steady_clock::now();
-    const auto model = cases::make_coupled_model(c);
-    const double setup_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_start).count();
-    std::cout << "lattice: " << model->lattice().n_particles() << " particles, " << model->lattice().n_beams()
-              << " beams, " << model->lattice().n_triangles() << " triangles\n";
-
-    // 3. Run: the initial state, then while time remains a coupled step; each step is recorded.
-    cases::RunRecorder recorder(out.path(), c);
-    cases::ProgressReporter progress(std::cout, "run");
-    const core::InterruptRequest interrupt;  // Ctrl-C or SIGTERM: stop after the step, keep the results
-    int step = 0;
-    double step_seconds = 0.0;  // for the ETA of the progress line
-    const auto run = model->run(c.stepping, [&](const lattice2d::CoupledModel& m, const lattice2d::CoupledStepSummary& s,
-                                                bool is_output) {
-      recorder.record(m, s, is_output);
-      step_seconds += s.seconds;
-      const int remaining = remaining_steps(m.time(), s.dt, c.stepping);
-      progress.update(m.time(), c.stepping.t_end,
-                      "step " + std::to_string(step) + ", broken " + std::to_string(m.n_broken()) + ", iterations " +
-                          std::to_string(s.iterations) + ", contact switches " + std::to_string(s.n_contact_changes) +
-                          ", refactorisations " + std::to_string(s.n_mechanics_factorizations) + " (" +
-                          std::to_string(s.n_mechanics_update_failures) + " after failed updates), ETA " +
-                          std::to_string(static_cast<int>(step > 0 ? step_seconds / step * remaining : 0.0)) + " s" +
-                          (s.n_mechanics_update_failures > 0
-                               ? "; last failed update: " + m.mechanics().solver().report().last_update_failure
-                               : std::string()));
-      ++step;
-    }, [&] { return interrupt.signal() != 0; });
-    char summary[500];
-    std::snprintf(summary, sizeof summary,
-                  "%d steps (%d halved), %d coupling iterations (= flow factorisations and solves), %d beams broken "
-                  "(= factor downdates), %lld mechanical solves, %lld contact switches, %lld mechanical "
-                  "refactorisations (%lld after failed updates), max volume-balance error %.2e; set-up %.1f s, "
-                  "mechanics solves %.1f s, stresses and failure checks %.1f s, downdates %.1f s, geometry %.1f s, "
-                  "flow %.1f s",
-                  run.n_steps, run.n_step_halvings, run.total_iterations, model->n_broken(), run.n_mechanics_solves,
-                  run.n_contact_changes, run.n_mechanics_factorizations, run.n_mechanics_update_failures,
-                  run.max_balance_error, setup_seconds, run.mechanics_seconds, run.stress_seconds, run.break_seconds,
-                  run.geometry_seconds, run.flow_seconds);
-    progress.finish(summary);
-    if (run.n_mechanics_update_failures > 0)  // each cost a refactorisation: say what CHOLMOD reported (docs/borehole_fracture.md)
-      std::cout << "last failed update: " << model->mechanics().solver().report().last_update_failure << "\n";
-
-    // 4. The resolved configuration beside the results, then everything appears at once. A run that
-    //    stopped early (interrupted, or a numerical failure) keeps every step it finished, marked
-    //    incomplete, with status.toml saying why and where it stopped.
-    recorder.finish();
-    core::write_file_atomically(out.path() / "config.toml", [&](std::ostream& f) {
-      f << cases::run_case_to_toml(c, cases::to_toml(cases::make_provenance(command_line)));
-    });
-    if (!run.is_ok()) {
-      const bool interrupted = run.status == lattice2d::CoupledStatus::interrupted;
-      const std::string why = interrupted ? std::string("interrupted by ") + interrupt.signal_name()
-                                          : "numerical failure: " + run.message;
-      write_status(out.path() / "status.toml", why, step - 1, model->time(), c.stepping.t_end, out.target());
-      out.commit(why);
-      std::cerr << "hmlattice run: " << core::one_line(why, 300) << "; the " << step - 1 << " steps done (t = "
-                << model->time() << " of " << c.stepping.t_end << ") are in " << out.target().string()
-                << ", marked incomplete (status.toml)\n";
-      exit_code = interrupted ? interrupt.exit_code() : 1;
-      return;
-    }
-    out.commit();
-    std::cout << "Results: " << out.target().string() << (c.fracture_enabled ? "/{series,radial,breaks,breakdown,fractures,fracture_summary}.csv, " : "/{series,radial}.csv, ") << (c.output.vtk ? "vtk/lattice.pvd, " : "")
-              << "config.toml\n";
+  auto* resume = cmd->add_option("--resume", a->resume,
+                                 "continue the run in this folder (one that stopped before t_end) from its checkpoint");
+  resume->excludes(file)->excludes("--out")->excludes("--overwrite");
+  cmd->add_option("--checkpoint-every", a->checkpoint_seconds,
+                  "write a checkpoint at least every this many seconds of wall time (and at each output time; 0: every step)")
+      ->check(CLI::Range(0.0, 1e9))
+      ->capture_default_str();
+  cmd->add_option("--stop-after-steps", a->stop_after_steps,
+                  "stop after this many steps, as an interrupt would (checkpoint, incomplete folder, exit 0)")
+      ->check(CLI::Range(1, 100000000));
+  cmd->callback([a, &exit_code, command_line, file, resume] {
+    if (file->count() == 0 && resume->count() == 0)
+      throw InputError("run: a case file or --resume DIR is required");
+    run_case(*a, exit_code, command_line);
   });
 }
 

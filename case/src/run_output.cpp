@@ -1,6 +1,7 @@
 #include "hm/case/run_output.hpp"
 
 #include "hm/core/file_output.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/lattice2d/io/radial_average.hpp"
 #include "hm/lattice2d/io/break_log.hpp"
 #include "hm/lattice2d/io/fracture_tables.hpp"
@@ -43,6 +44,25 @@ RadialFields radial_fields(const lt::CoupledModel& model, const std::vector<doub
   return out;
 }
 
+namespace {
+
+const std::vector<std::string> series_columns = {"t", "dt", "p_h", "injected", "stored", "coupling", "outflow",
+                                                 "balance_error", "n_broken", "iterations", "pressure_residual",
+                                                 "displacement_residual"};
+const std::vector<std::string> radial_columns = {"t", "r", "r_mean", "n_triangles", "u_r", "p"};
+
+// The fracture statistics when the log held its first n events: broken beams never heal and only the
+// break loop breaks them (logging each), so those events' beams are the broken ones at that time.
+lt::FractureSnapshot fracture_snapshot(const lt::Lattice& lattice, const std::vector<lt::BreakEvent>& log,
+                                       std::size_t n, double t, const lt::FractureStatisticsOptions& options) {
+  const std::vector<lt::BreakEvent> prefix(log.begin(), log.begin() + static_cast<std::ptrdiff_t>(n));
+  std::vector<bool> broken(static_cast<std::size_t>(lattice.n_beams()), false);
+  for (const lt::BreakEvent& e : prefix) broken[static_cast<std::size_t>(e.beam)] = true;
+  return {t, lt::compute_fracture_statistics(lattice, broken, prefix, options)};
+}
+
+}  // namespace
+
 RunRecorder::RunRecorder(const std::filesystem::path& dir, const RunCase& c)
     : output_(c.output),
       r_min_(c.lattice.domain == lt::DomainShape::annulus ? c.lattice.inner_radius : 0.0),
@@ -51,17 +71,92 @@ RunRecorder::RunRecorder(const std::filesystem::path& dir, const RunCase& c)
       statistics_options_{c.output.fracture_link},
       series_file_(core::open_for_writing(dir / "series.csv")),
       radial_file_(core::open_for_writing(dir / "radial.csv")) {
-  series_ = std::make_unique<CsvWriter>(
-      series_file_, std::vector<std::string>{"t", "dt", "p_h", "injected", "stored", "coupling", "outflow",
-                                             "balance_error", "n_broken", "iterations", "pressure_residual",
-                                             "displacement_residual"});
-  radial_ = std::make_unique<CsvWriter>(radial_file_,
-                                        std::vector<std::string>{"t", "r", "r_mean", "n_triangles", "u_r", "p"});
+  series_ = std::make_unique<CsvWriter>(series_file_, series_columns);
+  radial_ = std::make_unique<CsvWriter>(radial_file_, radial_columns);
   if (output_.vtk) vtk_ = std::make_unique<lt::VtkSeries>(dir / "vtk", "lattice");
   if (fracture_) {
     breaks_file_ = core::open_for_writing(dir / "breaks.csv");
     lt::write_break_log_header(breaks_file_, "time");
   }
+}
+
+RunRecorder::RunRecorder(const std::filesystem::path& dir, const RunCase& c, const lt::CoupledModel& model,
+                         core::StateReader& r)
+    : output_(c.output),
+      r_min_(c.lattice.domain == lt::DomainShape::annulus ? c.lattice.inner_radius : 0.0),
+      dir_(dir),
+      fracture_(c.fracture_enabled),
+      statistics_options_{c.output.fracture_link} {
+  std::vector<std::int64_t> sizes;
+  r.get("recorder.file_sizes", sizes);
+  if (sizes.size() != 3) throw InputError(r.source() + ": at 'recorder.file_sizes': 3 values expected");
+  std::vector<double> b;
+  r.get("recorder.breakdown", b);
+  if (b.size() != 9) throw InputError(r.source() + ": at 'recorder.breakdown': 9 values expected");
+  breakdown_ = {b[0], b[1], b[2], b[3], b[4], b[5], b[6], static_cast<int>(b[7])};
+  last_p_h_ = b[8];
+  std::vector<double> fracture_t;
+  std::vector<std::int64_t> fracture_n;
+  r.get("recorder.fracture_times", fracture_t);
+  r.get("recorder.fracture_log_sizes", fracture_n);
+  std::vector<double> vtk_t;
+  std::string vtk_files;
+  r.get("recorder.vtk_times", vtk_t);
+  r.get("recorder.vtk_files", vtk_files);  // one name per line
+
+  const auto& log = model.break_log();
+  if (fracture_t.size() != fracture_n.size())
+    throw InputError(r.source() + ": at 'recorder.fracture_log_sizes': one per fracture time expected");
+  for (std::size_t k = 0; k < fracture_t.size(); ++k) {
+    if (fracture_n[k] < 0 || static_cast<std::size_t>(fracture_n[k]) > log.size())
+      throw InputError(r.source() + ": at 'recorder.fracture_log_sizes': longer than the break log");
+    fractures_.push_back(fracture_snapshot(model.lattice(), log, static_cast<std::size_t>(fracture_n[k]),
+                                           fracture_t[k], statistics_options_));
+    fracture_log_sizes_.push_back(static_cast<std::size_t>(fracture_n[k]));
+  }
+  if (fracture_) breaks_ = log;
+  std::vector<lt::PvdEntry> written;
+  std::size_t from = 0;
+  for (double t : vtk_t) {
+    const std::size_t to = vtk_files.find('\n', from);
+    written.push_back({t, vtk_files.substr(from, to - from)});
+    from = to + 1;
+  }
+
+  series_file_ = core::open_for_appending(dir / "series.csv", static_cast<std::uintmax_t>(sizes[0]));
+  radial_file_ = core::open_for_appending(dir / "radial.csv", static_cast<std::uintmax_t>(sizes[1]));
+  series_ = std::make_unique<CsvWriter>(series_file_, series_columns, core::NonFinite::write, core::CsvHeader::already_written);
+  radial_ = std::make_unique<CsvWriter>(radial_file_, radial_columns, core::NonFinite::write, core::CsvHeader::already_written);
+  if (output_.vtk) vtk_ = std::make_unique<lt::VtkSeries>(dir / "vtk", "lattice", lt::VtkFormat::binary, std::move(written));
+  if (fracture_) breaks_file_ = core::open_for_appending(dir / "breaks.csv", static_cast<std::uintmax_t>(sizes[2]));
+}
+
+void RunRecorder::save_state(core::StateWriter& w) {
+  const auto size_of = [](std::ofstream& f) {
+    f.flush();
+    return f.is_open() ? static_cast<std::int64_t>(f.tellp()) : std::int64_t{0};
+  };
+  w.put("recorder.file_sizes", std::vector<std::int64_t>{size_of(series_file_), size_of(radial_file_), size_of(breaks_file_)});
+  const Breakdown& b = breakdown_;
+  w.put("recorder.breakdown", std::vector<double>{b.t_first, b.p_before, b.p_first, b.x_first, b.y_first, b.t_peak,
+                                                  b.p_peak, static_cast<double>(b.n_broken), last_p_h_});
+  std::vector<double> fracture_t;
+  std::vector<std::int64_t> fracture_n;
+  for (std::size_t k = 0; k < fractures_.size(); ++k) {
+    fracture_t.push_back(fractures_[k].t);
+    fracture_n.push_back(static_cast<std::int64_t>(fracture_log_sizes_[k]));
+  }
+  w.put("recorder.fracture_times", fracture_t);
+  w.put("recorder.fracture_log_sizes", fracture_n);
+  std::vector<double> vtk_t;
+  std::string vtk_files;
+  if (vtk_)
+    for (const lt::PvdEntry& e : vtk_->entries()) {
+      vtk_t.push_back(e.time);
+      vtk_files += e.file + "\n";
+    }
+  w.put("recorder.vtk_times", vtk_t);
+  w.put("recorder.vtk_files", vtk_files);
 }
 
 void RunRecorder::record(const lt::CoupledModel& model, const lt::CoupledStepSummary& step, bool is_output) {
@@ -97,9 +192,11 @@ void RunRecorder::record(const lt::CoupledModel& model, const lt::CoupledStepSum
   for (std::size_t k = 0; k < f.r_mid.size(); ++k)
     radial_->row({model.time(), f.r_mid[k], f.r_mean[k], static_cast<double>(f.n_triangles[k]), f.u_r[k], f.p[k]});
   radial_file_.flush();
-  if (fracture_)
-    fractures_.push_back({model.time(), lt::compute_fracture_statistics(model.lattice(), model.mechanics().states(),
-                                                                         model.break_log(), statistics_options_)});
+  if (fracture_) {
+    fractures_.push_back(
+        fracture_snapshot(model.lattice(), model.break_log(), model.break_log().size(), model.time(), statistics_options_));
+    fracture_log_sizes_.push_back(model.break_log().size());
+  }
   if (vtk_) {
     lt::LatticeSnapshot snapshot;
     snapshot.time = model.time();

@@ -14,8 +14,10 @@ std::string csv_number(double v) {
   return buf;
 }
 
-CsvWriter::CsvWriter(std::ostream& out, const std::vector<std::string>& columns, NonFinite non_finite)
+CsvWriter::CsvWriter(std::ostream& out, const std::vector<std::string>& columns, NonFinite non_finite,
+                     CsvHeader header)
     : out_(out), columns_(columns), non_finite_(non_finite) {
+  if (header == CsvHeader::already_written) return;
   for (std::size_t i = 0; i < columns.size(); ++i) out_ << (i ? "," : "") << columns[i];
   out_ << "\n";
 }

@@ -1,5 +1,7 @@
 #include "hm/core/file_output.hpp"
 
+#include "hm/core/input_error.hpp"
+
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
@@ -24,6 +26,20 @@ namespace {
 std::ofstream open_for_writing(const fs::path& path) {
   errno = 0;
   std::ofstream file(path, std::ios::binary | std::ios::trunc);
+  if (!file) throw_write_error(path, errno);
+  return file;
+}
+
+std::ofstream open_for_appending(const fs::path& path, std::uintmax_t size) {
+  std::error_code ec;
+  const std::uintmax_t now = fs::file_size(path, ec);
+  if (ec || now < size)
+    throw InputError("'" + path.string() + "' holds " + (ec ? std::string("nothing readable") : std::to_string(now) + " bytes") +
+                     ", allowed: at least the " + std::to_string(size) + " its run had written at the checkpoint");
+  fs::resize_file(path, size, ec);  // drop what steps after the checkpoint wrote: they are computed again
+  if (ec) throw std::runtime_error("cannot write '" + path.string() + "': " + ec.message());
+  errno = 0;
+  std::ofstream file(path, std::ios::binary | std::ios::app);
   if (!file) throw_write_error(path, errno);
   return file;
 }

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <stdexcept>
 #include <system_error>
 
@@ -119,7 +120,11 @@ void report_orphaned_staging(const fs::path& parent) {
     std::cerr << "hmlattice: note: " << quoted(it->path()) << " holds the partial results of a run that was killed ("
               << (marker_value(marker, "command_line").empty() ? std::string("command unknown")
                                                                : marker_value(marker, "command_line"))
-              << "); kept: look inside, then remove it\n";
+              << "); kept: "
+              << (fs::exists(it->path() / "checkpoint.bin", ec)
+                      ? "continue it with hmlattice run --resume " + quoted(it->path())
+                      : std::string("look inside, then remove it"))
+              << "\n";
   }
 }
 
@@ -212,13 +217,61 @@ void ResultFolder::write_marker(const std::string& state) const {
         << "version = " << toml_string(HM_VERSION) << "\n"
         << "utc_time = " << toml_string(utc_now()) << "\n";
     if (state == "running")
-      out << "state = \"running\"\nhost = " << toml_string(host_name()) << "\npid = " << ::getpid() << "\n";
+      out << "state = \"running\"\nhost = " << toml_string(host_name()) << "\npid = " << ::getpid() << "\n"
+          << "target = " << toml_string(target_.string()) << "\n";
     else if (!state.empty())
       out << "complete = false\nstopped = " << toml_string(state) << "\n";
   });
 }
 
+namespace {
+
+// Why `folder` cannot be resumed ("" if it can): only a stopped run (complete = false) or a killed
+// one (its marker says running, by a process of this machine that is gone) is continued.
+std::string why_not_resumable(const fs::path& folder) {
+  if (!is_result_folder(folder)) return "is not an hmlattice result folder";
+  const fs::path marker = folder / result_marker_name;
+  if (marker_value(marker, "complete") == "false") return "";
+  if (marker_value(marker, "state") != "running") return "holds a complete run";
+  if (marker_value(marker, "host") != host_name()) return "is being written on machine " + marker_value(marker, "host");
+  const long id = std::strtol(marker_value(marker, "pid").c_str(), nullptr, 10);
+  if (id > 0 && (::kill(static_cast<pid_t>(id), 0) == 0 || errno != ESRCH))
+    return "is being written by process " + std::to_string(id);
+  return "";
+}
+
+}  // namespace
+
+ResultFolder::ResultFolder(Resume, const fs::path& folder, const std::string& option, std::string command_line)
+    : shown_(without_trailing_separators(folder)), option_(option), command_line_(std::move(command_line)),
+      overwrite_(false), resumed_(true) {
+  std::error_code ec;
+  if (fs::symlink_status(shown_, ec).type() != fs::file_type::directory)
+    refuse(option_, shown_, "is not a folder", "allowed: the folder of a run that stopped before t_end");
+  if (const std::string why = why_not_resumable(shown_); !why.empty())
+    refuse(option_, shown_, why, "allowed: the folder of a run that stopped before t_end");
+  staging_ = physical_location(shown_);
+  target_ = staging_;
+  // A killed run's staging folder goes where that run would have put it, if the name is plain.
+  const std::string target = marker_value(staging_ / result_marker_name, "target");
+  if (staging_.filename().string().rfind(staging_prefix, 0) == 0 && !target.empty() &&
+      target.find('\\') == std::string::npos) {
+    target_ = target;
+    shown_ = target;
+  }
+  std::ifstream in(staging_ / result_marker_name, std::ios::binary);
+  previous_marker_.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  write_marker("running");
+}
+
 ResultFolder::~ResultFolder() {
+  if (resumed_) {
+    if (done_) return;
+    // Not continued after all (bad checkpoint, an error): the folder is as it was.
+    std::ofstream out(staging_ / result_marker_name, std::ios::binary | std::ios::trunc);
+    out << previous_marker_;
+    return;
+  }
   if (done_) return;
   std::error_code ec;  // never throw from a destructor; what is removed here is only what this object made
   fs::remove_all(staging_, ec);
@@ -227,6 +280,19 @@ ResultFolder::~ResultFolder() {
 
 void ResultFolder::commit(const std::string& incomplete) {
   write_marker(incomplete);
+  if (resumed_) {
+    done_ = true;
+    if (target_ == staging_ || !incomplete.empty()) return;
+    std::error_code ec;
+    if (fs::exists(fs::symlink_status(target_, ec)) && !(fs::is_directory(target_, ec) && fs::is_empty(target_, ec)))
+      throw std::runtime_error("the finished results could not be put in " + quoted(target_) +
+                               " (it exists meanwhile); they are complete in " + quoted(staging_));
+    fs::rename(staging_, target_, ec);
+    if (ec)
+      throw std::runtime_error("the finished results could not be put in " + quoted(target_) + " (" + ec.message() +
+                               "); they are complete in " + quoted(staging_));
+    return;
+  }
   const auto keep = [&](const std::string& why) {
     done_ = true;  // a finished result is never deleted by the toolkit
     throw std::runtime_error("the finished results could not be put in " + quoted(shown_) + " (" + why +

@@ -25,10 +25,10 @@ std::string long_case() {
 
 // Starts the run in the background, sends `signal` once the staged series.csv has 6 rows (t = 0 and
 // five steps, flushed as they finish), waits; returns the exit status.
-int run_and_signal(const TempDir& dir, const std::string& signal) {
+int run_and_signal(const TempDir& dir, const std::string& signal, const std::string& options = "") {
   dir.write("case.toml", long_case());
   dir.write("interrupt.sh",
-            "'" + std::string(HMLATTICE_EXE) + "' run case.toml --out run > out.txt 2> err.txt & pid=$!\n"
+            "'" + std::string(HMLATTICE_EXE) + "' run case.toml --out run " + options + " > out.txt 2> err.txt & pid=$!\n"
             "for i in $(seq 1200); do\n"
             "  n=$(cat .hmlattice-staging-*/series.csv 2>/dev/null | wc -l)\n"
             "  [ \"$n\" -ge 7 ] && break\n"
@@ -64,12 +64,20 @@ TEST_CASE("An interrupted run keeps its finished steps in --out, marked incomple
     CHECK(slurp(run / "breaks.csv").rfind("sequence,beam,particle_i,particle_j,x,y,time,", 0) == 0);
     // The folder is a complete description of what was done: its config reruns the whole case.
     CHECK(std::filesystem::exists(run / "config.toml"));
+    // It continues from the checkpoint of its last step (here for two more steps).
+    CHECK_THAT(status, Catch::Contains("checkpoint_step = " + std::to_string(rows - 2) + "\n") &&
+                           Catch::Contains("resume = \"hmlattice run --resume run\""));
+    const auto resumed = hm::test::run_hmlattice("run --resume run --stop-after-steps " + std::to_string(rows), dir.path);
+    INFO(resumed.err);
+    CHECK(resumed.exit_code == 0);
+    CHECK(count_lines(slurp(run / "series.csv")) == rows + 2);
+    CHECK_THAT(slurp(run / "status.toml"), Catch::Contains("last_step = " + std::to_string(rows) + "\n"));
   }
 }
 
-TEST_CASE("A killed run's staging folder is reported by the next run beside it, and kept", "[case][cli]") {
+TEST_CASE("A killed run's staging folder is reported by the next run beside it, kept, and resumable", "[case][cli]") {
   TempDir dir("run-killed");
-  CHECK(run_and_signal(dir, "KILL") == 128 + 9);
+  CHECK(run_and_signal(dir, "KILL", "--checkpoint-every 0") == 128 + 9);
   std::filesystem::path staging;
   for (const auto& entry : std::filesystem::directory_iterator(dir.path))
     if (entry.path().filename().string().rfind(".hmlattice-staging-", 0) == 0) staging = entry.path();
@@ -79,6 +87,15 @@ TEST_CASE("A killed run's staging folder is reported by the next run beside it, 
   CHECK(r.exit_code == 0);
   CHECK(count_lines(r.err) == 1);
   CHECK_THAT(r.err, Catch::Contains(staging.filename().string()) && Catch::Contains("run case.toml --out run") &&
-                        Catch::Contains("kept"));
+                        Catch::Contains("kept") && Catch::Contains("--resume"));
   CHECK(std::filesystem::exists(staging / "series.csv"));
+  // With a checkpoint every step, it continues from the last one the kill left complete (the steps
+  // flushed after it are cut and computed again); stopped again, it stays where it is, incomplete.
+  const int flushed = count_lines(slurp(staging / "series.csv")) - 2;
+  const auto resumed = hm::test::run_hmlattice(
+      "run --resume '" + staging.string() + "' --stop-after-steps " + std::to_string(flushed + 2), dir.path);
+  INFO(resumed.err);
+  CHECK(resumed.exit_code == 0);
+  CHECK(count_lines(slurp(staging / "series.csv")) == flushed + 4);
+  CHECK_THAT(slurp(staging / "status.toml"), Catch::Contains("last_step = " + std::to_string(flushed + 2) + "\n"));
 }

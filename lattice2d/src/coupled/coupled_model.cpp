@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "hm/core/input_error.hpp"
+#include "hm/core/state_archive.hpp"
 #include "hm/core/validation.hpp"
 
 namespace hm::lattice2d {
@@ -292,19 +293,25 @@ CoupledRunSummary CoupledModel::run(const TimeStepping& stepping, const Observer
                                     const std::function<bool()>& stop) {
   stepping.validate();
   const auto start = std::chrono::steady_clock::now();
-  CoupledRunSummary run;
   std::vector<double> outputs = stepping.output_times;
   if (outputs.empty() || outputs.back() < stepping.t_end) outputs.push_back(stepping.t_end);
   // Times closer than this to an output are snapped onto it (no sliver steps).
   const double snap = 1e-9 * stepping.t_end;
 
-  // Initial step: the unloaded lattice at t = 0.
-  if (observer) observer(*this, CoupledStepSummary{}, true);
-  std::size_t next_output = 0;
-  double dt_nominal = stepping.dt_initial;
+  RunCursor& c = cursor_;
+  CoupledRunSummary& run = c.totals;
+  const double seconds_before = run.seconds;
+  if (!c.started) {  // initial step: the unloaded lattice at t = 0
+    c.started = true;
+    c.next_output = 0;
+    c.dt_nominal = stepping.dt_initial;
+    if (observer) observer(*this, CoupledStepSummary{}, true);
+  }
+  run.status = CoupledStatus::converged;
+  run.message.clear();
   while (time() < stepping.t_end - snap) {
-    const double t_out = outputs[next_output];
-    double dt = std::min(dt_nominal, t_out - time());
+    const double t_out = outputs[c.next_output];
+    double dt = std::min(c.dt_nominal, t_out - time());
     if (t_out - (time() + dt) < snap) dt = t_out - time();
     CoupledStepSummary s = step(dt);
     run.total_iterations += s.iterations;
@@ -312,7 +319,7 @@ CoupledRunSummary CoupledModel::run(const TimeStepping& stepping, const Observer
     // a milder change of the contact set), up to max_step_halvings times.
     for (int h = 0; s.status == CoupledStatus::not_converged && h < stepping.max_step_halvings; ++h) {
       dt *= 0.5;
-      dt_nominal = dt;
+      c.dt_nominal = dt;
       ++run.n_step_halvings;
       s = step(dt);
       run.total_iterations += s.iterations;
@@ -326,10 +333,10 @@ CoupledRunSummary CoupledModel::run(const TimeStepping& stepping, const Observer
     run.max_balance_error = std::max(run.max_balance_error, s.flow.balance_error);
     run.add_accepted_step(s);
     const bool is_output = std::abs(time() - t_out) <= snap;
-    if (is_output) ++next_output;
-    if (observer) observer(*this, s, is_output);
+    if (is_output) ++c.next_output;
     // Geometric growth of the nominal step; a step shortened to hit an output does not reset it.
-    if (dt >= dt_nominal * (1.0 - 1e-12)) dt_nominal = std::min(dt_nominal * stepping.dt_growth, stepping.dt_max);
+    if (dt >= c.dt_nominal * (1.0 - 1e-12)) c.dt_nominal = std::min(c.dt_nominal * stepping.dt_growth, stepping.dt_max);
+    if (observer) observer(*this, s, is_output);
     if (stop && stop() && time() < stepping.t_end - snap) {
       run.status = CoupledStatus::interrupted;
       run.message = "stopped on request at t = " + hm::core::format_value(time());
@@ -337,8 +344,129 @@ CoupledRunSummary CoupledModel::run(const TimeStepping& stepping, const Observer
     }
   }
   run.time = time();
-  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  run.seconds = seconds_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;
+}
+
+namespace {
+
+void save_break_log(core::StateWriter& w, const std::vector<BreakEvent>& log) {
+  std::vector<int> ints;
+  std::vector<double> reals;
+  for (const BreakEvent& e : log) {
+    ints.insert(ints.end(), {e.sequence, e.beam, e.particle_i, e.particle_j, static_cast<int>(e.mode)});
+    reals.insert(reals.end(),
+                 {e.position.x(), e.position.y(), e.load, e.sigma_1, e.sigma_3, e.ratio, e.crack_tip_factor});
+  }
+  w.put("breaks.ints", ints);
+  w.put("breaks.reals", reals);
+}
+
+std::vector<BreakEvent> restore_break_log(core::StateReader& r) {
+  std::vector<int> ints;
+  std::vector<double> reals;
+  r.get("breaks.ints", ints);
+  r.get("breaks.reals", reals);
+  if (ints.size() % 5 != 0 || reals.size() / 7 != ints.size() / 5 || reals.size() % 7 != 0)
+    throw InputError(r.source() + ": at 'breaks': inconsistent sizes");
+  std::vector<BreakEvent> log(ints.size() / 5);
+  for (std::size_t k = 0; k < log.size(); ++k) {
+    const int* i = &ints[5 * k];
+    const double* x = &reals[7 * k];
+    log[k] = {i[0], i[1], i[2], i[3], Eigen::Vector2d(x[0], x[1]), x[2], x[3], x[4], x[5], x[6],
+              static_cast<FailureMode>(i[4])};
+  }
+  return log;
+}
+
+void save_totals(core::StateWriter& w, const CoupledRunSummary& t) {
+  w.put("run.counts", std::vector<std::int64_t>{t.n_steps, t.total_iterations, t.n_step_halvings, t.n_mechanics_solves,
+                                                t.n_contact_changes, t.n_mechanics_factorizations,
+                                                t.n_mechanics_update_failures});
+  w.put("run.reals", std::vector<double>{t.time, t.seconds, t.max_balance_error, t.step_seconds, t.mechanics_seconds,
+                                         t.stress_seconds, t.break_seconds, t.geometry_seconds, t.flow_seconds});
+}
+
+CoupledRunSummary restore_totals(core::StateReader& r) {
+  std::vector<std::int64_t> n;
+  std::vector<double> x;
+  r.get("run.counts", n);
+  r.get("run.reals", x);
+  if (n.size() != 7 || x.size() != 9) throw InputError(r.source() + ": at 'run': inconsistent sizes");
+  CoupledRunSummary t;
+  t.n_steps = static_cast<int>(n[0]);
+  t.total_iterations = static_cast<int>(n[1]);
+  t.n_step_halvings = static_cast<int>(n[2]);
+  t.n_mechanics_solves = n[3];
+  t.n_contact_changes = n[4];
+  t.n_mechanics_factorizations = n[5];
+  t.n_mechanics_update_failures = n[6];
+  t.time = x[0];
+  t.seconds = x[1];
+  t.max_balance_error = x[2];
+  t.step_seconds = x[3];
+  t.mechanics_seconds = x[4];
+  t.stress_seconds = x[5];
+  t.break_seconds = x[6];
+  t.geometry_seconds = x[7];
+  t.flow_seconds = x[8];
+  return t;
+}
+
+}  // namespace
+
+void CoupledModel::save_state(core::StateWriter& w) const {
+  w.put("model.particles", lattice().n_particles());
+  w.put("model.beams", lattice().n_beams());
+  mechanics_->save_state(w);
+  flow_->save_state(w);
+  w.put("model.displacement", displacement_);
+  w.put("model.previous_pressure", previous_pressure_);
+  w.put("model.previous_displacement", previous_displacement_);
+  w.put("model.previous_dt", previous_dt_);
+  w.put("model.fracture", fracture_enabled());
+  if (fracture_) {
+    w.put("strengths.tensile", fracture_->strengths.tensile);
+    w.put("strengths.compressive", fracture_->strengths.compressive);
+  }
+  save_break_log(w, break_log_);
+  w.put("cursor.started", cursor_.started);
+  w.put("cursor.next_output", cursor_.next_output);
+  w.put("cursor.dt_nominal", cursor_.dt_nominal);
+  save_totals(w, cursor_.totals);
+}
+
+void CoupledModel::restore_state(core::StateReader& r) {
+  int particles = 0, beams = 0;
+  r.get("model.particles", particles);
+  r.get("model.beams", beams);
+  if (particles != lattice().n_particles() || beams != lattice().n_beams())
+    throw InputError(r.source() + ": a state of another lattice (" + std::to_string(particles) + " particles, " +
+                     std::to_string(beams) + " beams; this one has " + std::to_string(lattice().n_particles()) +
+                     ", " + std::to_string(lattice().n_beams()) + ")");
+  mechanics_->restore_state(r);
+  flow_->restore_state(r);
+  r.get("model.displacement", displacement_);
+  r.get("model.previous_pressure", previous_pressure_);
+  r.get("model.previous_displacement", previous_displacement_);
+  r.get("model.previous_dt", previous_dt_);
+  bool fracture = false;
+  r.get("model.fracture", fracture);
+  if (fracture != fracture_enabled())
+    throw InputError(r.source() + ": a state of a model with fracture " + (fracture ? "on" : "off"));
+  if (fracture_) {
+    r.get("strengths.tensile", fracture_->strengths.tensile);
+    r.get("strengths.compressive", fracture_->strengths.compressive);
+  }
+  break_log_ = restore_break_log(r);
+  r.get("cursor.started", cursor_.started);
+  r.get("cursor.next_output", cursor_.next_output);
+  r.get("cursor.dt_nominal", cursor_.dt_nominal);
+  cursor_.totals = restore_totals(r);
+  // The accepted geometry is a function of the accepted displacement (finish_step's dual graph).
+  current_dual_ = cursor_.totals.n_steps == 0 ? reference_dual_
+                                              : build_dual_graph(lattice(), positions(displacement_), reference_dual_.options);
+  volume_ = unknown_volumes(current_dual_);
 }
 
 }  // namespace hm::lattice2d

@@ -12,6 +12,7 @@
 #include <Eigen/SparseCore>
 
 #include "hm/core/input_error.hpp"
+#include "hm/core/state_archive.hpp"
 #include "hm/core/validation.hpp"
 #include "linalg/subtree_solve.hpp"
 
@@ -81,6 +82,7 @@ struct FlowNetwork::Solver {
   std::vector<int> diagonal_slot;                // value index of (k, k)
   std::vector<std::array<int, 4>> connection_slot;  // (s,s), (t,t), (s,t), (t,s); -1 where absent
   Factorisation factorisation;
+  Eigen::VectorXd factor_values;  // the matrix `factorisation` holds, for a restored network to refactorise
   SubtreeSolve subtree;
 
   // factorisation.solve(b), with the triangular solves on all threads (bitwise the same x on any
@@ -254,10 +256,64 @@ std::string FlowNetwork::factorise(double dt) {
   Eigen::VectorXd values;
   assemble_values(dt, 1.0, values);
   const std::string error = solver_->factorise(solver_->factorisation, solver_->matrix, values);
+  solver_->factor_values = std::move(values);
   factorised_dt_ = error.empty() ? dt : -1.0;
   factor_stale_ = false;
   refresh_factor_ = false;
   return error;
+}
+
+void FlowNetwork::save_state(core::StateWriter& w) const {
+  assert(!has_trial_ && "a state between steps");
+  w.put("flow.triangle_area", triangle_area_);
+  w.put("flow.base_conductance", base_conductance_);
+  w.put("flow.borehole_volume", borehole_volume_);
+  w.put("flow.broken", broken_);
+  w.put("flow.pressure", pressure_);
+  w.put("flow.totals", std::vector<double>{totals_.time, totals_.injected, totals_.storage, totals_.deformation,
+                                           totals_.outflow, static_cast<double>(totals_.n_steps)});
+  w.put("flow.matrix_values", std::vector<double>(solver_->matrix.valuePtr(),
+                                                  solver_->matrix.valuePtr() + solver_->matrix.nonZeros()));
+  w.put("flow.factor_values", solver_->factor_values);
+  w.put("flow.factorised_dt", factorised_dt_);
+  w.put("flow.factor_stale", factor_stale_);
+  w.put("flow.refresh_factor", refresh_factor_);
+}
+
+void FlowNetwork::restore_state(core::StateReader& r) {
+  const auto fail = [&](const char* tag) { throw InputError(r.source() + ": at '" + tag + "': wrong size"); };
+  r.get("flow.triangle_area", triangle_area_);
+  r.get("flow.base_conductance", base_conductance_);
+  if (triangle_area_.size() != n_triangles_) fail("flow.triangle_area");
+  if (base_conductance_.size() != static_cast<Eigen::Index>(connections_.size())) fail("flow.base_conductance");
+  r.get("flow.borehole_volume", borehole_volume_);
+  r.get("flow.broken", broken_);
+  if (broken_.size() != connections_.size()) fail("flow.broken");
+  r.get("flow.pressure", pressure_);
+  if (pressure_.size() != n_unknowns()) fail("flow.pressure");
+  std::vector<double> totals;
+  r.get("flow.totals", totals);
+  if (totals.size() != 6) fail("flow.totals");
+  totals_ = {totals[0], totals[1], totals[2], totals[3], totals[4], static_cast<int>(totals[5])};
+  std::vector<double> values;
+  r.get("flow.matrix_values", values);
+  Eigen::VectorXd factor_values;
+  r.get("flow.factor_values", factor_values);
+  const auto nnz = static_cast<std::size_t>(solver_->matrix.nonZeros());
+  if (values.size() != nnz) fail("flow.matrix_values");
+  if (factor_values.size() != 0 && static_cast<std::size_t>(factor_values.size()) != nnz) fail("flow.factor_values");
+  r.get("flow.factorised_dt", factorised_dt_);
+  r.get("flow.factor_stale", factor_stale_);
+  r.get("flow.refresh_factor", refresh_factor_);
+  // The factor is a function of the matrix it was computed from: refactorising those values gives it
+  // bitwise (a reused factor may be older than the current matrix, which is restored after it).
+  if (factorised_dt_ >= 0.0) {
+    const std::string error = solver_->factorise(solver_->factorisation, solver_->matrix, factor_values);
+    if (!error.empty()) throw std::runtime_error("restoring the flow network: " + error);
+  }
+  solver_->factor_values = std::move(factor_values);
+  std::copy(values.begin(), values.end(), solver_->matrix.valuePtr());
+  has_trial_ = false;
 }
 
 std::string FlowNetwork::factorise_if_needed(double dt) {

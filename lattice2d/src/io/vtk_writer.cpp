@@ -226,8 +226,8 @@ void write_pvd(const fs::path& path, const std::vector<PvdEntry>& entries) {
   });
 }
 
-VtkSeries::VtkSeries(fs::path folder, std::string name, VtkFormat format)
-    : folder_(std::move(folder)), name_(std::move(name)), format_(format) {
+VtkSeries::VtkSeries(fs::path folder, std::string name, VtkFormat format, std::vector<PvdEntry> written)
+    : folder_(std::move(folder)), name_(std::move(name)), format_(format), entries_(std::move(written)) {
   fs::create_directories(folder_);
 }
 

@@ -11,6 +11,7 @@
 #include <cholmod.h>
 
 #include "hm/core/input_error.hpp"
+#include "hm/core/state_archive.hpp"
 #include "hm/core/validation.hpp"
 #include "linalg/subtree_solve.hpp"
 
@@ -104,6 +105,9 @@ struct CholmodSolver::Impl {
   FactorPtr symbolic{nullptr, FactorDeleter{&common.c}};  // from cholmod_analyze, never numeric
   FactorPtr factor{nullptr, FactorDeleter{&common.c}};    // simplicial LDL' (after conversion)
   std::vector<int> inverse_permutation;                    // row r of A is row pinv[r] of L
+  // The pattern `symbolic` was analysed on (the matrix of the last compute(); modifications may have
+  // grown A's pattern since): a restored solver re-analyses it for the same ordering.
+  std::vector<int> analysed_outer, analysed_inner;
   double lnz = 0.0;
   bool factor_ok = false;  // the factor is numerically usable (last factorise/modify succeeded)
   // Forward solution y = L^-1 P b of `forward_b`, kept current through modifications.
@@ -168,6 +172,12 @@ void CholmodSolver::compute(const Matrix& A) {
   matrix_ = A;
   matrix_.makeCompressed();
   report_ = report_keeping_totals(report_);
+  impl_->analysed_outer.assign(matrix_.outerIndexPtr(), matrix_.outerIndexPtr() + matrix_.outerSize() + 1);
+  impl_->analysed_inner.assign(matrix_.innerIndexPtr(), matrix_.innerIndexPtr() + matrix_.nonZeros());
+  if (analyse(matrix_)) refactorize();
+}
+
+bool CholmodSolver::analyse(const Matrix& A) {
   cholmod_common* c = impl_->c();
   c->final_ll = 0;
   c->supernodal = options_.supernodal_factorization ? CHOLMOD_SUPERNODAL : CHOLMOD_SIMPLICIAL;
@@ -191,19 +201,158 @@ void CholmodSolver::compute(const Matrix& A) {
   }
   impl_->factor.reset();
   impl_->symbolic.reset();
-  SparsePtr S = impl_->to_cholmod_lower(matrix_);
+  SparsePtr S = impl_->to_cholmod_lower(A);
   if (S) impl_->symbolic.reset(cholmod_analyze(S.get(), c));
   if (!impl_->symbolic) {
     report_.info = Eigen::NumericalIssue;
     report_.message = "cholmod_analyze failed (status " + std::to_string(c->status) + ")";
-    return;
+    return false;
   }
   impl_->lnz = c->lnz;
-  const int n = static_cast<int>(matrix_.rows());
+  const int n = static_cast<int>(A.rows());
   const auto* perm = static_cast<const int*>(impl_->symbolic->Perm);
   impl_->inverse_permutation.assign(static_cast<std::size_t>(n), 0);
   for (int k = 0; k < n; ++k) impl_->inverse_permutation[static_cast<std::size_t>(perm[k])] = k;
-  refactorize();
+  return true;
+}
+
+namespace {
+
+void save_report(core::StateWriter& w, const SpdSolveReport& r) {
+  w.put("report.info", static_cast<int>(r.info));
+  w.put("report.relative_residual", r.relative_residual);
+  w.put("report.iterations", r.iterations);
+  w.put("report.refactorized", r.refactorized);
+  w.put("report.n_factorizations", r.n_factorizations);
+  w.put("report.n_modifications", r.n_modifications);
+  w.put("report.n_update_failures", r.n_update_failures);
+  w.put("report.last_update_failure", r.last_update_failure);
+  w.put("report.message", r.message);
+}
+
+void restore_report(core::StateReader& r, SpdSolveReport& report) {
+  int info = 0;
+  r.get("report.info", info);
+  report.info = static_cast<Eigen::ComputationInfo>(info);
+  r.get("report.relative_residual", report.relative_residual);
+  r.get("report.iterations", report.iterations);
+  r.get("report.refactorized", report.refactorized);
+  r.get("report.n_factorizations", report.n_factorizations);
+  r.get("report.n_modifications", report.n_modifications);
+  r.get("report.n_update_failures", report.n_update_failures);
+  r.get("report.last_update_failure", report.last_update_failure);
+  r.get("report.message", report.message);
+}
+
+template <class T>
+std::vector<T> array_of(const void* data, std::size_t n) {
+  const auto* p = static_cast<const T*>(data);
+  return std::vector<T>(p, p + n);
+}
+
+template <class T>
+void copy_into(void* data, const std::vector<T>& v) {
+  std::copy(v.begin(), v.end(), static_cast<T*>(data));
+}
+
+}  // namespace
+
+void CholmodSolver::save_state(core::StateWriter& w) const {
+  w.put_sparse("cholmod.matrix", matrix_);
+  save_report(w, report_);
+  w.put("cholmod.analysed_outer", impl_->analysed_outer);
+  w.put("cholmod.analysed_inner", impl_->analysed_inner);
+  w.put("cholmod.factor_ok", impl_->factor_ok);
+  // The simplicial LDL' factor as CHOLMOD holds it after updates: its column layout (p, nz, next,
+  // prev) depends on how columns grew, so every array is kept, not just L's entries.
+  const cholmod_factor* L = impl_->factor.get();
+  w.put("cholmod.has_factor", L != nullptr);
+  if (L) {
+    assert(!L->is_super && !L->is_ll && L->xtype == CHOLMOD_REAL && L->itype == CHOLMOD_INT);
+    const std::size_t n = L->n;
+    w.put("L.n", n);
+    w.put("L.minor", L->minor);
+    w.put("L.nzmax", L->nzmax);
+    w.put("L.ordering", L->ordering);
+    w.put("L.is_monotonic", L->is_monotonic);
+    w.put("L.Perm", array_of<int>(L->Perm, n));
+    w.put("L.ColCount", array_of<int>(L->ColCount, n));
+    w.put("L.p", array_of<int>(L->p, n + 1));
+    w.put("L.i", array_of<int>(L->i, L->nzmax));
+    w.put("L.x", array_of<double>(L->x, L->nzmax));
+    w.put("L.nz", array_of<int>(L->nz, n));
+    w.put("L.next", array_of<int>(L->next, n + 2));
+    w.put("L.prev", array_of<int>(L->prev, n + 2));
+  }
+  w.put("cholmod.has_forward", impl_->forward != nullptr);
+  if (impl_->forward) {
+    w.put("forward.y", array_of<double>(impl_->forward->x, impl_->forward->nrow));
+    w.put("forward.b", impl_->forward_b);
+  }
+}
+
+void CholmodSolver::restore_state(core::StateReader& r) {
+  r.get_sparse("cholmod.matrix", matrix_);
+  restore_report(r, report_);
+  r.get("cholmod.analysed_outer", impl_->analysed_outer);
+  r.get("cholmod.analysed_inner", impl_->analysed_inner);
+  bool factor_ok = false, has_factor = false, has_forward = false;
+  r.get("cholmod.factor_ok", factor_ok);
+  r.get("cholmod.has_factor", has_factor);
+  // The ordering is a function of the pattern: analysing the same one gives the same symbolic factor.
+  const auto n_rows = static_cast<Eigen::Index>(impl_->analysed_outer.size()) - 1;
+  const std::vector<double> ones(impl_->analysed_inner.size(), 1.0);
+  const Matrix analysed = Eigen::Map<const Matrix>(n_rows, n_rows, static_cast<Eigen::Index>(ones.size()),
+                                                   impl_->analysed_outer.data(), impl_->analysed_inner.data(),
+                                                   ones.data());
+  const SpdSolveReport report = report_;
+  if (!analyse(analysed)) throw std::runtime_error("restoring the mechanics solver: " + report_.message);
+  report_ = report;
+  cholmod_common* c = impl_->c();
+  impl_->subtree_current = false;
+  if (has_factor) {
+    std::size_t n = 0, minor = 0, nzmax = 0;
+    r.get("L.n", n);
+    r.get("L.minor", minor);
+    r.get("L.nzmax", nzmax);
+    FactorPtr L(cholmod_allocate_factor(n, c), FactorDeleter{c});
+    // A numeric simplicial LDL' of the right size, whose arrays are then overwritten with the saved ones.
+    if (!L || !cholmod_change_factor(CHOLMOD_REAL, 0, 0, 1, 1, L.get(), c) ||
+        !cholmod_reallocate_factor(nzmax, L.get(), c))
+      throw std::runtime_error("restoring the mechanics solver: out of memory for its factor");
+    L->minor = minor;
+    r.get("L.ordering", L->ordering);
+    r.get("L.is_monotonic", L->is_monotonic);
+    std::vector<int> ints;
+    std::vector<double> values;
+    const auto get_ints = [&](const char* tag, void* into, std::size_t size) {
+      r.get(tag, ints);
+      if (ints.size() != size) throw InputError(r.source() + ": at '" + tag + "': wrong size");
+      copy_into(into, ints);
+    };
+    get_ints("L.Perm", L->Perm, n);
+    get_ints("L.ColCount", L->ColCount, n);
+    get_ints("L.p", L->p, n + 1);
+    get_ints("L.i", L->i, nzmax);
+    r.get("L.x", values);
+    if (values.size() != nzmax) throw InputError(r.source() + ": at 'L.x': wrong size");
+    copy_into(L->x, values);
+    get_ints("L.nz", L->nz, n);
+    get_ints("L.next", L->next, n + 2);
+    get_ints("L.prev", L->prev, n + 2);
+    impl_->factor = std::move(L);
+  }
+  impl_->factor_ok = factor_ok && has_factor;
+  r.get("cholmod.has_forward", has_forward);
+  impl_->forward.reset();
+  if (has_forward) {
+    std::vector<double> y;
+    r.get("forward.y", y);
+    impl_->forward.reset(cholmod_allocate_dense(y.size(), 1, y.size(), CHOLMOD_REAL, c));
+    if (!impl_->forward) throw std::runtime_error("restoring the mechanics solver: out of memory");
+    copy_into(impl_->forward->x, y);
+    r.get("forward.b", impl_->forward_b);
+  }
 }
 
 void CholmodSolver::refactorize() {
@@ -479,6 +628,25 @@ void PcgSolver::modify(const Matrix& W, int sigma) {
   add_low_rank(W, sigma);
   ++report_.n_modifications;
   stale_ = true;  // rebuilt at the next solve, so several modifications cost one set-up
+}
+
+void PcgSolver::save_state(core::StateWriter& w) const {
+  w.put_sparse("pcg.matrix", matrix_);
+  save_report(w, report_);
+  w.put("pcg.previous", previous_);
+  w.put("pcg.stale", stale_);
+}
+
+void PcgSolver::restore_state(core::StateReader& r) {
+  r.get_sparse("pcg.matrix", matrix_);
+  restore_report(r, report_);
+  r.get("pcg.previous", previous_);
+  r.get("pcg.stale", stale_);
+  if (!stale_) {  // the preconditioner is a function of the matrix: rebuild it without counting
+    const SpdSolveReport report = report_;
+    refactorize();
+    report_ = report;
+  }
 }
 
 Eigen::VectorXd PcgSolver::solve(const Eigen::VectorXd& b) {

@@ -11,6 +11,8 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/SparseCore>
 
+#include "hm/core/state_archive.hpp"
+
 #include "hm/core/input_error.hpp"
 #include "hm/core/validation.hpp"
 
@@ -661,6 +663,59 @@ Eigen::VectorXd BeamMechanics::reactions() const {
     r[dof_index(j, 1)] += f.y();
   }
   return r;
+}
+
+void BeamMechanics::save_state(core::StateWriter& w) const {
+  std::string states(states_.size(), '\0');
+  std::transform(states_.begin(), states_.end(), states.begin(), [](BeamState b) { return static_cast<char>(b); });
+  w.put("mechanics.states", states);
+  w.put("mechanics.held", held_);
+  w.put("mechanics.held_value", held_value_);
+  w.put("mechanics.detached", detached_);
+  w.put("mechanics.n_detached", n_detached_);
+  w.put("mechanics.pinned_particle", pinned_particle_);
+  w.put("mechanics.free_index", free_index_);
+  w.put("mechanics.free_dofs", free_dofs_);
+  w.put("mechanics.pressure_loads", pressure_loads_);
+  w.put("mechanics.extra_loads", extra_loads_);
+  w.put("mechanics.held_term", held_term_);
+  w.put("mechanics.raw", raw_);
+  w.put("mechanics.displacement", displacement_);
+  w.put("mechanics.broken", broken_);
+  w.put("mechanics.springs", springs_);
+  w.put("mechanics.solver", solver_->name());
+  solver_->save_state(w);
+}
+
+void BeamMechanics::restore_state(core::StateReader& r) {
+  const auto n_dofs = static_cast<std::size_t>(3 * lattice_.n_particles());
+  const auto check = [&](bool ok, const char* tag) {
+    if (!ok) throw InputError(r.source() + ": at '" + tag + "': a state of another lattice");
+  };
+  std::string states;
+  r.get("mechanics.states", states);
+  check(states.size() == states_.size(), "mechanics.states");
+  std::transform(states.begin(), states.end(), states_.begin(), [](char b) { return static_cast<BeamState>(b); });
+  r.get("mechanics.held", held_);
+  check(held_.size() == n_dofs, "mechanics.held");
+  r.get("mechanics.held_value", held_value_);
+  r.get("mechanics.detached", detached_);
+  r.get("mechanics.n_detached", n_detached_);
+  r.get("mechanics.pinned_particle", pinned_particle_);
+  r.get("mechanics.free_index", free_index_);
+  r.get("mechanics.free_dofs", free_dofs_);
+  r.get("mechanics.pressure_loads", pressure_loads_);
+  r.get("mechanics.extra_loads", extra_loads_);
+  r.get("mechanics.held_term", held_term_);
+  r.get("mechanics.raw", raw_);
+  r.get("mechanics.displacement", displacement_);
+  check(displacement_.size() == static_cast<Eigen::Index>(n_dofs), "mechanics.displacement");
+  r.get("mechanics.broken", broken_);
+  r.get("mechanics.springs", springs_);
+  std::string solver;
+  r.get("mechanics.solver", solver);
+  check(solver == solver_->name(), "mechanics.solver");
+  solver_->restore_state(r);
 }
 
 }  // namespace hm::lattice2d

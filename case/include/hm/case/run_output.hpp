@@ -34,6 +34,7 @@
 #include "hm/lattice2d/fracture/fracture_statistics.hpp"
 #include "hm/lattice2d/io/vtk_writer.hpp"
 #include "hm/core/csv_writer.hpp"
+#include "hm/core/state_archive.hpp"
 #include "hm/case/run_case.hpp"
 
 namespace hm::cases {
@@ -56,6 +57,13 @@ struct Breakdown {
 class RunRecorder {
  public:
   RunRecorder(const std::filesystem::path& dir, const RunCase& c);
+  /// A recorder that continues a run resumed from a checkpoint: reads what save_state wrote (after the
+  /// model's state, with `model` restored from it) and appends to the files in `dir`, cut back to
+  /// their length at the checkpoint. Throws hm::InputError for a damaged folder or state.
+  RunRecorder(const std::filesystem::path& dir, const RunCase& c, const hm::lattice2d::CoupledModel& model,
+              core::StateReader& r);
+  /// What a resumed recorder needs (file lengths, breakdown, output snapshots so far); flushes the files.
+  void save_state(core::StateWriter& w);
   void record(const hm::lattice2d::CoupledModel& model, const hm::lattice2d::CoupledStepSummary& step, bool is_output);
   /// Closes the CSV files and writes the fracture files; throws std::runtime_error if a write failed.
   void finish();
@@ -72,6 +80,7 @@ class RunRecorder {
   double last_p_h_ = 0.0;
   std::vector<hm::lattice2d::BreakEvent> breaks_;
   std::vector<hm::lattice2d::FractureSnapshot> fractures_;
+  std::vector<std::size_t> fracture_log_sizes_;  // break-log length at each snapshot
   std::ofstream series_file_, radial_file_, breaks_file_;
   std::unique_ptr<core::CsvWriter> series_, radial_;
   std::unique_ptr<hm::lattice2d::VtkSeries> vtk_;

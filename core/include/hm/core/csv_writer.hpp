@@ -16,9 +16,13 @@ std::string csv_number(double v);
 /// column: results that overflowed double precision are bad input, not results).
 enum class NonFinite { write, reject };
 
+/// Whether the writer starts with the header row, or appends rows to a file that has it (a resumed run).
+enum class CsvHeader { write, already_written };
+
 class CsvWriter {
  public:
-  CsvWriter(std::ostream& out, const std::vector<std::string>& columns, NonFinite non_finite = NonFinite::write);
+  CsvWriter(std::ostream& out, const std::vector<std::string>& columns, NonFinite non_finite = NonFinite::write,
+            CsvHeader header = CsvHeader::write);
   void row(const std::vector<double>& values);
   void row(std::initializer_list<double> values) { row(std::vector<double>(values)); }
 

@@ -48,6 +48,13 @@ class ResultFolder {
   /// `command_line` goes into the marker, so a folder tells which command wrote it.
   ResultFolder(const std::filesystem::path& target, const std::string& option, bool overwrite,
                std::string command_line);
+  /// Continues the folder of a run that stopped before its end (marker `complete = false`) or was
+  /// killed (a staging folder whose marker says running, by a process of this machine that is gone):
+  /// results are written in place, the marker says running until commit(). Throws hm::InputError
+  /// naming `option` for any other folder. Never removes anything; if destroyed without commit(),
+  /// the marker is put back as it was.
+  struct Resume {};
+  ResultFolder(Resume, const std::filesystem::path& folder, const std::string& option, std::string command_line);
   ~ResultFolder();  ///< removes the staging folder (and parents it created) unless committed or kept
   ResultFolder(const ResultFolder&) = delete;
   ResultFolder& operator=(const ResultFolder&) = delete;
@@ -69,6 +76,8 @@ class ResultFolder {
   std::filesystem::path shown_, target_, staging_;
   std::string option_, command_line_;
   bool overwrite_;
+  bool resumed_ = false;                       // continues an earlier run's folder in place
+  std::string previous_marker_;                // its marker before, restored if not committed
   bool done_ = false;                          // committed, or kept after a failed commit
   std::vector<std::filesystem::path> made_;    // parent folders this object created, deepest last
 };

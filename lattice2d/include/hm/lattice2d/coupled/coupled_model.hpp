@@ -230,9 +230,28 @@ class CoupledModel {
   /// output time and at t_end.
   using Observer = std::function<void(const CoupledModel&, const CoupledStepSummary&, bool is_output)>;
   /// Initial state (observer at t = 0), then while time remains, a step. Stops at the first failed step,
-  /// or (status interrupted) after an accepted step and its observer when `stop` returns true.
+  /// or (status interrupted) after an accepted step and its observer when `stop` returns true. A second
+  /// call, or one after restore_state, continues from run_cursor(); the summary counts the whole run.
   CoupledRunSummary run(const TimeStepping& stepping, const Observer& observer = {},
                         const std::function<bool()>& stop = {});
+
+  /// Where run() is between two steps: what it needs, besides the model's state, to go on.
+  struct RunCursor {
+    bool started = false;         ///< the initial state was observed (t = 0)
+    std::size_t next_output = 0;  ///< index of the next output time
+    double dt_nominal = 0.0;      ///< the step the next one starts from (before output snapping)
+    CoupledRunSummary totals;     ///< counters of the accepted steps so far
+  };
+  /// The cursor after the last accepted step and its observer call (valid inside the observer).
+  const RunCursor& run_cursor() const { return cursor_; }
+
+  /// Everything the run depends on between two steps (mechanics with its factor, flow, coupling history,
+  /// break log, strengths, run() cursor), for checkpoints. A model built from the same case that
+  /// restores it continues (run()) bitwise as this one would have.
+  void save_state(core::StateWriter& w) const;
+  /// Throws hm::InputError for a state of another model or written by other code. After it, run()
+  /// continues from the restored cursor without observing t = 0 again.
+  void restore_state(core::StateReader& r);
 
   /// Called after every pass of step() with the pass number (1-based), that pass's flow pressure
   /// (trial, size n_unknowns) and displacement: for studies of the iteration itself (Fig. 8).
@@ -293,6 +312,7 @@ class CoupledModel {
   };
   std::unique_ptr<FractureSetup> fracture_;
   std::vector<BreakEvent> break_log_;
+  RunCursor cursor_;
 };
 
 }  // namespace hm::lattice2d

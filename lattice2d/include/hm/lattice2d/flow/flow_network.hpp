@@ -17,6 +17,7 @@
 #include "hm/lattice2d/geometry/dual_graph.hpp"
 #include "hm/lattice2d/geometry/lattice.hpp"
 #include "hm/core/enum_names.hpp"
+#include "hm/core/state_archive.hpp"
 
 namespace hm::lattice2d {
 
@@ -220,6 +221,12 @@ class FlowNetwork {
   Eigen::VectorXd net_inflow_rate(const Eigen::VectorXd& pressure) const;
   /// Sum over outer segments of (A/d_su) iota p_s: the outflow rate through the outer surface.
   double outflow_rate(const Eigen::VectorXd& pressure) const;
+
+  /// The state between steps (pressure, totals, geometry, broken flags, the factor's matrix), for
+  /// checkpoints: a network built on the same lattice that restores it continues bitwise.
+  void save_state(core::StateWriter& w) const;
+  /// Throws hm::InputError for a state of another network or written by other code.
+  void restore_state(core::StateReader& r);
 
  private:
   struct Solver;  // the one place that names the sparse factorisation (flow_network.cpp)

@@ -75,7 +75,10 @@ void write_pvd(const std::filesystem::path& path, const std::vector<PvdEntry>& e
 /// Creates the folder. Not thread-safe.
 class VtkSeries {
  public:
-  VtkSeries(std::filesystem::path folder, std::string name, VtkFormat format = VtkFormat::binary);
+  /// `written`: the snapshots an earlier part of the same run wrote into `folder` (a resumed run), which
+  /// the .pvd keeps listing; the next snapshot is numbered after them.
+  VtkSeries(std::filesystem::path folder, std::string name, VtkFormat format = VtkFormat::binary,
+            std::vector<PvdEntry> written = {});
   /// Writes the next snapshot, then rewrites the .pvd; returns the .vtu's path.
   std::filesystem::path write(const Lattice& lattice, const DualGraph& dual, const LatticeSnapshot& snapshot);
   std::filesystem::path pvd_path() const { return folder_ / (name_ + ".pvd"); }

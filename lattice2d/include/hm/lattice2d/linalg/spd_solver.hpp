@@ -23,6 +23,7 @@
 #include <Eigen/SparseCore>
 
 #include "hm/core/enum_names.hpp"
+#include "hm/core/state_archive.hpp"
 
 namespace hm::lattice2d {
 
@@ -130,6 +131,11 @@ class SpdSolver {
   const Matrix& matrix() const { return matrix_; }
   Eigen::Index rows() const { return matrix_.rows(); }
   virtual std::string name() const = 0;
+  /// The whole state (matrix, factor or preconditioner, warm start, counters), for checkpoints. A
+  /// solver made with the same options that restores it continues bitwise as this one would.
+  virtual void save_state(core::StateWriter& w) const = 0;
+  /// Throws hm::InputError for a state written by other code (core::StateReader).
+  virtual void restore_state(core::StateReader& r) = 0;
 
  protected:
   /// A += sigma W W^T on the stored copy, in place where the pattern allows.
@@ -156,6 +162,8 @@ class CholmodSolver final : public SpdSolver {
   void modify(const Matrix& W, int sigma) override;
   void refactorize() override;
   std::string name() const override { return "cholmod"; }
+  void save_state(core::StateWriter& w) const override;
+  void restore_state(core::StateReader& r) override;
 
   /// Name of the ordering the analysis used ("nesdis", "metis", "amd", ...).
   std::string ordering_used() const;
@@ -164,6 +172,7 @@ class CholmodSolver final : public SpdSolver {
 
  private:
   Eigen::VectorXd parallel_solve(const Eigen::VectorXd& b);  // options_.parallel_triangular_solve
+  bool analyse(const Matrix& A);  // ordering and symbolic factor of A's pattern; false: report_ says why
   struct Impl;
   std::unique_ptr<Impl> impl_;
   SpdSolverOptions options_;
@@ -183,6 +192,8 @@ class PcgSolver final : public SpdSolver {
   void modify(const Matrix& W, int sigma) override;
   void refactorize() override;
   std::string name() const override { return "pcg"; }
+  void save_state(core::StateWriter& w) const override;
+  void restore_state(core::StateReader& r) override;
   /// Forget the previous solution (the next solve starts from x = 0).
   void clear_warm_start() { previous_.resize(0); }
 

@@ -194,6 +194,13 @@ class BeamMechanics {
   int pinned_particle() const { return pinned_particle_; }
   const SpdSolver& solver() const { return *solver_; }
 
+  /// The state after a solve (beam states, held and detached degrees of freedom, the pin, loads,
+  /// displacement, the solver's factor), for checkpoints: a BeamMechanics built with the same
+  /// arguments that restores it continues bitwise.
+  void save_state(core::StateWriter& w) const;
+  /// Throws hm::InputError for a state of another lattice or written by other code.
+  void restore_state(core::StateReader& r);
+
  private:
   void setup_system();  // free-DOF map, reduced matrix, held-term vector, factorisation
   BeamParameters beam_parameters(int beam) const;  // = beam_parameters_for(lattice_, parameters_, beam), cached k_n

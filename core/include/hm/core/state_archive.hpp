@@ -1,0 +1,137 @@
+#pragma once
+/// \file
+/// The binary state of a computation, for checkpoints that continue a run bitwise where it stopped.
+/// Each value is stored under a tag with its element type and count; the reader asks for the same tags
+/// in the same order, so a checkpoint written by other code (another version of a class's
+/// save_state) is refused at the first difference, naming the tag, instead of being misread. Doubles
+/// are stored as their bytes: a restored value is the same bits. A CRC-32 over everything refuses a
+/// truncated or damaged file. Not a portable format: the same build reads what it wrote.
+///
+/// Usage, one function pair per class (the same calls in both):
+///   void save_state(core::StateWriter& w) const { w.put("time", time_); w.put("u", u_); }
+///   void restore_state(core::StateReader& r) { r.get("time", time_); r.get("u", u_); }
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <vector>
+
+namespace hm::core {
+
+namespace detail {
+/// The type code stored with each value.
+template <class T>
+constexpr char state_kind() {
+  if constexpr (std::is_same_v<T, double>) return 'd';
+  else if constexpr (std::is_same_v<T, std::int64_t>) return 'l';
+  else if constexpr (std::is_same_v<T, int>) return 'i';
+  else if constexpr (std::is_same_v<T, char>) return 'c';
+  else static_assert(sizeof(T) == 0, "state archive: double, int, std::int64_t or char elements only");
+}
+}  // namespace detail
+
+/// Collects tagged values into a byte string (bytes(): the checkpoint file's content).
+class StateWriter {
+ public:
+  StateWriter();
+  void put(std::string_view tag, double value) { put_array(tag, &value, 1); }
+  void put(std::string_view tag, std::int64_t value) { put_array(tag, &value, 1); }
+  void put(std::string_view tag, int value) { put(tag, static_cast<std::int64_t>(value)); }
+  void put(std::string_view tag, bool value) { put(tag, static_cast<std::int64_t>(value)); }
+  void put(std::string_view tag, std::size_t value) { put(tag, static_cast<std::int64_t>(value)); }
+  void put(std::string_view tag, const std::string& value) { put_array(tag, value.data(), value.size()); }
+  void put(std::string_view tag, const std::vector<bool>& flags);
+  /// A contiguous vector of double, int, std::int64_t or char (std::vector, Eigen::VectorXd, VectorXi).
+  template <class Vector, class = decltype(std::declval<const Vector&>().data())>
+  void put(std::string_view tag, const Vector& v) {
+    put_array(tag, v.data(), static_cast<std::size_t>(v.size()));
+  }
+  /// An Eigen compressed sparse matrix: its size, pattern and values.
+  template <class Sparse>
+  void put_sparse(std::string_view tag, const Sparse& a);
+
+  /// The content with its checksum.
+  std::string bytes() const;
+
+ private:
+  template <class T>
+  void put_array(std::string_view tag, const T* data, std::size_t n);
+  void put_raw(std::string_view tag, char kind, std::size_t element_size, const void* data, std::size_t n);
+  std::string buffer_;
+};
+
+/// Reads what a StateWriter wrote. Every failure (a damaged file, a tag or type that differs, a size
+/// that differs from `expected`) throws hm::InputError naming `source` and the tag.
+class StateReader {
+ public:
+  /// Checks the header and the checksum of `bytes`.
+  StateReader(std::string bytes, std::string source);
+  void get(std::string_view tag, double& value) { get_array(tag, &value, 1); }
+  void get(std::string_view tag, std::int64_t& value) { get_array(tag, &value, 1); }
+  void get(std::string_view tag, int& value);
+  void get(std::string_view tag, bool& value);
+  void get(std::string_view tag, std::size_t& value);
+  void get(std::string_view tag, std::string& value);
+  void get(std::string_view tag, std::vector<bool>& flags);
+  /// A contiguous vector (std::vector or Eigen vector), resized to the stored count.
+  template <class Vector, class = decltype(std::declval<Vector&>().data())>
+  void get(std::string_view tag, Vector& v) {
+    using T = std::remove_cv_t<std::remove_pointer_t<decltype(v.data())>>;
+    v.resize(static_cast<decltype(v.size())>(next_count(tag, detail::state_kind<T>(), sizeof(T))));
+    get_array(tag, v.data(), static_cast<std::size_t>(v.size()));
+  }
+  template <class Sparse>
+  void get_sparse(std::string_view tag, Sparse& a);
+  /// True once every value has been read.
+  bool at_end() const { return position_ >= end_; }
+  const std::string& source() const { return source_; }
+
+ private:
+  template <class T>
+  void get_array(std::string_view tag, T* data, std::size_t n);
+  std::size_t next_count(std::string_view tag, char kind, std::size_t element_size) const;
+  void get_raw(std::string_view tag, char kind, std::size_t element_size, void* data, std::size_t n);
+  [[noreturn]] void fail(std::string_view tag, const std::string& why) const;
+  std::string bytes_, source_;
+  std::size_t position_ = 0, end_ = 0;
+};
+
+// ------------------------------------------------------------------------------------------------
+
+template <class T>
+void StateWriter::put_array(std::string_view tag, const T* data, std::size_t n) {
+  put_raw(tag, detail::state_kind<T>(), sizeof(T), data, n);
+}
+
+template <class T>
+void StateReader::get_array(std::string_view tag, T* data, std::size_t n) {
+  get_raw(tag, detail::state_kind<T>(), sizeof(T), data, n);
+}
+
+template <class Sparse>
+void StateWriter::put_sparse(std::string_view tag, const Sparse& a) {
+  const std::string t(tag);
+  put(t + ".rows", static_cast<std::int64_t>(a.rows()));
+  put(t + ".cols", static_cast<std::int64_t>(a.cols()));
+  put_array(t + ".outer", a.outerIndexPtr(), static_cast<std::size_t>(a.outerSize() + 1));
+  put_array(t + ".inner", a.innerIndexPtr(), static_cast<std::size_t>(a.nonZeros()));
+  put_array(t + ".values", a.valuePtr(), static_cast<std::size_t>(a.nonZeros()));
+}
+
+template <class Sparse>
+void StateReader::get_sparse(std::string_view tag, Sparse& a) {
+  const std::string t(tag);
+  std::int64_t rows = 0, cols = 0;
+  get(t + ".rows", rows);
+  get(t + ".cols", cols);
+  a.resize(static_cast<typename Sparse::Index>(rows), static_cast<typename Sparse::Index>(cols));
+  a.makeCompressed();
+  get_array(t + ".outer", a.outerIndexPtr(), static_cast<std::size_t>(a.outerSize() + 1));
+  const std::size_t nnz = next_count(t + ".inner", 'i', sizeof(int));
+  a.resizeNonZeros(static_cast<typename Sparse::Index>(nnz));
+  get_array(t + ".inner", a.innerIndexPtr(), nnz);
+  get_array(t + ".values", a.valuePtr(), nnz);
+}
+
+}  // namespace hm::core

@@ -1,0 +1,126 @@
+// See state_archive.hpp. Layout: a header line, then per value [u16 tag length][tag][kind][u64 count]
+// [count elements as their bytes], then the CRC-32 of everything before it (4 bytes).
+#include "hm/core/state_archive.hpp"
+
+#include <cstring>
+
+#include <boost/crc.hpp>
+
+#include "hm/core/input_error.hpp"
+
+namespace hm::core {
+
+namespace {
+
+constexpr std::string_view header = "hmlattice state, format 1\n";
+
+std::uint32_t crc32(const char* data, std::size_t n) {
+  boost::crc_32_type crc;
+  crc.process_bytes(data, n);
+  return crc.checksum();
+}
+
+template <class T>
+void append(std::string& out, T value) {
+  out.append(reinterpret_cast<const char*>(&value), sizeof value);
+}
+
+}  // namespace
+
+StateWriter::StateWriter() : buffer_(header) {}
+
+void StateWriter::put(std::string_view tag, const std::vector<bool>& flags) {
+  const std::string bytes(flags.begin(), flags.end());  // one char 0 or 1 per flag
+  put_array(tag, bytes.data(), bytes.size());
+}
+
+void StateWriter::put_raw(std::string_view tag, char kind, std::size_t element_size, const void* data, std::size_t n) {
+  append(buffer_, static_cast<std::uint16_t>(tag.size()));
+  buffer_.append(tag);
+  buffer_.push_back(kind);
+  append(buffer_, static_cast<std::uint64_t>(n));
+  if (n > 0) buffer_.append(static_cast<const char*>(data), n * element_size);
+}
+
+std::string StateWriter::bytes() const {
+  std::string out = buffer_;
+  append(out, crc32(buffer_.data(), buffer_.size()));
+  return out;
+}
+
+StateReader::StateReader(std::string bytes, std::string source) : bytes_(std::move(bytes)), source_(std::move(source)) {
+  if (bytes_.size() < header.size() + 4 || bytes_.compare(0, header.size(), header) != 0)
+    throw InputError(source_ + ": not a state file of this toolkit (or of another format version)");
+  end_ = bytes_.size() - 4;
+  std::uint32_t stored = 0;
+  std::memcpy(&stored, bytes_.data() + end_, sizeof stored);
+  if (stored != crc32(bytes_.data(), end_))
+    throw InputError(source_ + ": checksum mismatch (the file is truncated or damaged)");
+  position_ = header.size();
+}
+
+void StateReader::fail(std::string_view tag, const std::string& why) const {
+  throw InputError(source_ + ": at '" + std::string(tag) + "': " + why +
+                   " (written by another version of the toolkit, or damaged)");
+}
+
+std::size_t StateReader::next_count(std::string_view tag, char kind, std::size_t element_size) const {
+  std::size_t at = position_;
+  auto take = [&](void* out, std::size_t n) {
+    if (at + n > end_) fail(tag, "the file ends early");
+    std::memcpy(out, bytes_.data() + at, n);
+    at += n;
+  };
+  std::uint16_t length = 0;
+  take(&length, sizeof length);
+  std::string stored(length, '\0');
+  take(stored.data(), length);
+  if (stored != tag) fail(tag, "found '" + one_line(stored, 60) + "' instead");
+  char stored_kind = 0;
+  take(&stored_kind, 1);
+  if (stored_kind != kind) fail(tag, std::string("element type '") + stored_kind + "', expected '" + kind + "'");
+  std::uint64_t n = 0;
+  take(&n, sizeof n);
+  if (n > (end_ - at) / element_size) fail(tag, "the file ends early");
+  return static_cast<std::size_t>(n);
+}
+
+void StateReader::get_raw(std::string_view tag, char kind, std::size_t element_size, void* data, std::size_t n) {
+  const std::size_t stored = next_count(tag, kind, element_size);
+  if (stored != n) fail(tag, std::to_string(stored) + " values, expected " + std::to_string(n));
+  position_ += sizeof(std::uint16_t) + tag.size() + 1 + sizeof(std::uint64_t);
+  if (n > 0) std::memcpy(data, bytes_.data() + position_, n * element_size);
+  position_ += n * element_size;
+}
+
+void StateReader::get(std::string_view tag, int& value) {
+  std::int64_t v = 0;
+  get(tag, v);
+  value = static_cast<int>(v);
+}
+
+void StateReader::get(std::string_view tag, bool& value) {
+  std::int64_t v = 0;
+  get(tag, v);
+  value = v != 0;
+}
+
+void StateReader::get(std::string_view tag, std::size_t& value) {
+  std::int64_t v = 0;
+  get(tag, v);
+  value = static_cast<std::size_t>(v);
+}
+
+void StateReader::get(std::string_view tag, std::string& value) {
+  value.resize(next_count(tag, 'c', 1));
+  get_raw(tag, 'c', 1, value.data(), value.size());
+}
+
+void StateReader::get(std::string_view tag, std::vector<bool>& flags) {
+  std::string bytes;
+  get(tag, bytes);
+  flags.assign(bytes.size(), false);
+  for (std::size_t k = 0; k < bytes.size(); ++k) flags[k] = bytes[k] != 0;
+}
+
+}  // namespace hm::core

@@ -1,0 +1,119 @@
+// A run stopped and resumed from its checkpoint, once or several times, gives bitwise the files of
+// the run that was never stopped; a checkpoint of another case or a damaged one is refused.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "run_command.hpp"
+
+using hm::test::count_lines;
+using hm::test::run_hmlattice;
+using hm::test::slurp;
+using hm::test::TempDir;
+
+namespace {
+
+// The Fig. 12 quick case (N = 3000, fracture on) up to its first snapshot time: 27 steps, which break
+// 34 beams at step 1 and 443 by step 24, so the stops below fall in a pause of the fracturing, in its
+// middle and near its end, with contacts switching and the factor downdated in between.
+std::string fig12_to_first_snapshot() {
+  std::string text = slurp(std::filesystem::path(HM_SOURCE_DIR) / "cases/fig12_b0.2_quick.toml");
+  const auto replace = [&](const std::string& from, const std::string& to) {
+    const auto at = text.find(from);
+    REQUIRE(at != std::string::npos);
+    text.replace(at, from.size(), to);
+  };
+  replace("t_end = 0.0272", "t_end = 0.0045");
+  replace("times = [0.0045, 0.009, 0.0272]", "times = [0.002, 0.0045]");
+  return text;
+}
+
+// Every file a user compares: the step series, the break log, the radial profiles, the fracture tables,
+// the breakdown and the VTK snapshots.
+const std::vector<std::string> result_files = {"series.csv",         "breaks.csv",           "radial.csv",
+                                               "fractures.csv",      "fracture_summary.csv", "breakdown.csv",
+                                               "vtk/lattice.pvd",    "vtk/lattice_0000.vtu", "vtk/lattice_0001.vtu",
+                                               "vtk/lattice_0002.vtu"};
+
+}  // namespace
+
+TEST_CASE("Stopped at several steps and resumed, a run gives bitwise the files of an uninterrupted one",
+          "[case][cli]") {
+  TempDir dir("run-resume");
+  dir.write("case.toml", fig12_to_first_snapshot());
+  const auto whole = run_hmlattice("run case.toml --out whole", dir.path);
+  REQUIRE(whole.exit_code == 0);
+  REQUIRE(count_lines(slurp(dir.path / "whole/series.csv")) == 29);  // header, t = 0, 27 steps
+
+  // Stop after step 3 (34 beams broken), resume to step 12 (103), to 21 (426), then to the end (443).
+  auto r = run_hmlattice("run case.toml --out part --stop-after-steps 3", dir.path);
+  REQUIRE(r.exit_code == 0);
+  CHECK(count_lines(r.err) == 1);
+  CHECK_THAT(r.err, Catch::Contains("stopped after step 3") && Catch::Contains("--resume part"));
+  CHECK_THAT(slurp(dir.path / "part/status.toml"), Catch::Contains("checkpoint_step = 3\n"));
+  CHECK(count_lines(slurp(dir.path / "part/series.csv")) == 5);
+  for (const int stop : {12, 21}) {
+    r = run_hmlattice("run --resume part --stop-after-steps " + std::to_string(stop), dir.path);
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    CHECK_THAT(r.out, Catch::Contains("resumed at step"));
+    CHECK(count_lines(slurp(dir.path / "part/series.csv")) == stop + 2);
+    CHECK_THAT(slurp(dir.path / "part/.hmlattice"), Catch::Contains("complete = false"));
+  }
+  r = run_hmlattice("run --resume part", dir.path);
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  for (const auto& file : result_files) {
+    INFO(file);
+    CHECK(slurp(dir.path / "part" / file) == slurp(dir.path / "whole" / file));
+  }
+  // Complete now: the marker says so, the checkpoint and the status are gone, a further resume is refused.
+  CHECK_THAT(slurp(dir.path / "part/.hmlattice"), !Catch::Contains("complete = false"));
+  CHECK_FALSE(std::filesystem::exists(dir.path / "part/checkpoint.bin"));
+  CHECK_FALSE(std::filesystem::exists(dir.path / "part/status.toml"));
+  r = run_hmlattice("run --resume part", dir.path);
+  CHECK(r.exit_code == 2);
+  CHECK(count_lines(r.err) == 1);
+  CHECK_THAT(r.err, Catch::Contains("--resume") && Catch::Contains("holds a complete run"));
+}
+
+TEST_CASE("A checkpoint is refused, the folder untouched, when its case was edited or the file damaged",
+          "[case][cli]") {
+  TempDir dir("run-resume-refused");
+  dir.write("case.toml", fig12_to_first_snapshot());
+  REQUIRE(run_hmlattice("run case.toml --out part --stop-after-steps 2", dir.path).exit_code == 0);
+  const auto folder = dir.path / "part";
+  const std::string series = slurp(folder / "series.csv"), marker = slurp(folder / ".hmlattice");
+
+  // An edited config.toml is another case: bitwise continuation is impossible.
+  const std::string config = slurp(folder / "config.toml");
+  std::string edited = config;
+  edited.replace(edited.find("Q = 0.01"), 8, "Q = 0.02");
+  std::ofstream(folder / "config.toml") << edited;
+  auto r = run_hmlattice("run --resume part", dir.path);
+  CHECK(r.exit_code == 2);
+  CHECK(count_lines(r.err) == 1);
+  CHECK_THAT(r.err, Catch::Contains("checkpoint.bin") && Catch::Contains("another case"));
+  std::ofstream(folder / "config.toml") << config;
+
+  // A truncated checkpoint fails its checksum.
+  const std::string checkpoint = slurp(folder / "checkpoint.bin");
+  std::ofstream(folder / "checkpoint.bin", std::ios::binary) << checkpoint.substr(0, checkpoint.size() / 2);
+  r = run_hmlattice("run --resume part", dir.path);
+  CHECK(r.exit_code == 2);
+  CHECK(count_lines(r.err) == 1);
+  CHECK_THAT(r.err, Catch::Contains("checksum"));
+  // Nothing was changed by the refused attempts.
+  CHECK(slurp(folder / "series.csv") == series);
+  CHECK(slurp(folder / ".hmlattice") == marker);
+
+  // A folder that is not a stopped run, and --resume with a case file, are refused too.
+  r = run_hmlattice("run --resume case.toml", dir.path);
+  CHECK(r.exit_code == 2);
+  CHECK(count_lines(r.err) == 1);
+  r = run_hmlattice("run case.toml --resume part", dir.path);
+  CHECK(r.exit_code == 2);
+}

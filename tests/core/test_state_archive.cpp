@@ -1,0 +1,88 @@
+// The checkpoint archive: values come back as the same bits, and a file of other code or a damaged one
+// is refused naming the place, never misread.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "hm/core/input_error.hpp"
+#include "hm/core/state_archive.hpp"
+
+using hm::core::StateReader;
+using hm::core::StateWriter;
+
+namespace {
+
+std::uint64_t bits(double x) {
+  std::uint64_t b = 0;
+  std::memcpy(&b, &x, sizeof b);
+  return b;
+}
+
+}  // namespace
+
+TEST_CASE("The state archive gives back every value bitwise", "[core]") {
+  const double tiny = 5e-324, third = 1.0 / 3.0;
+  const std::vector<double> reals = {third, -0.0, tiny, NAN, INFINITY};
+  const std::vector<int> ints = {-7, 0, 2147483647};
+  const std::vector<bool> flags = {true, false, true};
+  StateWriter w;
+  w.put("third", third);
+  w.put("count", std::int64_t{-9007199254740993});
+  w.put("flag", true);
+  w.put("name", std::string("a\nb\0c", 5));
+  w.put("reals", reals);
+  w.put("ints", ints);
+  w.put("flags", flags);
+  w.put("empty", std::vector<double>{});
+
+  StateReader r(w.bytes(), "test");
+  double x = 0.0;
+  std::int64_t n = 0;
+  bool flag = false;
+  std::string name;
+  std::vector<double> reals_back;
+  std::vector<int> ints_back;
+  std::vector<bool> flags_back;
+  std::vector<double> empty = {1.0};
+  r.get("third", x);
+  r.get("count", n);
+  r.get("flag", flag);
+  r.get("name", name);
+  r.get("reals", reals_back);
+  r.get("ints", ints_back);
+  r.get("flags", flags_back);
+  r.get("empty", empty);
+  CHECK(bits(x) == bits(third));
+  CHECK(n == -9007199254740993);
+  CHECK(flag);
+  CHECK(name == std::string("a\nb\0c", 5));
+  REQUIRE(reals_back.size() == reals.size());
+  for (std::size_t k = 0; k < reals.size(); ++k) CHECK(bits(reals_back[k]) == bits(reals[k]));
+  CHECK(ints_back == ints);
+  CHECK(flags_back == flags);
+  CHECK(empty.empty());
+  CHECK(r.at_end());
+}
+
+TEST_CASE("The state archive refuses another tag, another type, a truncated or altered file", "[core]") {
+  StateWriter w;
+  w.put("time", 0.5);
+  w.put("steps", 3);
+  const std::string bytes = w.bytes();
+
+  double t = 0.0;
+  StateReader other_tag(bytes, "f");
+  CHECK_THROWS_WITH(other_tag.get("dt", t), Catch::Contains("f: at 'dt': found 'time' instead"));
+  StateReader other_type(bytes, "f");
+  int steps = 0;
+  CHECK_THROWS_WITH(other_type.get("time", steps), Catch::Contains("at 'time': element type"));
+  CHECK_THROWS_WITH(StateReader(bytes.substr(0, bytes.size() - 1), "f"), Catch::Contains("checksum"));
+  std::string altered = bytes;
+  altered[altered.size() / 2] ^= 1;
+  CHECK_THROWS_AS(StateReader(altered, "f"), hm::InputError);
+  CHECK_THROWS_WITH(StateReader("not a checkpoint", "f"), Catch::Contains("not a state file"));
+}
