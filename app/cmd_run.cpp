@@ -22,7 +22,6 @@
 #include "hm/core/file_output.hpp"
 #include "hm/core/input_error.hpp"
 #include "hm/core/interrupt.hpp"
-#include "hm/core/toml_text.hpp"
 #include "hm/core/validation.hpp"
 #include "hm/core/result_folder.hpp"
 #include "hm/lattice2d/mechanics/calibration.hpp"
@@ -45,22 +44,6 @@ int remaining_steps(double t, double dt, const lattice2d::TimeStepping& s) {
     t += dt;
   }
   return n;
-}
-
-// status.toml of a run that stopped before t_end: why, the last step it finished, how to run it again.
-void write_status(const std::filesystem::path& path, const std::string& why, int last_step, double t, double t_end,
-                  const std::filesystem::path& folder) {
-  core::write_file_atomically(path, [&](std::ostream& f) {
-    f << "# This run stopped before t_end. Every file here holds the steps up to last_step, complete;\n"
-      << "# nothing after it. Checkpoints are not written yet: a run is repeated from its config.toml.\n"
-      << "complete = false\n"
-      << "stopped = " << core::toml_string(why) << "\n"
-      << "last_step = " << last_step << "\n"
-      << "t_last = " << core::format_value(t) << "\n"
-      << "t_end = " << core::format_value(t_end) << "\n"
-      << "rerun = " << core::toml_string("hmlattice run " + (folder / "config.toml").string() + " --out <new folder>")
-      << "\n";
-  });
 }
 
 }  // namespace
@@ -144,7 +127,7 @@ void add_run_command(CLI::App& app, int& exit_code, const std::string& command_l
       const bool interrupted = run.status == lattice2d::CoupledStatus::interrupted;
       const std::string why = interrupted ? std::string("interrupted by ") + interrupt.signal_name()
                                           : "numerical failure: " + run.message;
-      write_status(out.path() / "status.toml", why, step - 1, model->time(), c.stepping.t_end, out.target());
+      core::write_stopped_status(out.path() / "status.toml", "run", why, step - 1, model->time(), c.stepping.t_end, out.target());
       out.commit(why);
       std::cerr << "hmlattice run: " << core::one_line(why, 300) << "; the " << step - 1 << " steps done (t = "
                 << model->time() << " of " << c.stepping.t_end << ") are in " << out.target().string()
