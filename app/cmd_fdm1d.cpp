@@ -4,6 +4,8 @@
 // case file and writes, into DIR (default out/<case name>):
 //   borehole.csv, profiles.csv, probes.csv, steady_state.csv  (see hm/case/fdm1d_output.hpp)
 //   config.toml                              the resolved case + provenance; rerunnable as a case
+// SIGINT or SIGTERM stops it after the current step: the steps done are kept, marked incomplete,
+// with status.toml (exit 130 or 143).
 // DIR must be new or empty, or an earlier result folder with --overwrite (hm/core/result_folder.hpp).
 // Example: hmlattice fdm1d cases/fig10_fdm1d_b0.5.toml --out out/fig10
 #include <cstdio>
@@ -11,6 +13,7 @@
 
 #include "commands.hpp"
 #include "hm/core/file_output.hpp"
+#include "hm/core/interrupt.hpp"
 #include "hm/core/result_folder.hpp"
 #include "hm/fdm1d/fdm1d.hpp"
 #include "hm/case/fdm1d_case.hpp"
@@ -39,26 +42,44 @@ void add_fdm1d_command(CLI::App& app, int& exit_code, const std::string& command
               << core::name_of(p.material.vol_strain) << "; n_r = " << c.numerics.n_r << ", t_end = " << c.numerics.t_end
               << "\n";
 
-    // 2. Run, with a progress line on long runs.
+    // 2. Run, with a progress line on long runs; every step is written as it is finished.
     cases::ProgressReporter progress(std::cout, "fdm1d");
-    const auto result = fdm1d::run_fdm1d(p, c.numerics, [&](double t, double t_end) { progress.update(t, t_end); });
+    cases::Fdm1dRecorder recorder(out.path(), c.numerics.probe_radii);
+    const core::InterruptRequest interrupt;  // Ctrl-C or SIGTERM: stop after the step, keep the results
+    const auto result = fdm1d::run_fdm1d(
+        p, c.numerics, [&](double t, double t_end) { progress.update(t, t_end); },
+        [&](const fdm1d::Fdm1dResult& so_far) { recorder.record(so_far); }, [&] { return interrupt.signal() != 0; });
     const auto& s = result.summary;
     char balance[32];
     std::snprintf(balance, sizeof balance, "%.2e", s.max_balance_error);
     progress.finish(std::to_string(s.n_steps) + " steps, " + std::to_string(s.n_factorisations) +
                     " factorisations, max volume-balance error " + balance);
-    if (!s.is_success()) {
+    const bool interrupted = s.status == fdm1d::Fdm1dSummary::Status::interrupted;
+    if (!s.is_success() && !interrupted) {
       std::cerr << "hmlattice fdm1d: numerical failure: " << s.message << "\n";
       // An overflow comes from the inputs: bad input (2); a singular matrix is the solver's (1).
       exit_code = s.status == fdm1d::Fdm1dSummary::Status::non_finite ? 2 : 1;
       return;
     }
 
-    // 3. Write the results and the resolved configuration together, or nothing.
-    cases::write_fdm1d_results(out.path(), result, p);
+    // 3. The resolved configuration beside the results, then everything appears at once. An
+    //    interrupted run keeps every step it finished, marked incomplete, with status.toml saying
+    //    where it stopped (the format of `hmlattice run`).
+    recorder.finish(p);
     core::write_file_atomically(out.path() / "config.toml", [&](std::ostream& f) {
       f << cases::fdm1d_case_to_toml(c, cases::to_toml(cases::make_provenance(command_line)));
     });
+    if (interrupted) {
+      const double t_last = result.borehole.back().t;
+      const std::string why = std::string("interrupted by ") + interrupt.signal_name();
+      core::write_stopped_status(out.path() / "status.toml", "fdm1d", why, s.n_steps, t_last, c.numerics.t_end,
+                                 out.target());
+      out.commit(why);
+      std::cerr << "hmlattice fdm1d: " << why << "; the " << s.n_steps << " steps done (t = " << t_last << " of "
+                << c.numerics.t_end << ") are in " << out.target().string() << ", marked incomplete (status.toml)\n";
+      exit_code = interrupt.exit_code();
+      return;
+    }
     out.commit();
     std::cout << "Results: " << out.target().string() << "/{borehole,profiles,probes,steady_state}.csv, config.toml\n";
   });

@@ -50,26 +50,6 @@ int remaining_steps(double t, double dt, const lattice2d::TimeStepping& s) {
   return n;
 }
 
-// status.toml of a run that stopped before t_end: why, the last step it finished, how to go on.
-void write_status(const std::filesystem::path& path, const std::string& why, int last_step, double t, double t_end,
-                  const std::filesystem::path& folder, int checkpoint_step, double checkpoint_t) {
-  core::write_file_atomically(path, [&](std::ostream& f) {
-    f << "# This run stopped before t_end. Every file here holds the steps up to last_step, complete;\n"
-      << "# nothing after it. `resume` continues it from its checkpoint (bitwise as if never stopped).\n"
-      << "complete = false\n"
-      << "stopped = " << core::toml_string(why) << "\n"
-      << "last_step = " << last_step << "\n"
-      << "t_last = " << core::format_value(t) << "\n"
-      << "t_end = " << core::format_value(t_end) << "\n";
-    if (checkpoint_step >= 0)
-      f << "checkpoint_step = " << checkpoint_step << "\n"
-        << "checkpoint_t = " << core::format_value(checkpoint_t) << "\n"
-        << "resume = " << core::toml_string("hmlattice run --resume " + folder.string()) << "\n";
-    f << "rerun = " << core::toml_string("hmlattice run " + (folder / "config.toml").string() + " --out <new folder>")
-      << "\n";
-  });
-}
-
 struct RunArgs {
   std::string case_file, out, resume;
   bool overwrite = false;
@@ -180,8 +160,8 @@ void run_case(const RunArgs& a, int& exit_code, const std::string& command_line)
     const std::string why = !interrupted                ? "numerical failure: " + run.message
                             : interrupt.signal() != 0 ? std::string("interrupted by ") + interrupt.signal_name()
                                                       : "stopped after step " + std::to_string(step) + " (--stop-after-steps)";
-    write_status(out->path() / "status.toml", why, step, model->time(), c.stepping.t_end, out->target(),
-                 checkpoint_step, checkpoint_t);
+    core::write_stopped_status(out->path() / "status.toml", "run", why, step, model->time(), c.stepping.t_end,
+                               out->target(), {checkpoint_step, checkpoint_t});
     out->commit(why);
     std::cerr << "hmlattice run: " << core::one_line(why, 300) << "; the " << step << " steps done (t = "
               << model->time() << " of " << c.stepping.t_end << ") are in " << out->target().string()

@@ -17,6 +17,7 @@
 #include "hm/core/file_output.hpp"
 #include "hm/core/input_error.hpp"
 #include "hm/core/toml_text.hpp"
+#include "hm/core/validation.hpp"
 
 namespace hm::core {
 
@@ -330,6 +331,26 @@ void ResultFolder::commit(const std::string& incomplete) {
   if (ec)
     std::cerr << "hmlattice: warning: the replaced result is left in " << quoted(aside) << " (" << ec.message()
               << ")\n";
+}
+
+void write_stopped_status(const fs::path& path, const std::string& command, const std::string& why, long last_step,
+                          double t_last, double t_end, const fs::path& folder, const StoppedCheckpoint& checkpoint) {
+  write_file_atomically(path, [&](std::ostream& f) {
+    f << "# This run stopped before t_end. Every file here holds the steps up to last_step, complete;\n"
+      << (checkpoint.step >= 0 ? "# nothing after it. `resume` continues it from its checkpoint (bitwise as if never stopped).\n"
+                               : "# nothing after it. No checkpoint: the run is repeated from its config.toml.\n")
+      << "complete = false\n"
+      << "stopped = " << toml_string(why) << "\n"
+      << "last_step = " << last_step << "\n"
+      << "t_last = " << format_value(t_last) << "\n"
+      << "t_end = " << format_value(t_end) << "\n";
+    if (checkpoint.step >= 0)
+      f << "checkpoint_step = " << checkpoint.step << "\n"
+        << "checkpoint_t = " << format_value(checkpoint.t) << "\n"
+        << "resume = " << toml_string("hmlattice " + command + " --resume " + folder.string()) << "\n";
+    f << "rerun = " << toml_string("hmlattice " + command + " " + (folder / "config.toml").string() + " --out <new folder>")
+      << "\n";
+  });
 }
 
 }  // namespace hm::core

@@ -74,7 +74,7 @@ Probe locate(double r, const RadialGrid& grid) {
 }  // namespace
 
 Fdm1dResult run_fdm1d(const an::DimensionlessParameters& params, const Fdm1dNumerics& numerics,
-                      const ProgressCallback& progress) {
+                      const ProgressCallback& progress, const StepObserver& observer, const StopPredicate& stop_request) {
   params.validate();
   if (!(params.R_i > 0.0))
     throw InputError("R_i = " + core::format_value(params.R_i) +
@@ -122,6 +122,7 @@ Fdm1dResult run_fdm1d(const an::DimensionlessParameters& params, const Fdm1dNume
     if (p_min < res.min_pressure.p) res.min_pressure = {p_min, grid.r(static_cast<int>(i_min)), t};
   };
   record(0.0);
+  if (observer) observer(res);
 
   auto stop = [&]() -> Fdm1dResult {
     res.summary.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -211,10 +212,16 @@ Fdm1dResult run_fdm1d(const an::DimensionlessParameters& params, const Fdm1dNume
       ++res.summary.n_steps;
       res.summary.max_balance_error = std::max(res.summary.max_balance_error, balance);
       record(balance);
+      if (!(t < target)) res.snapshots.push_back(detail::make_snapshot(u, p, grid, params, t));
+      if (observer) observer(res);
       if (progress) progress(t, numerics.t_end);
       dt_nominal = std::min(dt_nominal * numerics.dt_growth, numerics.dt_max);
+      if (stop_request && t < numerics.t_end && stop_request()) {
+        res.summary.status = Fdm1dSummary::Status::interrupted;
+        res.summary.message = "stopped on request at t = " + core::format_value(t);
+        return stop();
+      }
     }
-    res.snapshots.push_back(detail::make_snapshot(u, p, grid, params, t));
   }
 
   return stop();

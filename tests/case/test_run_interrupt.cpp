@@ -1,6 +1,7 @@
 // A run stopped by SIGINT or SIGTERM keeps every step it finished: the folder appears as --out,
-// marked incomplete, with status.toml, series.csv and breaks.csv up to the last step; the exit status
-// is the shell's for the signal (130, 143); one line on stderr says so.
+// marked incomplete, with status.toml, series.csv and breaks.csv (borehole.csv and probes.csv for
+// fdm1d) up to the last step; the exit status is the shell's for the signal (130, 143); one line on
+// stderr says so.
 #include <catch2/catch.hpp>
 
 #include <filesystem>
@@ -23,18 +24,26 @@ std::string long_case() {
   return text;
 }
 
-// Starts the run in the background, sends `signal` once the staged series.csv has 6 rows (t = 0 and
-// five steps, flushed as they finish), waits; returns the exit status.
-int run_and_signal(const TempDir& dir, const std::string& signal, const std::string& options = "") {
-  dir.write("case.toml", long_case());
-  dir.write("interrupt.sh",
-            "'" + std::string(HMLATTICE_EXE) + "' run case.toml --out run " + options + " > out.txt 2> err.txt & pid=$!\n"
+// A 1D case of 1e5 constant steps on a fine grid (minutes): the signal arrives in the middle.
+const char* long_fdm1d_case =
+    "model = \"fdm1d\"\n[physics]\nQ = 0.01\nb = 0.5\n"
+    "[numerics]\nn_r = 20000\ndt_initial = 1e-5\ndt_growth = 1.0\ndt_max = 1e-5\nt_end = 1.0\n[output]\ntimes = [1.0]\n";
+
+// Starts `command` (run or fdm1d) in the background, sends `signal` once the staged `rows_file` has 6
+// rows (t = 0 and five steps, flushed as they finish), waits; returns the exit status.
+int run_and_signal(const TempDir& dir, const std::string& signal, const std::string& command = "run",
+                   const std::string& case_text = long_case(), const std::string& rows_file = "series.csv") {
+  dir.write("case.toml", case_text);
+  std::string script = "'";  // appended step by step: GCC 12 warns falsely (-Wrestrict) on "'" + string
+  script += HMLATTICE_EXE;
+  script += "' " + command + " case.toml --out run > out.txt 2> err.txt & pid=$!\n"
             "for i in $(seq 1200); do\n"
-            "  n=$(cat .hmlattice-staging-*/series.csv 2>/dev/null | wc -l)\n"
+            "  n=$(cat .hmlattice-staging-*/" + rows_file + " 2>/dev/null | wc -l)\n"
             "  [ \"$n\" -ge 7 ] && break\n"
             "  sleep 0.05\n"
             "done\n"
-            "kill -" + signal + " $pid\nwait $pid\necho $? > rc.txt\n");
+            "kill -" + signal + " $pid\nwait $pid\necho $? > rc.txt\n";
+  dir.write("interrupt.sh", script);
   REQUIRE(std::system(("cd '" + dir.path.string() + "' && bash interrupt.sh").c_str()) == 0);
   return std::stoi(slurp(dir.path / "rc.txt"));
 }
@@ -75,9 +84,47 @@ TEST_CASE("An interrupted run keeps its finished steps in --out, marked incomple
   }
 }
 
+TEST_CASE("An interrupted fdm1d run keeps its finished steps in --out, marked incomplete", "[case][cli]") {
+  for (const auto& [signal, code] : {std::pair{"INT", 130}, std::pair{"TERM", 143}}) {
+    TempDir dir(std::string("fdm1d-interrupt-") + signal);
+    CHECK(run_and_signal(dir, signal, "fdm1d", long_fdm1d_case, "borehole.csv") == code);
+    const std::string err = slurp(dir.path / "err.txt");
+    INFO(err);
+    CHECK(count_lines(err) == 1);
+    CHECK_THAT(err, Catch::StartsWith(std::string("hmlattice fdm1d: interrupted by SIG") + signal) &&
+                        Catch::Contains("marked incomplete (status.toml)"));
+    const auto run = dir.path / "run";
+    REQUIRE(std::filesystem::is_directory(run));
+    for (const auto& entry : std::filesystem::directory_iterator(dir.path))
+      CHECK(entry.path().filename().string().rfind(".hmlattice-staging-", 0) != 0);
+    const std::string status = slurp(run / "status.toml");
+    CHECK_THAT(status, Catch::Contains("complete = false\n") &&
+                           Catch::Contains(std::string("stopped = \"interrupted by SIG") + signal + "\"\n") &&
+                           Catch::Contains("t_end = 1\n") &&
+                           Catch::Contains("rerun = \"hmlattice fdm1d run/config.toml --out <new folder>\"\n"));
+    CHECK_THAT(slurp(run / ".hmlattice"), Catch::Contains("complete = false"));
+    // borehole.csv and probes.csv: the header, t = 0 and every finished step, as status.toml says.
+    const std::string borehole = slurp(run / "borehole.csv");
+    const int rows = count_lines(borehole);
+    CHECK(rows >= 7);
+    CHECK_THAT(status, Catch::Contains("last_step = " + std::to_string(rows - 2) + "\n"));
+    CHECK(count_lines(slurp(run / "probes.csv")) == rows);
+    // t_last is the time of the last row: rows - 2 steps of 1e-5.
+    const std::string last_row = borehole.substr(borehole.rfind('\n', borehole.size() - 2) + 1);
+    CHECK(std::stod(last_row) == Approx((rows - 2) * 1e-5).epsilon(1e-9));
+    const auto t_last = status.find("t_last = ");
+    REQUIRE(t_last != std::string::npos);
+    CHECK(std::stod(status.substr(t_last + 9)) == Approx(std::stod(last_row)).epsilon(1e-9));
+    // No output time was reached: profiles.csv is its header; the steady state is there in full.
+    CHECK(count_lines(slurp(run / "profiles.csv")) == 1);
+    CHECK(count_lines(slurp(run / "steady_state.csv")) == 20002);
+    CHECK(std::filesystem::exists(run / "config.toml"));
+  }
+}
+
 TEST_CASE("A killed run's staging folder is reported by the next run beside it, kept, and resumable", "[case][cli]") {
   TempDir dir("run-killed");
-  CHECK(run_and_signal(dir, "KILL", "--checkpoint-every 0") == 128 + 9);
+  CHECK(run_and_signal(dir, "KILL", "run --checkpoint-every 0") == 128 + 9);
   std::filesystem::path staging;
   for (const auto& entry : std::filesystem::directory_iterator(dir.path))
     if (entry.path().filename().string().rfind(".hmlattice-staging-", 0) == 0) staging = entry.path();
@@ -86,7 +133,7 @@ TEST_CASE("A killed run's staging folder is reported by the next run beside it, 
   const auto r = hm::test::run_hmlattice("fdm1d small.toml --out other", dir.path);
   CHECK(r.exit_code == 0);
   CHECK(count_lines(r.err) == 1);
-  CHECK_THAT(r.err, Catch::Contains(staging.filename().string()) && Catch::Contains("run case.toml --out run") &&
+  CHECK_THAT(r.err, Catch::Contains(staging.filename().string()) && Catch::Contains("case.toml --out run") &&
                         Catch::Contains("kept") && Catch::Contains("--resume"));
   CHECK(std::filesystem::exists(staging / "series.csv"));
   // With a checkpoint every step, it continues from the last one the kill left complete (the steps

@@ -149,6 +149,62 @@ TEST_CASE("The progress callback sees every step and ends at t_end", "[fdm1d]") 
   CHECK(last == 0.05);
 }
 
+TEST_CASE("The step observer sees t = 0 and every step, each snapshot as its step lands", "[fdm1d]") {
+  Fdm1dNumerics n;
+  n.n_r = 20;
+  n.t_end = 0.05;
+  n.output_times = {0.01};
+  std::vector<std::size_t> samples, snapshots;
+  const auto prm = hm::analytic::table1_borehole(0.5);
+  const Fdm1dResult res = run_fdm1d(prm, n, {}, [&](const Fdm1dResult& so_far) {
+    samples.push_back(so_far.borehole.size());
+    snapshots.push_back(so_far.snapshots.size());
+    // A snapshot is seen with the step that reached its time.
+    if (!so_far.snapshots.empty()) CHECK(so_far.snapshots.back().t <= so_far.borehole.back().t);
+    if (so_far.borehole.back().t == 0.01) CHECK(so_far.snapshots.size() == 1);
+  });
+  REQUIRE(samples.size() == static_cast<std::size_t>(res.summary.n_steps) + 1);
+  for (std::size_t k = 0; k < samples.size(); ++k) CHECK(samples[k] == k + 1);
+  CHECK(snapshots.front() == 0);
+  CHECK(snapshots.back() == 2);
+  // Observing changes nothing: the same run without an observer, bit for bit.
+  const Fdm1dResult plain = run_fdm1d(prm, n);
+  CHECK(plain.summary.n_steps == res.summary.n_steps);
+  CHECK(plain.snapshots.back().p == res.snapshots.back().p);
+}
+
+TEST_CASE("A stop request ends the run after the step it came in, keeping the steps done", "[fdm1d]") {
+  Fdm1dNumerics n;
+  n.n_r = 20;
+  n.t_end = 0.05;
+  n.output_times = {0.01};
+  const auto prm = hm::analytic::table1_borehole(0.5);
+  int asked = 0;
+  const Fdm1dResult res = run_fdm1d(prm, n, {}, {}, [&] { return ++asked == 5; });
+  CHECK(res.summary.status == hm::fdm1d::Fdm1dSummary::Status::interrupted);
+  CHECK_FALSE(res.summary.is_success());
+  CHECK(asked == 5);
+  CHECK(res.summary.n_steps == 5);
+  REQUIRE(res.borehole.size() == 6);  // t = 0 and the five steps
+  CHECK(res.probe_p.size() == 6);
+  CHECK(res.snapshots.empty());  // 0.01 is not reached in five steps from dt = 1e-5
+  CHECK_THAT(res.summary.message, Catch::StartsWith("stopped on request at t = "));
+  // The steps done are those of the whole run.
+  const Fdm1dResult whole = run_fdm1d(prm, n);
+  CHECK(res.borehole.back().t == whole.borehole[5].t);
+  CHECK(res.borehole.back().p_h == whole.borehole[5].p_h);
+  const Fdm1dResult first = run_fdm1d(prm, n, {}, {}, [] { return true; });
+  CHECK(first.summary.status == hm::fdm1d::Fdm1dSummary::Status::interrupted);
+  CHECK(first.summary.n_steps == 1);
+  // A request that comes with the step reaching t_end does not make a complete run incomplete.
+  n.t_end = n.dt_initial;
+  n.output_times = {};
+  const Fdm1dResult last = run_fdm1d(prm, n, {}, {}, [] { return true; });
+  CHECK(last.summary.is_success());
+  CHECK(last.summary.n_steps == 1);
+  CHECK(last.snapshots.size() == 1);
+}
+
 TEST_CASE("The steady state matches Appendix B at second order in dr", "[fdm1d]") {
   // Discrete steady state: p is the finite-volume solution of B1 whatever b and vol_strain are; u
   // and the stresses follow from p through the mechanics rows. The grid is uniform, so the error

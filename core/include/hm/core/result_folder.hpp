@@ -41,6 +41,20 @@ ResultTarget inspect_result_target(const std::filesystem::path& target, const st
 /// True if `folder` holds the toolkit's marker file (a regular file whose first line is the marker's).
 bool is_result_folder(const std::filesystem::path& folder);
 
+/// The checkpoint a stopped run can be resumed from (step < 0: none).
+struct StoppedCheckpoint {
+  long step = -1;
+  double t = 0.0;
+};
+
+/// Writes `path` (a result folder's status.toml) for a run that stopped before t_end: why, the last
+/// step it finished, its time, the checkpoint it resumes from (`hmlattice <command> --resume
+/// <folder>`) if any, and how to repeat it (`hmlattice <command> <folder>/config.toml`). The format is
+/// the same for every command that runs in time steps.
+void write_stopped_status(const std::filesystem::path& path, const std::string& command, const std::string& why,
+                          long last_step, double t_last, double t_end, const std::filesystem::path& folder,
+                          const StoppedCheckpoint& checkpoint = {});
+
 /// A result folder being written. Construct it before computing anything: bad targets and unwritable
 /// parents are reported (hm::InputError) before the work starts.
 class ResultFolder {

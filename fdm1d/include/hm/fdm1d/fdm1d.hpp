@@ -77,7 +77,9 @@ struct PressureMinimum {
 /// Outcome of a run: numerical trouble is reported here, never thrown.
 struct Fdm1dSummary {
   /// non_finite: the solution overflowed (inputs beyond double precision, e.g. Q = 1e308).
-  enum class Status { success, singular_matrix, non_finite };
+  /// interrupted: stopped between two steps because the stop predicate said so (the result holds
+  /// every step up to then).
+  enum class Status { success, singular_matrix, non_finite, interrupted };
   Status status = Status::success;
   std::string message;             ///< human-readable; empty on success
   long n_steps = 0;                ///< time steps taken
@@ -99,11 +101,18 @@ struct Fdm1dResult {
 
 /// Called after every step with the current time and t_end (e.g. for a progress bar).
 using ProgressCallback = std::function<void(double t, double t_end)>;
+/// Called with the result so far after t = 0 is recorded and after every accepted step (its new
+/// borehole and probe row, and its snapshot if the step landed on an output time): to write as it goes.
+using StepObserver = std::function<void(const Fdm1dResult& so_far)>;
+/// Asked after every accepted step (and its observer); true stops the run there (status interrupted),
+/// unless that step reached t_end.
+using StopPredicate = std::function<bool()>;
 
 /// Runs the Appendix A model from p = u = 0 at t = 0 to numerics.t_end.
 /// Validates both inputs first (throws hm::InputError, also for R_i = 0). Cost: one banded sparse
 /// solve of 2(n_r + 1) unknowns per step.
 Fdm1dResult run_fdm1d(const hm::analytic::DimensionlessParameters& params,
-                      const Fdm1dNumerics& numerics, const ProgressCallback& progress = {});
+                      const Fdm1dNumerics& numerics, const ProgressCallback& progress = {},
+                      const StepObserver& observer = {}, const StopPredicate& stop = {});
 
 }  // namespace hm::fdm1d
