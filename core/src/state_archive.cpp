@@ -111,6 +111,12 @@ void StateReader::get(std::string_view tag, std::size_t& value) {
   value = static_cast<std::size_t>(v);
 }
 
+void StateReader::get(std::string_view tag, long long& value) {
+  std::int64_t v = 0;
+  get(tag, v);
+  value = v;
+}
+
 void StateReader::get(std::string_view tag, std::string& value) {
   value.resize(next_count(tag, 'c', 1));
   get_raw(tag, 'c', 1, value.data(), value.size());

@@ -379,38 +379,25 @@ std::vector<BreakEvent> restore_break_log(core::StateReader& r) {
   return log;
 }
 
-void save_totals(core::StateWriter& w, const CoupledRunSummary& t) {
-  w.put("run.counts", std::vector<std::int64_t>{t.n_steps, t.total_iterations, t.n_step_halvings, t.n_mechanics_solves,
-                                                t.n_contact_changes, t.n_mechanics_factorizations,
-                                                t.n_mechanics_update_failures});
-  w.put("run.reals", std::vector<double>{t.time, t.seconds, t.max_balance_error, t.step_seconds, t.mechanics_seconds,
-                                         t.stress_seconds, t.break_seconds, t.geometry_seconds, t.flow_seconds});
-}
-
-CoupledRunSummary restore_totals(core::StateReader& r) {
-  std::vector<std::int64_t> n;
-  std::vector<double> x;
-  r.get("run.counts", n);
-  r.get("run.reals", x);
-  if (n.size() != 7 || x.size() != 9) throw InputError(r.source() + ": at 'run': inconsistent sizes");
-  CoupledRunSummary t;
-  t.n_steps = static_cast<int>(n[0]);
-  t.total_iterations = static_cast<int>(n[1]);
-  t.n_step_halvings = static_cast<int>(n[2]);
-  t.n_mechanics_solves = n[3];
-  t.n_contact_changes = n[4];
-  t.n_mechanics_factorizations = n[5];
-  t.n_mechanics_update_failures = n[6];
-  t.time = x[0];
-  t.seconds = x[1];
-  t.max_balance_error = x[2];
-  t.step_seconds = x[3];
-  t.mechanics_seconds = x[4];
-  t.stress_seconds = x[5];
-  t.break_seconds = x[6];
-  t.geometry_seconds = x[7];
-  t.flow_seconds = x[8];
-  return t;
+// The run's counters, saved or restored (Archive: core::StateWriter with const totals, or StateReader).
+template <class Archive, class Totals>
+void transfer_totals(Archive& a, Totals& t) {
+  a.io("run.n_steps", t.n_steps);
+  a.io("run.total_iterations", t.total_iterations);
+  a.io("run.n_step_halvings", t.n_step_halvings);
+  a.io("run.time", t.time);
+  a.io("run.seconds", t.seconds);
+  a.io("run.max_balance_error", t.max_balance_error);
+  a.io("run.step_seconds", t.step_seconds);
+  a.io("run.mechanics_seconds", t.mechanics_seconds);
+  a.io("run.stress_seconds", t.stress_seconds);
+  a.io("run.break_seconds", t.break_seconds);
+  a.io("run.geometry_seconds", t.geometry_seconds);
+  a.io("run.flow_seconds", t.flow_seconds);
+  a.io("run.n_mechanics_solves", t.n_mechanics_solves);
+  a.io("run.n_contact_changes", t.n_contact_changes);
+  a.io("run.n_mechanics_factorizations", t.n_mechanics_factorizations);
+  a.io("run.n_mechanics_update_failures", t.n_mechanics_update_failures);
 }
 
 }  // namespace
@@ -433,7 +420,7 @@ void CoupledModel::save_state(core::StateWriter& w) const {
   w.put("cursor.started", cursor_.started);
   w.put("cursor.next_output", cursor_.next_output);
   w.put("cursor.dt_nominal", cursor_.dt_nominal);
-  save_totals(w, cursor_.totals);
+  transfer_totals(w, cursor_.totals);
 }
 
 void CoupledModel::restore_state(core::StateReader& r) {
@@ -462,7 +449,7 @@ void CoupledModel::restore_state(core::StateReader& r) {
   r.get("cursor.started", cursor_.started);
   r.get("cursor.next_output", cursor_.next_output);
   r.get("cursor.dt_nominal", cursor_.dt_nominal);
-  cursor_.totals = restore_totals(r);
+  transfer_totals(r, cursor_.totals);
   // The accepted geometry is a function of the accepted displacement (finish_step's dual graph).
   current_dual_ = cursor_.totals.n_steps == 0 ? reference_dual_
                                               : build_dual_graph(lattice(), positions(displacement_), reference_dual_.options);

@@ -218,30 +218,18 @@ bool CholmodSolver::analyse(const Matrix& A) {
 
 namespace {
 
-void save_report(core::StateWriter& w, const SpdSolveReport& r) {
-  w.put("report.info", static_cast<int>(r.info));
-  w.put("report.relative_residual", r.relative_residual);
-  w.put("report.iterations", r.iterations);
-  w.put("report.refactorized", r.refactorized);
-  w.put("report.n_factorizations", r.n_factorizations);
-  w.put("report.n_modifications", r.n_modifications);
-  w.put("report.n_update_failures", r.n_update_failures);
-  w.put("report.last_update_failure", r.last_update_failure);
-  w.put("report.message", r.message);
-}
-
-void restore_report(core::StateReader& r, SpdSolveReport& report) {
-  int info = 0;
-  r.get("report.info", info);
-  report.info = static_cast<Eigen::ComputationInfo>(info);
-  r.get("report.relative_residual", report.relative_residual);
-  r.get("report.iterations", report.iterations);
-  r.get("report.refactorized", report.refactorized);
-  r.get("report.n_factorizations", report.n_factorizations);
-  r.get("report.n_modifications", report.n_modifications);
-  r.get("report.n_update_failures", report.n_update_failures);
-  r.get("report.last_update_failure", report.last_update_failure);
-  r.get("report.message", report.message);
+// The report's fields, saved or restored (Archive: core::StateWriter with a const report, or StateReader).
+template <class Archive, class Report>
+void transfer_report(Archive& a, Report& r) {
+  a.io("report.info", r.info);
+  a.io("report.relative_residual", r.relative_residual);
+  a.io("report.iterations", r.iterations);
+  a.io("report.refactorized", r.refactorized);
+  a.io("report.n_factorizations", r.n_factorizations);
+  a.io("report.n_modifications", r.n_modifications);
+  a.io("report.n_update_failures", r.n_update_failures);
+  a.io("report.last_update_failure", r.last_update_failure);
+  a.io("report.message", r.message);
 }
 
 template <class T>
@@ -259,7 +247,7 @@ void copy_into(void* data, const std::vector<T>& v) {
 
 void CholmodSolver::save_state(core::StateWriter& w) const {
   w.put_sparse("cholmod.matrix", matrix_);
-  save_report(w, report_);
+  transfer_report(w, report_);
   w.put("cholmod.analysed_outer", impl_->analysed_outer);
   w.put("cholmod.analysed_inner", impl_->analysed_inner);
   w.put("cholmod.factor_ok", impl_->factor_ok);
@@ -293,7 +281,7 @@ void CholmodSolver::save_state(core::StateWriter& w) const {
 
 void CholmodSolver::restore_state(core::StateReader& r) {
   r.get_sparse("cholmod.matrix", matrix_);
-  restore_report(r, report_);
+  transfer_report(r, report_);
   r.get("cholmod.analysed_outer", impl_->analysed_outer);
   r.get("cholmod.analysed_inner", impl_->analysed_inner);
   bool factor_ok = false, has_factor = false, has_forward = false;
@@ -632,14 +620,14 @@ void PcgSolver::modify(const Matrix& W, int sigma) {
 
 void PcgSolver::save_state(core::StateWriter& w) const {
   w.put_sparse("pcg.matrix", matrix_);
-  save_report(w, report_);
+  transfer_report(w, report_);
   w.put("pcg.previous", previous_);
   w.put("pcg.stale", stale_);
 }
 
 void PcgSolver::restore_state(core::StateReader& r) {
   r.get_sparse("pcg.matrix", matrix_);
-  restore_report(r, report_);
+  transfer_report(r, report_);
   r.get("pcg.previous", previous_);
   r.get("pcg.stale", stale_);
   if (!stale_) {  // the preconditioner is a function of the matrix: rebuild it without counting

@@ -7,9 +7,13 @@
 /// are stored as their bytes: a restored value is the same bits. A CRC-32 over everything refuses a
 /// truncated or damaged file. Not a portable format: the same build reads what it wrote.
 ///
-/// Usage, one function pair per class (the same calls in both):
-///   void save_state(core::StateWriter& w) const { w.put("time", time_); w.put("u", u_); }
-///   void restore_state(core::StateReader& r) { r.get("time", time_); r.get("u", u_); }
+/// Usage: both have io(tag, value), so one template lists a class's state for saving and restoring:
+///   template <class Archive, class Self> static void transfer(Archive& a, Self& s) {
+///     a.io("time", s.time_);
+///     a.io("u", s.u_);
+///   }
+///   void save_state(core::StateWriter& w) const { transfer(w, *this); }
+///   void restore_state(core::StateReader& r) { transfer(r, *this); }
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -40,6 +44,7 @@ class StateWriter {
   void put(std::string_view tag, int value) { put(tag, static_cast<std::int64_t>(value)); }
   void put(std::string_view tag, bool value) { put(tag, static_cast<std::int64_t>(value)); }
   void put(std::string_view tag, std::size_t value) { put(tag, static_cast<std::int64_t>(value)); }
+  void put(std::string_view tag, long long value) { put(tag, static_cast<std::int64_t>(value)); }
   void put(std::string_view tag, const std::string& value) { put_array(tag, value.data(), value.size()); }
   void put(std::string_view tag, const std::vector<bool>& flags);
   /// A contiguous vector of double, int, std::int64_t or char (std::vector, Eigen::VectorXd, VectorXi).
@@ -47,9 +52,19 @@ class StateWriter {
   void put(std::string_view tag, const Vector& v) {
     put_array(tag, v.data(), static_cast<std::size_t>(v.size()));
   }
+  /// An enumeration, as its underlying integer.
+  template <class Enum, std::enable_if_t<std::is_enum_v<Enum>, int> = 0>
+  void put(std::string_view tag, Enum value) {
+    put(tag, static_cast<std::int64_t>(value));
+  }
   /// An Eigen compressed sparse matrix: its size, pattern and values.
   template <class Sparse>
   void put_sparse(std::string_view tag, const Sparse& a);
+  /// put, under the name StateReader::io has for get (one transfer function for both).
+  template <class T>
+  void io(std::string_view tag, const T& value) {
+    put(tag, value);
+  }
 
   /// The content with its checksum.
   std::string bytes() const;
@@ -72,6 +87,7 @@ class StateReader {
   void get(std::string_view tag, int& value);
   void get(std::string_view tag, bool& value);
   void get(std::string_view tag, std::size_t& value);
+  void get(std::string_view tag, long long& value);
   void get(std::string_view tag, std::string& value);
   void get(std::string_view tag, std::vector<bool>& flags);
   /// A contiguous vector (std::vector or Eigen vector), resized to the stored count.
@@ -81,8 +97,18 @@ class StateReader {
     v.resize(static_cast<decltype(v.size())>(next_count(tag, detail::state_kind<T>(), sizeof(T))));
     get_array(tag, v.data(), static_cast<std::size_t>(v.size()));
   }
+  template <class Enum, std::enable_if_t<std::is_enum_v<Enum>, int> = 0>
+  void get(std::string_view tag, Enum& value) {
+    std::int64_t v = 0;
+    get(tag, v);
+    value = static_cast<Enum>(v);
+  }
   template <class Sparse>
   void get_sparse(std::string_view tag, Sparse& a);
+  template <class T>
+  void io(std::string_view tag, T& value) {
+    get(tag, value);
+  }
   /// True once every value has been read.
   bool at_end() const { return position_ >= end_; }
   const std::string& source() const { return source_; }
