@@ -54,3 +54,28 @@ TEST_CASE("config.toml records the BLAS and OpenMP in effect, OpenBLAS on one th
   REQUIRE(run_hmlattice("run run/config.toml --out run2", dir.path).exit_code == 0);
   CHECK(slurp(dir.path / "run" / "series.csv") == slurp(dir.path / "run2" / "series.csv"));
 }
+
+TEST_CASE("A case path and result folder holding a newline, quotes, a backslash and a non-UTF-8 byte give a "
+          "config.toml that reads back",
+          "[case][cli]") {
+  TempDir dir("provenance-path");
+  // Passed to the shell inside single quotes, where every byte but ' is literal.
+  const std::string name = std::string("odd\nname \"q\" back\\slash ") + "\xff" + "end";
+  dir.write(name + ".toml", tiny_case);
+  const auto r = run_hmlattice("run '" + name + ".toml' --out '" + name + "'", dir.path);
+  INFO("stderr: " << r.err);
+  REQUIRE(r.exit_code == 0);
+  const std::filesystem::path folder = dir.path / name;
+  REQUIRE(std::filesystem::exists(folder / "config.toml"));
+  const hm::cases::RunCase c = hm::cases::read_run_case(folder / "config.toml");
+  CHECK(c.lattice.n_particles == 600);
+  const toml::value config = toml::parse((folder / "config.toml").string());
+  const std::string command_line = toml::find<std::string>(config, "provenance", "command_line");
+  // Newline, quotes and backslash come back as they were; the byte that is no UTF-8 as U+FFFD.
+  CHECK_THAT(command_line, Catch::Contains("odd\nname \"q\" back\\slash \xEF\xBF\xBD" "end.toml"));
+  // The result marker holds the same command line and reads back too.
+  CHECK_NOTHROW(toml::parse((folder / ".hmlattice").string()));
+  // The folder reruns from its config.toml.
+  REQUIRE(run_hmlattice("run '" + name + "/config.toml' --out again", dir.path).exit_code == 0);
+  CHECK(slurp(folder / "series.csv") == slurp(dir.path / "again" / "series.csv"));
+}
