@@ -79,3 +79,43 @@ TEST_CASE("A case path and result folder holding a newline, quotes, a backslash 
   REQUIRE(run_hmlattice("run '" + name + "/config.toml' --out again", dir.path).exit_code == 0);
   CHECK(slurp(folder / "series.csv") == slurp(dir.path / "again" / "series.csv"));
 }
+
+TEST_CASE("An SI case rerun from its config.toml keeps its SI inputs and scales, and gives the same numbers",
+          "[case][cli]") {
+  TempDir dir("provenance-si");
+  // Table 1 with k = 1e-14 m^2 and q = 1e-2 m^2/s: Q = mu q/(k E) = 0.1 (test_run_case.cpp).
+  dir.write("si.toml",
+            "model = \"lattice2d\"\n[physics_si]\nE = 1e10\nnu = 0.25\nk = 1e-14\nmu = 1e-3\nq = 1e-2\nR = 2\n"
+            "R_i = 0\nb = 0.5\n[lattice]\nn_particles = 600\n[numerics]\ndt_initial = 5e-6\nt_end = 1e-5\n"
+            "[output]\nradial_bins = 5\nvtk = false\n");
+  REQUIRE(run_hmlattice("run si.toml --out a", dir.path).exit_code == 0);
+  REQUIRE(run_hmlattice("run a/config.toml --out b", dir.path).exit_code == 0);
+  REQUIRE(run_hmlattice("run b/config.toml --out c", dir.path).exit_code == 0);
+  const std::string first = slurp(dir.path / "a" / "config.toml"), second = slurp(dir.path / "b" / "config.toml"),
+                    third = slurp(dir.path / "c" / "config.toml");
+  const std::string si = table_text(first, "physics_si");
+  REQUIRE_FALSE(si.empty());
+  CHECK_THAT(si, Catch::Contains("\nR = 2\n") && Catch::Contains("\nq = 0.01\n"));
+  // The scales back to SI: t_s = mu R^2/(k E) = 1e-3 * 4 / (1e-14 * 1e10) = 40 s.
+  CHECK_THAT(si, Catch::Contains("time x 40 s"));
+  CHECK(table_text(second, "physics_si") == si);
+  CHECK(table_text(third, "physics_si") == si);
+  CHECK(toml::find(toml::parse((dir.path / "b" / "config.toml").string()), "physics_si") ==
+        toml::find(toml::parse((dir.path / "a" / "config.toml").string()), "physics_si"));
+  // The same dimensionless run: the SI inputs convert to the same doubles every time.
+  CHECK(slurp(dir.path / "a" / "series.csv") == slurp(dir.path / "b" / "series.csv"));
+  CHECK(slurp(dir.path / "a" / "radial.csv") == slurp(dir.path / "c" / "radial.csv"));
+
+  // The 1D model's config.toml the same way (cases/fdm1d_sandstone_si.toml, shortened).
+  std::string sandstone = slurp(std::string(HM_SOURCE_DIR) + "/cases/fdm1d_sandstone_si.toml");
+  sandstone = sandstone.substr(0, sandstone.find("[numerics]")) +
+              "[numerics]\nn_r = 40\nt_end = 0.01\n[output]\ntimes = [0.01]\nprobes = [0.5]\n";
+  dir.write("sandstone.toml", sandstone);
+  REQUIRE(run_hmlattice("fdm1d sandstone.toml --out d", dir.path).exit_code == 0);
+  REQUIRE(run_hmlattice("fdm1d d/config.toml --out e", dir.path).exit_code == 0);
+  const std::string d = slurp(dir.path / "d" / "config.toml"), e = slurp(dir.path / "e" / "config.toml");
+  REQUIRE_FALSE(table_text(d, "physics_si").empty());
+  CHECK_THAT(table_text(d, "physics_si"), Catch::Contains("time x 10 s"));
+  CHECK(table_text(e, "physics_si") == table_text(d, "physics_si"));
+  CHECK(slurp(dir.path / "d" / "profiles.csv") == slurp(dir.path / "e" / "profiles.csv"));
+}
