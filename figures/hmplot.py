@@ -151,7 +151,8 @@ def read_csv(path):
 
 
 def run_physics(folder, key):
-    """[physics] <key> of a run folder's config.toml (as `hmlattice run` writes it), or None."""
+    """[physics] <key> of a run folder's config.toml (as `hmlattice run` writes it), or None (also for
+    a [physics_si] case, whose config.toml keeps [physics_si] and has the dimensionless values as comments)."""
     path = os.path.join(folder, "config.toml")
     if not os.path.exists(path):
         return None

@@ -235,16 +235,24 @@ std::string physics_to_toml(const CasePhysics& c) {
   std::ostringstream os;
   auto v = [](double x) { return format_value(x); };
   // Only the table's lines: the blank line that ends a table comes after the comments below.
-  const std::string table = physics_keys().to_toml(d);
-  os << table.substr(0, table.size() - 1);
-  // The physical inputs and scales are comments, so this file is itself a runnable case.
+  const auto table_lines = [](const std::string& table) { return table.substr(0, table.size() - 1); };
   if (c.physical) {
-    const auto& p = *c.physical;
-    os << "# converted from [physics_si]: E = " << v(p.E_si) << " Pa, nu = " << v(p.nu) << ", k = " << v(p.k_si)
-       << " m^2, k_f = " << v(p.k_f_si) << " m^2, mu = " << v(p.mu_si) << " Pa s, q = " << v(p.q_si)
-       << " m^2/s, R = " << v(p.R_si) << " m, R_i = " << v(p.R_i_si) << " m, porosity = " << v(p.porosity)
-       << ", K_w = " << v(p.K_w_si) << " Pa, b = " << v(p.b) << ", T_u = " << v(p.T_u_si) << " Pa, C_u = "
-       << v(p.C_u_si) << " Pa, mu_i = " << v(p.mu_i) << "\n";
+    // An SI case stays one: its resolved [physics_si] is what a rerun reads (the same inputs convert
+    // to the same doubles, shortest round-trip printing), so every rerun's config.toml keeps the SI
+    // inputs and scales. The dimensionless values the run used are comments.
+    PhysicsSi si;
+    si.p = *c.physical;
+    si.vol_strain = d.material.vol_strain;
+    os << table_lines(physics_si_keys().to_toml(si));
+    std::istringstream dimensionless(physics_keys().to_toml(d));
+    std::string line;
+    std::getline(dimensionless, line);  // the [physics] header
+    os << "# converted to [physics]:";
+    for (const char* separator = " "; std::getline(dimensionless, line) && !line.empty(); separator = ", ")
+      os << separator << line;
+    os << "\n";
+  } else {
+    os << table_lines(physics_keys().to_toml(d));
   }
   if (c.scales)
     os << "# scales to SI: length x " << v(c.scales->length_m) << " m, stress x " << v(c.scales->stress_pa)

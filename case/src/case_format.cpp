@@ -14,7 +14,8 @@ std::string case_format_reference() {
          "below; an unknown key, a value of the wrong type or outside its rule is an error that names the\n"
          "file, the table, the key and what is allowed. Quantities are dimensionless (Section 2.4 of the\n"
          "paper): lengths over R, stresses over E, time over mu R^2/(k E). The resolved `config.toml`\n"
-         "beside every result lists every key with its value and repeats the run.\n\n"
+         "beside every result lists every key with its value and repeats the run (a [physics_si] case's\n"
+         "config.toml holds [physics_si], with the dimensionless values it converts to as comments).\n\n"
          "## Physics (both models): exactly one of [physics] or [physics_si]\n\n" +
          physics_reference_markdown() +
          "## model = \"lattice2d\" (`hmlattice run`)\n\n" + run_case_keys().reference_markdown() +

@@ -1,5 +1,6 @@
 #include "hm/case/case_keys.hpp"
 
+#include "hm/core/toml_text.hpp"
 #include "hm/core/validation.hpp"
 #include "hm/core/input_error.hpp"
 
@@ -9,7 +10,7 @@ std::string toml_real(double value) { return core::format_value(value); }
 
 std::string toml_bool(bool value) { return value ? "true" : "false"; }
 
-std::string toml_quoted(const std::string& text) { return "\"" + text + "\""; }
+std::string toml_quoted(const std::string& text) { return core::toml_string(text); }
 
 std::string toml_reals(const std::vector<double>& values) {
   std::string s = "[";

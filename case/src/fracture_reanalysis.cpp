@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "hm/core/file_output.hpp"
+#include "hm/core/toml_text.hpp"
 #include "hm/core/input_error.hpp"
 #include "hm/lattice2d/fracture/failure.hpp"
 #include "hm/lattice2d/geometry/lattice.hpp"
@@ -97,7 +98,7 @@ FractureReanalysis recompute_fracture_statistics(const std::filesystem::path& ru
   const std::string provenance = provenance_part(text_of(run_dir / "config.toml"));
   const std::string config =
       run_case_to_toml(c, "# fracture statistics recomputed with fracture_link = \"" + hm::core::name_of(link) +
-                              "\" by: " + command_line + " (" + make_provenance(command_line).utc_time + ")\n" +
+                              "\" by: " + core::toml_string(command_line) + " (" + make_provenance(command_line).utc_time + ")\n" +
                               provenance);
   lt::write_fracture_table(run_dir / "fractures.csv", snapshots);
   lt::write_fracture_summary(run_dir / "fracture_summary.csv", snapshots);

@@ -73,7 +73,11 @@ CaseKeys<RunCase> make_run_case_keys() {
       .choice("borehole_storage", [](auto& c) -> auto& { return c.borehole_storage; },
               "the borehole node's storage: the fluid's compressibility (docs/flow.md) or none")
       .choice("borehole_deformation", [](auto& c) -> auto& { return c.borehole_deformation; },
-              "whether the borehole's volume change enters its balance (docs/flow.md)")
+              "whether the borehole's volume change enters its balance (docs/flow.md)",
+              [](const RunCase& c) { return lt::default_borehole_deformation(c.borehole_storage); },
+              "`\"" + core::name_of(lt::default_borehole_deformation(lt::BoreholeStorage::biot_modulus)) +
+                  "\"`; `\"" + core::name_of(lt::default_borehole_deformation(lt::BoreholeStorage::none)) +
+                  "\"` for borehole_storage = \"none\"")
       .boolean("reuse_factorisation", [](auto& c) -> auto& { return c.reuse_flow_factorisation; },
                "reuse the flow matrix's factor while the geometry changes little (iterative refinement)")
       .integer("refresh_after_refinements", [](auto& c) -> auto& { return c.flow_refresh_after_refinements; }, 0, 1000000,

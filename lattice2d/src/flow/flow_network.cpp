@@ -52,6 +52,10 @@ void FlowParameters::validate() const {
   require_finite(source_y, "source_y");
 }
 
+BoreholeDeformation default_borehole_deformation(BoreholeStorage storage) {
+  return storage == BoreholeStorage::none ? BoreholeDeformation::none : BoreholeDeformation::biot;
+}
+
 FlowParameters flow_parameters_of(const hm::analytic::DimensionlessParameters& parameters, double dt) {
   FlowParameters flow;
   flow.Q = parameters.Q;

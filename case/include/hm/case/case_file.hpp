@@ -76,8 +76,9 @@ void require_physics_present(CaseTable& root);
 /// The reference of [physics] and [physics_si]: every key, its default, rule and meaning (markdown).
 std::string physics_reference_markdown();
 
-/// The resolved physics as TOML: [physics] with every field, and the physical inputs and scales as
-/// comments if the case gave [physics_si]. Written beside results; itself a valid case section.
+/// The resolved physics as TOML: [physics] with every field; for a case that gave [physics_si],
+/// [physics_si] with every field instead, the dimensionless values and the scales as comments (a
+/// rerun converts the same inputs again). Written beside results; itself a valid case section.
 std::string physics_to_toml(const CasePhysics& physics);
 
 }  // namespace hm::cases

@@ -131,25 +131,35 @@ class CaseKeys {
                 [field](const Case& c) { return toml_bool(field(c)); }});
   }
 
+  /// A choice's computed default: the enum from the case read so far (not deduced from the argument,
+  /// so a lambda converts).
+  template <class Field>
+  using DefaultOf = std::function<std::remove_cvref_t<std::invoke_result_t<Field, Case&>>(const Case&)>;
+
   /// One of the names of `values` (the enum's names table, hm/core/enum_names.hpp); anything else is
-  /// "<name> = 'x', allowed: <the names of values>".
+  /// "<name> = 'x', allowed: <the names of values>". default_of (if given) computes the default from
+  /// the keys read before.
   template <class Field, class Enum = std::remove_cvref_t<std::invoke_result_t<Field, Case&>>>
-  CaseKeys& choice(std::string name, Field field, std::vector<Enum> values, std::string help) {
+  CaseKeys& choice(std::string name, Field field, std::vector<Enum> values, std::string help,
+                   DefaultOf<Field> default_of = {}, std::string default_text = "") {
     std::string allowed;
     for (const Enum& v : values) allowed += (allowed.empty() ? "" : ", ") + toml_quoted(core::name_of(v));
-    return key({name, "string", "", "one of " + allowed, std::move(help),
-                [name, field, values](CaseTable& t, Case& c) {
+    return key({name, "string", std::move(default_text), "one of " + allowed, std::move(help),
+                [name, field, values, default_of](CaseTable& t, Case& c) {
+                  const Enum fallback = default_of ? default_of(c) : field(c);
                   located(t, "", [&] {
-                    field(c) = core::from_name(t.get_string(name, core::name_of(field(c))), name, values);
+                    field(c) = core::from_name(t.get_string(name, core::name_of(fallback)), name, values);
                   });
                 },
                 [field](const Case& c) { return toml_quoted(core::name_of(field(c))); }});
   }
   /// Any value of the enum.
   template <class Field>
-  CaseKeys& choice(std::string name, Field field, std::string help) {
+  CaseKeys& choice(std::string name, Field field, std::string help, DefaultOf<Field> default_of = {},
+                   std::string default_text = "") {
     using Enum = std::remove_cvref_t<std::invoke_result_t<Field, Case&>>;
-    return choice(std::move(name), field, core::enum_values<Enum>(), std::move(help));
+    return choice(std::move(name), field, core::enum_values<Enum>(), std::move(help), std::move(default_of),
+                  std::move(default_text));
   }
 
   template <class Field>

@@ -11,6 +11,19 @@ struct Provenance {
   std::string command_line;  ///< as typed
   std::string utc_time;      ///< ISO 8601
   std::string build_type;    ///< CMAKE_BUILD_TYPE
+  // What of the build and the environment can change a result's bits besides the case: the BLAS
+  // (library, the kernels chosen for this CPU, threads: blas_threads.hpp), the compiler and the C
+  // library (libm's exp, log, ... differ by version in the last bit). OpenMP is recorded for the
+  // record: the toolkit's own OpenMP loops are designed to give bitwise the same result on any thread
+  // count (the triangular solves split the elimination tree into fixed independent halves, the
+  // stress scans write one slot per beam), so no setting of it changes a number.
+  std::string blas;             ///< BlasInEffect::library
+  std::string blas_core;        ///< BlasInEffect::core
+  int blas_threads = -1;        ///< BlasInEffect::threads; -1 unknown
+  std::string omp_num_threads;  ///< the environment's OMP_NUM_THREADS, "unset" without it
+  int omp_max_threads = 0;      ///< omp_get_max_threads()
+  std::string compiler;         ///< compiler id and version
+  std::string libc;             ///< gnu_get_libc_version()
 };
 
 Provenance make_provenance(const std::string& command_line);

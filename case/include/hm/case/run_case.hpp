@@ -42,6 +42,7 @@ struct RunCase {
   hm::lattice2d::BoundaryConditions boundary;   ///< only `outer` is read from the case
   hm::lattice2d::MechanicsOptions mechanics;    ///< only `solver` is read from the case
   hm::lattice2d::BoreholeStorage borehole_storage = hm::lattice2d::BoreholeStorage::biot_modulus;
+  /// Read with the default default_borehole_deformation(borehole_storage).
   hm::lattice2d::BoreholeDeformation borehole_deformation = hm::lattice2d::BoreholeDeformation::biot;
   bool reuse_flow_factorisation = hm::lattice2d::FlowParameters{}.reuse_factorisation;
   int flow_refresh_after_refinements = hm::lattice2d::FlowParameters{}.refresh_after_refinements;

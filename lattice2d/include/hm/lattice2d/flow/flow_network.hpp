@@ -77,8 +77,9 @@ struct FlowParameters {
   /// no refresh (the old factor ages: ~8 iterations), 7.8 / 6.5 / 7.8 s with 2 / 4 / 8 (same breaks in
   /// the same order; volume balance <= 5e-12). Allowed: >= 0.
   int refresh_after_refinements = 4;
-  /// Borehole deformation term (Eq. 16). Default: the paper's Eq. 16. With borehole_storage = none
-  /// and this = none the borehole node is the 1D model's flux boundary; see docs/flow.md.
+  /// Borehole deformation term (Eq. 16). Default: the paper's Eq. 16 (default_borehole_deformation of
+  /// the default storage). With borehole_storage = none and this = none the borehole node is the 1D
+  /// model's flux boundary; see docs/flow.md.
   BoreholeDeformation borehole_deformation = BoreholeDeformation::biot;
   /// Point-source position (x, y) for a domain without borehole (Section 3.1: r = 0). Our choice to
   /// make it a field; the source goes into the triangle containing it. Allowed: finite, inside the
@@ -89,6 +90,11 @@ struct FlowParameters {
   /// Throws hm::InputError "field = value, allowed: rule" for the first violated rule.
   void validate() const;
 };
+
+/// The borehole deformation term that goes with a borehole storage: Eq. 16's b dV_h with its storage,
+/// none without. With no storage p_h is set by b dV_h alone and the coupling loop through the borehole
+/// node does not converge (docs/coupling.md, section 3), so a case reader takes this as the default.
+BoreholeDeformation default_borehole_deformation(BoreholeStorage storage);
 
 /// The flow parameters of a shared dimensionless parameter set (Q, iota, E/M, b) with time step dt.
 FlowParameters flow_parameters_of(const hm::analytic::DimensionlessParameters& parameters, double dt);
