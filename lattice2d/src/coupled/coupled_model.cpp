@@ -400,6 +400,15 @@ void transfer_totals(Archive& a, Totals& t) {
   a.io("run.n_mechanics_update_failures", t.n_mechanics_update_failures);
 }
 
+// Where run() is (Archive and Cursor as above).
+template <class Archive, class Cursor>
+void transfer_cursor(Archive& a, Cursor& c) {
+  a.io("cursor.started", c.started);
+  a.io("cursor.next_output", c.next_output);
+  a.io("cursor.dt_nominal", c.dt_nominal);
+  transfer_totals(a, c.totals);
+}
+
 }  // namespace
 
 void CoupledModel::save_state(core::StateWriter& w) const {
@@ -417,10 +426,7 @@ void CoupledModel::save_state(core::StateWriter& w) const {
     w.put("strengths.compressive", fracture_->strengths.compressive);
   }
   save_break_log(w, break_log_);
-  w.put("cursor.started", cursor_.started);
-  w.put("cursor.next_output", cursor_.next_output);
-  w.put("cursor.dt_nominal", cursor_.dt_nominal);
-  transfer_totals(w, cursor_.totals);
+  transfer_cursor(w, cursor_);
 }
 
 void CoupledModel::restore_state(core::StateReader& r) {
@@ -446,10 +452,7 @@ void CoupledModel::restore_state(core::StateReader& r) {
     r.get("strengths.compressive", fracture_->strengths.compressive);
   }
   break_log_ = restore_break_log(r);
-  r.get("cursor.started", cursor_.started);
-  r.get("cursor.next_output", cursor_.next_output);
-  r.get("cursor.dt_nominal", cursor_.dt_nominal);
-  transfer_totals(r, cursor_.totals);
+  transfer_cursor(r, cursor_);
   // The accepted geometry is a function of the accepted displacement (finish_step's dual graph).
   current_dual_ = cursor_.totals.n_steps == 0 ? reference_dual_
                                               : build_dual_graph(lattice(), positions(displacement_), reference_dual_.options);
