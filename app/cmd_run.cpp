@@ -160,13 +160,15 @@ void run_case(const RunArgs& a, int& exit_code, const std::string& command_line)
     const std::string why = !interrupted                ? "numerical failure: " + run.message
                             : interrupt.signal() != 0 ? std::string("interrupted by ") + interrupt.signal_name()
                                                       : "stopped after step " + std::to_string(step) + " (--stop-after-steps)";
-    core::write_stopped_status(out->path() / "status.toml", "run", why, step, model->time(), c.stepping.t_end,
-                               out->target(), {checkpoint_step, checkpoint_t});
+    // A resumed folder stays where it is when it stops again (a killed run's staging folder included).
+    const std::filesystem::path kept = resuming ? std::filesystem::path(a.resume) : out->target();
+    core::write_stopped_status(out->path() / "status.toml", "run", why, step, model->time(), c.stepping.t_end, kept,
+                               {checkpoint_step, checkpoint_t});
     out->commit(why);
     std::cerr << "hmlattice run: " << core::one_line(why, 300) << "; the " << step << " steps done (t = "
-              << model->time() << " of " << c.stepping.t_end << ") are in " << out->target().string()
+              << model->time() << " of " << c.stepping.t_end << ") are in " << kept.string()
               << ", marked incomplete (status.toml)"
-              << (checkpoint_step >= 0 ? "; continue with hmlattice run --resume " + out->target().string() : std::string())
+              << (checkpoint_step >= 0 ? "; continue with hmlattice run --resume " + kept.string() : std::string())
               << "\n";
     exit_code = !interrupted ? 1 : interrupt.signal() != 0 ? interrupt.exit_code() : 0;
     return;

@@ -144,5 +144,6 @@ TEST_CASE("A killed run's staging folder is reported by the next run beside it, 
   INFO(resumed.err);
   CHECK(resumed.exit_code == 0);
   CHECK(count_lines(slurp(staging / "series.csv")) == flushed + 4);
-  CHECK_THAT(slurp(staging / "status.toml"), Catch::Contains("last_step = " + std::to_string(flushed + 2) + "\n"));
+  CHECK_THAT(slurp(staging / "status.toml"), Catch::Contains("last_step = " + std::to_string(flushed + 2) + "\n") &&
+                                                 Catch::Contains("resume = \"hmlattice run --resume " + staging.string()));
 }
