@@ -411,15 +411,20 @@ void transfer_cursor(Archive& a, Cursor& c) {
 
 }  // namespace
 
+template <class Archive, class Self>
+void CoupledModel::transfer_history(Archive& a, Self& m) {
+  a.io("model.displacement", m.displacement_);
+  a.io("model.previous_pressure", m.previous_pressure_);
+  a.io("model.previous_displacement", m.previous_displacement_);
+  a.io("model.previous_dt", m.previous_dt_);
+}
+
 void CoupledModel::save_state(core::StateWriter& w) const {
   w.put("model.particles", lattice().n_particles());
   w.put("model.beams", lattice().n_beams());
   mechanics_->save_state(w);
   flow_->save_state(w);
-  w.put("model.displacement", displacement_);
-  w.put("model.previous_pressure", previous_pressure_);
-  w.put("model.previous_displacement", previous_displacement_);
-  w.put("model.previous_dt", previous_dt_);
+  transfer_history(w, *this);
   w.put("model.fracture", fracture_enabled());
   if (fracture_) {
     w.put("strengths.tensile", fracture_->strengths.tensile);
@@ -439,10 +444,7 @@ void CoupledModel::restore_state(core::StateReader& r) {
                      ", " + std::to_string(lattice().n_beams()) + ")");
   mechanics_->restore_state(r);
   flow_->restore_state(r);
-  r.get("model.displacement", displacement_);
-  r.get("model.previous_pressure", previous_pressure_);
-  r.get("model.previous_displacement", previous_displacement_);
-  r.get("model.previous_dt", previous_dt_);
+  transfer_history(r, *this);
   bool fracture = false;
   r.get("model.fracture", fracture);
   if (fracture != fracture_enabled())

@@ -290,6 +290,9 @@ class CoupledModel {
   void finish_step(double dt, bool converged, DualGraph dual, CoupledStepSummary& summary);  // accept or restore t^n
   Eigen::Matrix2Xd positions(const Eigen::VectorXd& u) const;
   Eigen::VectorXd unknown_volumes(const DualGraph& dual) const;  // V_s, then V_h
+  // The accepted u and the linear predictor's history, saved (const Self) or restored (save_state).
+  template <class Archive, class Self>
+  static void transfer_history(Archive& a, Self& m);
 
   CouplingOptions options_;
   std::unique_ptr<BeamMechanics> mechanics_;
