@@ -5,6 +5,8 @@
 //   hmlattice run cases/fig07_rudnicki_free.toml [--out DIR]   the coupled 2D lattice (Sections 2.1-2.3)
 //   hmlattice fractures out/fig12_b0.2 [--link triangle]   recompute a run's fracture statistics
 //   hmlattice analytic rudnicki --Q 0.1 --b 0.5 --t 3e-4 --r 0.01,0.02   closed forms as CSV
+//   hmlattice sweep expand cases/sweep_fig18_quick.toml --out DIR   one case per combination of [sweep]
+//   hmlattice sweep collect DIR --runs RUNS              the runs' results as one CSV
 //   hmlattice case-format                                 the case-file reference (docs/case-format.md)
 //
 // Exit codes: 0 success; 1 a verification check failed; 2 bad input (one line on stderr naming the
@@ -50,6 +52,7 @@ int main(int argc, char** argv) {
   hm::app::add_fractures_command(app, joined(argc, argv));
   hm::app::add_analytic_command(app, exit_code);
   hm::app::add_case_format_command(app);
+  hm::app::add_sweep_command(app, joined(argc, argv));
   reject_empty_values(app);
 
   try {

@@ -3,6 +3,7 @@
 #include "hm/case/case_file.hpp"
 #include "hm/case/fdm1d_case.hpp"
 #include "hm/case/run_case.hpp"
+#include "hm/case/sweep.hpp"
 
 namespace hm::cases {
 
@@ -19,7 +20,8 @@ std::string case_format_reference() {
          "## Physics (both models): exactly one of [physics] or [physics_si]\n\n" +
          physics_reference_markdown() +
          "## model = \"lattice2d\" (`hmlattice run`)\n\n" + run_case_keys().reference_markdown() +
-         "## model = \"fdm1d\" (`hmlattice fdm1d`)\n\n" + fdm1d_case_keys().reference_markdown();
+         "## model = \"fdm1d\" (`hmlattice fdm1d`)\n\n" + fdm1d_case_keys().reference_markdown() +
+         sweep_reference_markdown();
 }
 
 }  // namespace hm::cases
