@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Install hmlattice's build and plotting dependencies from Debian 12's archive.
 # Idempotent: packages already present are skipped, so a second run does nothing.
-# Needs root (or sudo) only when something is missing.
+# Needs root (or sudo) only when something is missing. Extra Debian packages given as arguments are
+# installed the same way (scripts/test.sh adds snakemake for the workflow test; the main job adds none).
 set -euo pipefail
 
 packages=(
@@ -11,6 +12,7 @@ packages=(
   python3-matplotlib python3-numpy python3-meshio
   libopenblas0-pthread  # BLAS/LAPACK behind CHOLMOD's supernodal factorisation: ~1.4-3x faster at N = 1e5
 )
+packages+=("$@")
 
 missing=()
 for p in "${packages[@]}"; do

@@ -3,7 +3,7 @@
 # library tests again under AddressSanitizer and UBSan (build-sanitize/, HM_SANITIZE=ON).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/install-deps.sh
+bash scripts/install-deps.sh snakemake  # snakemake: the workflow test (tests/workflow/)
 bash scripts/build.sh
 ctest --test-dir build --output-on-failure -j "$(nproc)"
 
