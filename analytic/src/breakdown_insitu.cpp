@@ -15,19 +15,19 @@ void BreakdownParameters::validate() const {
 
 double poroelastic_stress_coefficient(double b, double nu) { return b * (1.0 - 2.0 * nu) / (2.0 * (1.0 - nu)); }
 
-double hubbert_willis_breakdown(const FarFieldStress& far, const BreakdownParameters& m) {
+WallBreakdown hubbert_willis_breakdown(const FarFieldStress& far, const BreakdownParameters& m) {
   far.validate();
   m.validate();
-  return 3.0 * far.S_h - far.S_H + m.T_u - m.b * m.p0;
+  return {3.0 * far.S_h - far.S_H + m.T_u - m.b * m.p0, 0.0};
 }
 
-double haimson_fairhurst_breakdown(const FarFieldStress& far, const BreakdownParameters& m) {
+WallBreakdown haimson_fairhurst_breakdown(const FarFieldStress& far, const BreakdownParameters& m) {
   far.validate();
   m.validate();
   const double eta = poroelastic_stress_coefficient(m.b, m.nu);
   // The fluid at the wall both adds b p_w to the effective stress and, by penetrating, takes
   // 2 eta (p_w - p0) off the total hoop stress; 1 + b - 2 eta >= 1, as eta <= b/2.
-  return (3.0 * far.S_h - far.S_H + m.T_u - 2.0 * eta * m.p0) / (1.0 + m.b - 2.0 * eta);
+  return {(3.0 * far.S_h - far.S_H + m.T_u - 2.0 * eta * m.p0) / (1.0 + m.b - 2.0 * eta), 0.0};
 }
 
 WallBreakdown annulus_jacketed_breakdown(const FarFieldStress& far, const BreakdownParameters& m, double R_i) {

@@ -27,24 +27,24 @@ struct BreakdownParameters {
 /// confined to the rock near a hole in an infinite plane adds -2 eta dp to the wall's hoop stress.
 double poroelastic_stress_coefficient(double b, double nu);
 
-/// Hubbert & Willis (1957): Kirsch's wall with a non-penetrating fluid (the pore pressure at the wall
-/// stays p0): p_b = 3 S_h - S_H + T_u - b p0 (the textbook form at b = 1). Reached at theta = 0 from
-/// S_H. Throws hm::InputError for invalid input. A negative p_b means the wall fails in tension
-/// before any pressure is applied.
-double hubbert_willis_breakdown(const FarFieldStress& far, const BreakdownParameters& m);
-
-/// Haimson & Fairhurst (1967): Kirsch's wall with a penetrating fluid (pore pressure p_w at the wall,
-/// p0 far away): p_b = (3 S_h - S_H + T_u - 2 eta p0)/(1 + b - 2 eta) (the textbook
-/// (... )/(2 - 2 eta) at b = 1). Reached at theta = 0 from S_H. Throws hm::InputError for invalid input.
-/// Limits: the poroelastic term assumes the pressure disturbance decays within the infinite plane.
-double haimson_fairhurst_breakdown(const FarFieldStress& far, const BreakdownParameters& m);
-
 /// The wall pressure and the angle (from S_H) at which the largest effective hoop stress on a wall
 /// first reaches T_u.
 struct WallBreakdown {
   double p_w;    ///< breakdown pressure p_b/E
   double theta;  ///< angle from S_H [rad]; 0 (and pi) for S_H > S_h; every angle ties for S_H = S_h, 0 given
 };
+
+/// Hubbert & Willis (1957): Kirsch's wall with a non-penetrating fluid (the pore pressure at the wall
+/// stays p0): p_b = 3 S_h - S_H + T_u - b p0 (the textbook form at b = 1), reached at theta = 0 from
+/// S_H. Throws hm::InputError for invalid input. A negative p_b means the wall fails in tension
+/// before any pressure is applied.
+WallBreakdown hubbert_willis_breakdown(const FarFieldStress& far, const BreakdownParameters& m);
+
+/// Haimson & Fairhurst (1967): Kirsch's wall with a penetrating fluid (pore pressure p_w at the wall,
+/// p0 far away): p_b = (3 S_h - S_H + T_u - 2 eta p0)/(1 + b - 2 eta) (the textbook
+/// (...)/(2 - 2 eta) at b = 1), reached at theta = 0 from S_H. Throws hm::InputError for invalid input.
+/// Limits: the poroelastic term assumes the pressure disturbance decays within the infinite plane.
+WallBreakdown haimson_fairhurst_breakdown(const FarFieldStress& far, const BreakdownParameters& m);
 
 /// The Hubbert-Willis (jacketed, non-penetrating) criterion on the finite InSituAnnulus of radius
 /// ratio R_i: the wall hoop stress is linear in p_w and largest on the S_H axis (its cos 2psi
