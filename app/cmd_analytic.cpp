@@ -1,18 +1,28 @@
 // hmlattice analytic <solution>: evaluate a closed-form solution of analytic/ and print CSV
-// (a header row, then one row per radius) to stdout. Dimensionless, tension positive.
+// (a header row, then one row per radius; per (r, theta) pair for insitu, per formula for
+// breakdown-insitu) to stdout. Dimensionless, tension positive (far-field magnitudes S_H, S_h and
+// pressures are given compression positive, as geomechanics states them).
+#include <cmath>
 #include <iostream>
 #include <memory>
+#include <numbers>
 #include <optional>
 #include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "commands.hpp"
 #include "hm/analytic/biot_modulus.hpp"
+#include "hm/analytic/breakdown_insitu.hpp"
+#include "hm/analytic/insitu_annulus.hpp"
 #include "hm/analytic/lame.hpp"
 #include "hm/analytic/rudnicki.hpp"
 #include "hm/analytic/sneddon.hpp"
 #include "hm/analytic/steady_borehole.hpp"
-#include "hm/core/validation.hpp"
 #include "hm/core/csv_writer.hpp"
+#include "hm/core/input_error.hpp"
+#include "hm/core/validation.hpp"
 
 namespace hm::app {
 
@@ -32,6 +42,30 @@ void print_table(const std::vector<std::string>& columns, const std::vector<std:
   for (const auto& row : rows) w.row(row);
   std::cout << table.str();
 }
+
+// A table whose first column is a name (CsvWriter writes numbers only): the same number format, and
+// the same refusal of a value that overflowed, named by its row.
+void print_named_table(const std::string& name_column, const std::vector<std::string>& columns,
+                       const std::vector<std::pair<std::string, std::vector<double>>>& rows) {
+  std::ostringstream table;
+  table << name_column;
+  for (const auto& c : columns) table << "," << c;
+  table << "\n";
+  for (const auto& [name, values] : rows) {
+    table << name;
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      if (!std::isfinite(values[i]))
+        throw InputError(columns[i] + " = " + csv_number(values[i]) + " for " + name_column + " = " + name +
+                         ": the inputs overflow double precision, allowed: inputs whose " + columns[i] + " is finite");
+      table << "," << csv_number(values[i]);
+    }
+    table << "\n";
+  }
+  std::cout << table.str();
+}
+
+double radians(double deg) { return deg * std::numbers::pi / 180.0; }
+double degrees(double rad) { return rad * 180.0 / std::numbers::pi; }
 
 void print_radial(const std::vector<double>& radii, const std::function<RadialState(double)>& state) {
   std::vector<std::vector<double>> rows;
@@ -157,6 +191,66 @@ void add_lame(CLI::App* parent) {
   });
 }
 
+void add_insitu(CLI::App* parent) {
+  struct Args {
+    double SH = 0.0, Sh = 0.0, pw = 0.0, theta_H = 0.0, Ri = 0.138, nu = 0.25;
+    std::vector<double> r, theta;
+  };
+  auto a = std::make_shared<Args>();
+  auto* cmd = parent->add_subcommand(
+      "insitu", "Borehole annulus R_i <= r <= 1 under a far-field stress (traction at r = 1) and a wall pressure");
+  cmd->add_option("--SH,--S_H", a->SH, "largest far-field stress magnitude S_H/E, compression positive")->required();
+  cmd->add_option("--Sh,--S_h", a->Sh, "smallest far-field stress magnitude S_h/E <= S_H, compression positive")
+      ->required();
+  cmd->add_option("--pw,--p_w", a->pw, "wall pressure p_w/E (sigma_r = -p_w at r = R_i)")->capture_default_str();
+  cmd->add_option("--theta-H,--theta_H", a->theta_H, "azimuth of S_H from the x axis, degrees")->capture_default_str();
+  cmd->add_option("--Ri,--R_i", a->Ri, "borehole radius R_i/R")->capture_default_str();
+  cmd->add_option("--nu", a->nu, "Poisson ratio")->capture_default_str();
+  add_radii(cmd, a->r);
+  cmd->add_option("--theta", a->theta,
+                  "comma-separated polar angles, degrees from the x axis: from S_H with the default --theta-H 0")
+      ->delimiter(',')
+      ->required();
+  cmd->callback([a] {
+    const InSituAnnulus sol({a->SH, a->Sh, radians(a->theta_H)}, a->pw, a->Ri, a->nu);
+    std::vector<std::vector<double>> rows;
+    for (double r : a->r)
+      for (double theta : a->theta) {
+        const PolarState s = sol.state(r, radians(theta));
+        rows.push_back({r, theta, s.sigma_r, s.sigma_theta, s.sigma_rtheta});
+      }
+    print_table({"r", "theta", "sigma_r", "sigma_theta", "sigma_rtheta"}, rows);
+  });
+}
+
+void add_breakdown_insitu(CLI::App* parent) {
+  struct Args {
+    double SH = 0.0, Sh = 0.0, Ri = 0.138;
+    BreakdownParameters m;
+  };
+  auto a = std::make_shared<Args>();
+  auto* cmd = parent->add_subcommand(
+      "breakdown-insitu", "Breakdown pressure under a far-field stress: Hubbert-Willis, Haimson-Fairhurst, jacketed annulus");
+  cmd->add_option("--SH,--S_H", a->SH, "largest far-field stress magnitude S_H/E, compression positive")->required();
+  cmd->add_option("--Sh,--S_h", a->Sh, "smallest far-field stress magnitude S_h/E <= S_H, compression positive")
+      ->required();
+  cmd->add_option("--T,--T_u", a->m.T_u, "tensile strength T_u/E")->capture_default_str();
+  cmd->add_option("--p0", a->m.p0, "in-situ pore pressure p0/E, compression positive")->capture_default_str();
+  cmd->add_option("--b", a->m.b, "Biot coefficient of the effective stress (1: the textbook forms)")
+      ->capture_default_str();
+  cmd->add_option("--nu", a->m.nu, "Poisson ratio")->capture_default_str();
+  cmd->add_option("--Ri,--R_i", a->Ri, "borehole radius R_i/R of the annulus")->capture_default_str();
+  cmd->callback([a] {
+    const FarFieldStress far{a->SH, a->Sh, 0.0};
+    std::vector<std::pair<std::string, std::vector<double>>> rows;
+    for (const auto& [name, bd] : {std::pair{"hubbert_willis", hubbert_willis_breakdown(far, a->m)},
+                                   std::pair{"haimson_fairhurst", haimson_fairhurst_breakdown(far, a->m)},
+                                   std::pair{"annulus_jacketed", annulus_jacketed_breakdown(far, a->m, a->Ri)}})
+      rows.push_back({name, {bd.p_w, degrees(bd.theta)}});
+    print_named_table("formula", {"p_b", "theta_deg"}, rows);
+  });
+}
+
 }  // namespace
 
 void add_analytic_command(CLI::App& app, int& /*exit_code*/) {
@@ -166,6 +260,8 @@ void add_analytic_command(CLI::App& app, int& /*exit_code*/) {
   add_borehole_steady(cmd);
   add_sneddon(cmd);
   add_lame(cmd);
+  add_insitu(cmd);
+  add_breakdown_insitu(cmd);
 }
 
 }  // namespace hm::app
