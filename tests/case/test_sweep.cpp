@@ -84,7 +84,7 @@ TEST_CASE("A sweep expands into every combination with stable, readable names", 
   }
 }
 
-TEST_CASE("Swept keys with one short name are named in full; dotted keys work as quoted ones", "[case][sweep]") {
+TEST_CASE("Swept keys with one short name are named in full, and dotted keys work as quoted ones", "[case][sweep]") {
   TempDir dir("sweep-full-names");
   dir.write("s.toml", lattice_case + "[sweep]\nlattice.seed = [1]\nfracture.seed = [2, 3]\n");
   fs::create_directories(dir.path / "out");
@@ -94,7 +94,7 @@ TEST_CASE("Swept keys with one short name are named in full; dotted keys work as
   CHECK(hm::cases::read_run_case(dir.path / "out" / "lattice.seed=1_fracture.seed=3.toml").strength.seed == 3u);
 }
 
-TEST_CASE("A swept string becomes a safe file name; an fdm1d sweep is run by `hmlattice fdm1d`", "[case][sweep]") {
+TEST_CASE("A swept string becomes a safe file name, and an fdm1d sweep is run by `hmlattice fdm1d`", "[case][sweep]") {
   TempDir dir("sweep-fdm1d");
   dir.write("s.toml",
             "model = \"fdm1d\"\n[physics]\nQ = 0.01\nb = 0.5\n[numerics]\nn_r = 50\nt_end = 1\n"
