@@ -39,6 +39,7 @@ void DimensionlessParameters::validate() const {
   require_positive(tensile_strength, "tensile_strength");
   require_positive(compressive_strength, "compressive_strength");
   require_non_negative(friction, "friction");
+  require_positive(E_over_Kw, "E_over_Kw");
 }
 
 DimensionlessParameters to_dimensionless(const PhysicalParameters& phys, VolStrain vol_strain) {
@@ -54,6 +55,7 @@ DimensionlessParameters to_dimensionless(const PhysicalParameters& phys, VolStra
   d.tensile_strength = phys.T_u_si / phys.E_si;
   d.compressive_strength = phys.C_u_si / phys.E_si;
   d.friction = phys.mu_i;
+  d.E_over_Kw = phys.E_si / phys.K_w_si;
   return d;
 }
 

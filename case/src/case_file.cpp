@@ -157,7 +157,10 @@ const CaseKeys<analytic::DimensionlessParameters>& physics_keys() {
         .real("E_over_M", [](auto& d) -> auto& { return d.material.E_over_M; }, "> 0",
               "E/M, the inverse dimensionless Biot modulus (Eqs. 14, 22)",
               [](const analytic::DimensionlessParameters& d) { return analytic::E_over_M_table1(d.material.b, d.material.nu); },
-              "Eq. 22 with Table 1's porosity, K_w and E at this b and nu");
+              "Eq. 22 with Table 1's porosity, K_w and E at this b and nu")
+        .real("E_over_Kw", [](auto& d) -> auto& { return d.E_over_Kw; }, "> 0",
+              "E/K_w, the fluid's compressibility over the rock's: the water-filled borehole's storage "
+              "([flow] borehole_storage = \"fluid\"); Eq. 22's E/M is given by E_over_M");
     add_vol_strain(k, [](auto& d) -> auto& { return d.material.vol_strain; });
     k.real("R_i", [](auto& d) -> auto& { return d.R_i; }, "0 <= R_i < 1", "borehole radius R_i/R; 0 for point injection")
         .real("iota", [](auto& d) -> auto& { return d.iota; }, "> 0", "fracture permeability enhancement k_f/k")

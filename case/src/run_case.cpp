@@ -71,13 +71,17 @@ CaseKeys<RunCase> make_run_case_keys() {
               "the mechanics' linear solver: CHOLMOD's Cholesky factor or preconditioned CG");
   k.table("flow")
       .choice("borehole_storage", [](auto& c) -> auto& { return c.borehole_storage; },
-              "the borehole node's storage: the fluid's compressibility (docs/flow.md) or none")
+              "the borehole node's storage: Eq. 16's E/M V_h, none, or the water-filled hole's E/K_w V_h "
+              "(docs/flow.md)")
       .choice("borehole_deformation", [](auto& c) -> auto& { return c.borehole_deformation; },
-              "whether the borehole's volume change enters its balance (docs/flow.md)",
+              "the weight of the borehole's volume change in its balance: b (Eq. 16), none, or 1 (full: the "
+              "hole holds only fluid) (docs/flow.md)",
               [](const RunCase& c) { return lt::default_borehole_deformation(c.borehole_storage); },
               "`\"" + core::name_of(lt::default_borehole_deformation(lt::BoreholeStorage::biot_modulus)) +
                   "\"`; `\"" + core::name_of(lt::default_borehole_deformation(lt::BoreholeStorage::none)) +
-                  "\"` for borehole_storage = \"none\"")
+                  "\"` for borehole_storage = \"none\"; `\"" +
+                  core::name_of(lt::default_borehole_deformation(lt::BoreholeStorage::fluid)) +
+                  "\"` for \"fluid\"")
       .boolean("reuse_factorisation", [](auto& c) -> auto& { return c.reuse_flow_factorisation; },
                "reuse the flow matrix's factor while the geometry changes little (iterative refinement)")
       .integer("refresh_after_refinements", [](auto& c) -> auto& { return c.flow_refresh_after_refinements; }, 0, 1000000,
@@ -89,6 +93,8 @@ CaseKeys<RunCase> make_run_case_keys() {
             "Psi, the undrained split's feedback (Eq. 20)", [](const RunCase& c) { return lt::default_psi(c.coupling.split); },
             "`" + toml_real(lt::CouplingTerms{}.psi) + "`; `0` for split = \"drained\"")
       .real("xi", [](auto& c) -> auto& { return c.coupling.terms.xi; }, "> 0, finite", "xi, scaling of the pressure force (Eq. 17)")
+      .choice("broken_beam_spring", [](auto& c) -> auto& { return c.coupling.terms.broken_beam_spring; },
+              "the Psi spring of a beam that breaks: kept, or dropped with the beam (docs/coupling.md)")
       .real("pressure_tolerance", [](auto& c) -> auto& { return c.coupling.pressure_tolerance; }, "0 < value < 1",
             "a step has converged when the pressure's change between passes, relative to its largest value, is below this...")
       .real("displacement_tolerance", [](auto& c) -> auto& { return c.coupling.displacement_tolerance; }, "0 < value < 1",

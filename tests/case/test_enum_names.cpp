@@ -43,8 +43,9 @@ TEST_CASE("Every named enum has one distinct name per value, parsed back to it",
   check_names<lt::StiffnessScaling>(2);
   check_names<lt::BoundarySupport>(2);
   check_names<lt::SpdSolverKind>(2);
-  check_names<lt::BoreholeStorage>(2);
-  check_names<lt::BoreholeDeformation>(2);
+  check_names<lt::BoreholeStorage>(3);
+  check_names<lt::BoreholeDeformation>(3);
+  check_names<lt::BrokenBeamSpring>(2);
   check_names<lt::CouplingSplit>(2);
   check_names<lt::CouplingRelaxation>(3);
   check_names<lt::FractureCheck>(2);

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "hm/analytic/biot_modulus.hpp"
 #include "hm/case/coupled_model_of_case.hpp"
 #include "hm/case/run_case.hpp"
 #include "run_command.hpp"
@@ -71,4 +72,40 @@ TEST_CASE("A borehole case runs with any subset of its [flow] keys left out, bor
       CHECK(s.status == lt::CoupledStatus::converged);
     }
   }
+}
+
+TEST_CASE("The water-filled borehole: storage \"fluid\" takes deformation \"full\" and [physics] E_over_Kw", "[case]") {
+  std::string text = hm::test::slurp(std::string(HM_SOURCE_DIR) + "/cases/fig12_b0.2_quick.toml");
+  text = without_keys(text, {"borehole_storage", "borehole_deformation"});
+  const auto at = text.find("[flow]\n");
+  REQUIRE(at != std::string::npos);
+  text.insert(at + 7, "borehole_storage = \"fluid\"\n");
+  TempDir dir("flow-fluid");
+  dir.write("case.toml", text);
+  const hm::cases::RunCase c = hm::cases::read_run_case(dir.path / "case.toml");
+  CHECK(c.borehole_storage == lt::BoreholeStorage::fluid);
+  CHECK(c.borehole_deformation == lt::BoreholeDeformation::full);
+  CHECK(c.flow_parameters().E_over_Kw == hm::analytic::table1_E_over_Kw);
+  const std::string config = hm::cases::run_case_to_toml(c, "");
+  CHECK_THAT(config, Catch::Contains("borehole_deformation = \"full\"") && Catch::Contains("E_over_Kw = "));
+  dir.write("config.toml", config);
+  CHECK(hm::cases::read_run_case(dir.path / "config.toml").borehole_deformation == lt::BoreholeDeformation::full);
+
+  // Two coupled steps converge: the hole's storage keeps the loop through the borehole node stable.
+  const auto model = hm::cases::make_coupled_model(c);
+  for (int step = 0; step < 2; ++step) {
+    const lt::CoupledStepSummary s = model->step(c.stepping.dt_initial);
+    INFO("step " << step << ": " << s.message);
+    CHECK(s.status == lt::CoupledStatus::converged);
+  }
+
+  // A given E_over_Kw is used; a non-positive one is refused by table, key and rule.
+  auto with_kw = text;
+  with_kw.insert(with_kw.find("[physics]\n") + 10, "E_over_Kw = 9\n");
+  dir.write("kw.toml", with_kw);
+  CHECK(hm::cases::read_run_case(dir.path / "kw.toml").flow_parameters().E_over_Kw == 9.0);
+  with_kw.replace(with_kw.find("E_over_Kw = 9"), 13, "E_over_Kw = 0");
+  dir.write("bad.toml", with_kw);
+  CHECK_THROWS_WITH(hm::cases::read_run_case(dir.path / "bad.toml"),
+                    Catch::Contains("[physics]") && Catch::Contains("E_over_Kw = 0") && Catch::Contains("> 0"));
 }

@@ -70,8 +70,10 @@ TEST_CASE("Bad 2D cases are rejected with one line naming table, key, value and 
   rejected(physics + "[coupling]\nxi = 0\n", "case.toml: [coupling] xi = 0, allowed: ");
   rejected(physics + "[coupling]\npressure_tolerance = 2\n", "case.toml: [coupling] pressure_tolerance = 2, allowed: ");
   rejected(physics + "[coupling]\nmax_iterations = 0\n", "case.toml: [coupling] max_iterations = 0, allowed: ");
-  rejected(physics + "[flow]\nborehole_deformation = \"full\"\n",
-           "case.toml: [flow] borehole_deformation = 'full', allowed: biot, none");
+  rejected(physics + "[flow]\nborehole_deformation = \"half\"\n",
+           "case.toml: [flow] borehole_deformation = 'half', allowed: biot, none, full");
+  rejected(physics + "[coupling]\nbroken_beam_spring = \"soft\"\n",
+           "case.toml: [coupling] broken_beam_spring = 'soft', allowed: keep, drop");
   rejected(physics + "[flow]\nreuse_factorisation = 1\n", "case.toml: [flow] reuse_factorisation = ");
   rejected(physics + "[coupling]\nrelaxation = \"secant\"\n", "case.toml: [coupling] relaxation = 'secant', allowed: ");
   rejected(physics + "[coupling]\nanderson_depth = 0\n", "case.toml: [coupling] anderson_depth = 0, allowed: 1 ... 50");

@@ -80,7 +80,7 @@ CoupledModel::CoupledModel(Lattice lattice, const BeamParameters& beams, const B
   mechanics_ = std::make_unique<BeamMechanics>(std::move(lattice), beams, conditions, mechanics_options);
   springs_ = undrained_spring_stiffness(mechanics_->lattice(), reference_dual_, flow.b, flow.E_over_M, options_.terms);
   // The springs go into the matrix once (one refactorisation); Psi = 0 leaves the dry matrix as it is.
-  if (options_.terms.psi > 0.0) mechanics_->set_normal_springs(springs_);
+  if (options_.terms.psi > 0.0) mechanics_->set_normal_springs(springs_, options_.terms.broken_beam_spring);
   displacement_ = Eigen::VectorXd::Zero(3 * mechanics_->lattice().n_particles());
   volume_ = unknown_volumes(reference_dual_);
   relaxation_ = make_pass_relaxation(options_.relaxation, options_.initial_relaxation, options_.anderson_depth);
@@ -129,10 +129,19 @@ CoupledStepSummary CoupledModel::step(double dt) {
   summary.time = time() + dt;
   const int factorizations_before = mechanics_->solver().report().n_factorizations;
   const int update_failures_before = mechanics_->solver().report().n_update_failures;
+  // A failed attempt must leave no trace: the beams it broke, the contacts it changed, the factor's
+  // updates and the strengths it used are undone from this snapshot, so that a retry with a shorter
+  // step starts from t^n exactly as a run that took the shorter step in the first place.
+  core::StateWriter at_start;
+  save_model_state(at_start);
   PassGuess guess = predict(dt);
   DualGraph dual;
   const bool converged = iterate(dt, guess, dual, summary);
   finish_step(dt, converged, std::move(dual), summary);
+  if (!summary.is_ok()) {
+    core::StateReader snapshot(at_start.bytes(), "the state at t = " + hm::core::format_value(time()));
+    restore_model_state(snapshot);
+  }
   summary.n_broken = n_broken();
   summary.n_mechanics_factorizations = mechanics_->solver().report().n_factorizations - factorizations_before;
   summary.n_mechanics_update_failures = mechanics_->solver().report().n_update_failures - update_failures_before;
@@ -192,7 +201,7 @@ bool CoupledModel::solve_mechanics(int pass, const PassGuess& guess, bool check_
   // The pressure force of the guess (Eq. 17) and the undrained predictor's springs (Eq. 20).
   const Lattice& l = lattice();
   Eigen::VectorXd f = pressure_forces(l, reference_dual_, guess.pressure, flow_->parameters().b, options_.terms);
-  if (options_.terms.psi > 0.0) f += spring_preload(l, springs_, guess.displacement);
+  if (options_.terms.psi > 0.0) f += spring_preload(l, mechanics_->normal_springs(), guess.displacement);
   mechanics_->set_external_forces(f);
   // Solve, then break one beam at a time until none fails (the stresses of the effective, i.e. beam,
   // forces; V_i of the undeformed dual like the rest of the linear mechanics).
@@ -270,9 +279,6 @@ void CoupledModel::finish_step(double dt, bool converged, DualGraph dual, Couple
     displacement_ = mechanics_->displacement();  // the last pass's u, which the accepted flow saw
     current_dual_ = std::move(dual);
     volume_ = unknown_volumes(current_dual_);
-  } else {
-    // Back to the geometry of t^n so that a retry (e.g. with a smaller dt) starts from a clean state.
-    flow_->update_geometry(current_dual_, positions(displacement_));
   }
 }
 
@@ -420,6 +426,20 @@ void CoupledModel::transfer_history(Archive& a, Self& m) {
 }
 
 void CoupledModel::save_state(core::StateWriter& w) const {
+  save_model_state(w);
+  transfer_cursor(w, cursor_);
+}
+
+void CoupledModel::restore_state(core::StateReader& r) {
+  restore_model_state(r);
+  transfer_cursor(r, cursor_);
+  // The accepted geometry is a function of the accepted displacement (finish_step's dual graph).
+  current_dual_ = cursor_.totals.n_steps == 0 ? reference_dual_
+                                              : build_dual_graph(lattice(), positions(displacement_), reference_dual_.options);
+  volume_ = unknown_volumes(current_dual_);
+}
+
+void CoupledModel::save_model_state(core::StateWriter& w) const {
   w.put("model.particles", lattice().n_particles());
   w.put("model.beams", lattice().n_beams());
   mechanics_->save_state(w);
@@ -431,10 +451,9 @@ void CoupledModel::save_state(core::StateWriter& w) const {
     w.put("strengths.compressive", fracture_->strengths.compressive);
   }
   save_break_log(w, break_log_);
-  transfer_cursor(w, cursor_);
 }
 
-void CoupledModel::restore_state(core::StateReader& r) {
+void CoupledModel::restore_model_state(core::StateReader& r) {
   int particles = 0, beams = 0;
   r.get("model.particles", particles);
   r.get("model.beams", beams);
@@ -454,11 +473,6 @@ void CoupledModel::restore_state(core::StateReader& r) {
     r.get("strengths.compressive", fracture_->strengths.compressive);
   }
   break_log_ = restore_break_log(r);
-  transfer_cursor(r, cursor_);
-  // The accepted geometry is a function of the accepted displacement (finish_step's dual graph).
-  current_dual_ = cursor_.totals.n_steps == 0 ? reference_dual_
-                                              : build_dual_graph(lattice(), positions(displacement_), reference_dual_.options);
-  volume_ = unknown_volumes(current_dual_);
 }
 
 }  // namespace hm::lattice2d

@@ -35,6 +35,8 @@ void FlowParameters::validate() const {
   require_non_negative(Q, "Q");
   require_positive(E_over_M, "E_over_M");
   require_closed(b, "b", 0.0, 1.0);
+  require_finite(E_over_Kw, "E_over_Kw");
+  require_positive(E_over_Kw, "E_over_Kw");
   require_positive(iota, "iota");
   require_positive(time_step, "time_step");
   if (!(refinement_tolerance > 0.0 && refinement_tolerance < 1e-6))
@@ -42,24 +44,32 @@ void FlowParameters::validate() const {
   if (max_refinements < 1) throw InputError("max_refinements = " + std::to_string(max_refinements) + ", allowed: >= 1");
   if (refresh_after_refinements < 0)
     throw InputError("refresh_after_refinements = " + std::to_string(refresh_after_refinements) + ", allowed: >= 0");
-  if (borehole_storage != BoreholeStorage::biot_modulus && borehole_storage != BoreholeStorage::none)
+  if (borehole_storage != BoreholeStorage::biot_modulus && borehole_storage != BoreholeStorage::none &&
+      borehole_storage != BoreholeStorage::fluid)
     throw InputError("borehole_storage = " + std::to_string(static_cast<int>(borehole_storage)) +
-                     ", allowed: biot-modulus, none");
-  if (borehole_deformation != BoreholeDeformation::biot && borehole_deformation != BoreholeDeformation::none)
+                     ", allowed: biot-modulus, none, fluid");
+  if (borehole_deformation != BoreholeDeformation::biot && borehole_deformation != BoreholeDeformation::none &&
+      borehole_deformation != BoreholeDeformation::full)
     throw InputError("borehole_deformation = " + std::to_string(static_cast<int>(borehole_deformation)) +
-                     ", allowed: biot, none");
+                     ", allowed: biot, none, full");
   require_finite(source_x, "source_x");
   require_finite(source_y, "source_y");
 }
 
 BoreholeDeformation default_borehole_deformation(BoreholeStorage storage) {
-  return storage == BoreholeStorage::none ? BoreholeDeformation::none : BoreholeDeformation::biot;
+  switch (storage) {
+    case BoreholeStorage::none: return BoreholeDeformation::none;
+    case BoreholeStorage::fluid: return BoreholeDeformation::full;
+    case BoreholeStorage::biot_modulus: break;
+  }
+  return BoreholeDeformation::biot;
 }
 
 FlowParameters flow_parameters_of(const hm::analytic::DimensionlessParameters& parameters, double dt) {
   FlowParameters flow;
   flow.Q = parameters.Q;
   flow.E_over_M = parameters.material.E_over_M;
+  flow.E_over_Kw = parameters.E_over_Kw;
   flow.b = parameters.material.b;
   flow.iota = parameters.iota;
   flow.time_step = dt;
@@ -237,13 +247,30 @@ double FlowNetwork::conductance(int beam) const {
   return broken_[static_cast<std::size_t>(beam)] ? parameters_.iota * c : c;
 }
 
+double FlowNetwork::borehole_storage_coefficient() const {
+  switch (parameters_.borehole_storage) {
+    case BoreholeStorage::biot_modulus: return parameters_.E_over_M * borehole_volume_;
+    case BoreholeStorage::fluid: return parameters_.E_over_Kw * borehole_volume_;
+    case BoreholeStorage::none: break;
+  }
+  return 0.0;
+}
+
+double FlowNetwork::borehole_deformation_coefficient() const {
+  switch (parameters_.borehole_deformation) {
+    case BoreholeDeformation::biot: return parameters_.b;
+    case BoreholeDeformation::full: return 1.0;
+    case BoreholeDeformation::none: break;
+  }
+  return 0.0;
+}
+
 void FlowNetwork::assemble_values(double dt, double storage_scale, Eigen::VectorXd& values) const {
   values = Eigen::VectorXd::Zero(solver_->matrix.nonZeros());
   for (int s = 0; s < n_triangles_; ++s)
     values[solver_->diagonal_slot[static_cast<std::size_t>(s)]] = storage_scale * parameters_.E_over_M * triangle_area_[s];
-  if (has_borehole_ && parameters_.borehole_storage == BoreholeStorage::biot_modulus)
-    values[solver_->diagonal_slot[static_cast<std::size_t>(n_triangles_)]] =
-        storage_scale * parameters_.E_over_M * borehole_volume_;
+  if (has_borehole_)
+    values[solver_->diagonal_slot[static_cast<std::size_t>(n_triangles_)]] = storage_scale * borehole_storage_coefficient();
   for (std::size_t e = 0; e < connections_.size(); ++e) {
     const double g = dt * conductance(static_cast<int>(e));
     const auto& slot = solver_->connection_slot[e];
@@ -345,15 +372,16 @@ FlowStepSummary FlowNetwork::solve(double dt, const Eigen::VectorXd& volume_chan
   summary.message = factorise_if_needed(dt);
   if (!summary.message.empty()) return summary;
 
-  const bool borehole_stores = has_borehole_ && parameters_.borehole_storage == BoreholeStorage::biot_modulus;
   Eigen::VectorXd storage_coefficient(n);
   storage_coefficient.head(n_triangles_) = parameters_.E_over_M * triangle_area_;
-  if (has_borehole_) storage_coefficient[n_triangles_] = borehole_stores ? parameters_.E_over_M * borehole_volume_ : 0.0;
+  if (has_borehole_) storage_coefficient[n_triangles_] = borehole_storage_coefficient();
 
-  // The b (V^{n+1} - V^n) terms; the borehole's is dropped when it is a plain flux boundary.
+  // The b (V^{n+1} - V^n) terms; the borehole's is dropped when it is a plain flux boundary and not
+  // weighted by b when the hole is taken as all fluid.
   Eigen::VectorXd deformation = volume_change.size() > 0 ? Eigen::VectorXd(parameters_.b * volume_change)
                                                          : Eigen::VectorXd::Zero(n);
-  if (has_borehole_ && parameters_.borehole_deformation == BoreholeDeformation::none) deformation[n_triangles_] = 0.0;
+  if (has_borehole_) deformation[n_triangles_] = borehole_deformation_coefficient() *
+                                                 (volume_change.size() > 0 ? volume_change[n_triangles_] : 0.0);
   Eigen::VectorXd rhs = storage_coefficient.cwiseProduct(pressure_) - deformation;
   rhs[has_borehole_ ? n_triangles_ : source_triangle_] += summary.injected;
 

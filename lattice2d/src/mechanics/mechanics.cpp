@@ -369,6 +369,29 @@ void BeamMechanics::change_state(int beam, BeamState to) {
   solver_->modify(W, sigma);
 }
 
+void BeamMechanics::remove_normal_spring(int beam) {
+  // The spring's k g g^T on (x_i, y_i, x_j, y_j), g = (-n, n), as setup_system assembles it: one
+  // downdate with the column sqrt(k) g, and its share of the held-DOF term.
+  const double k = springs_[beam];
+  const auto d = beam_dofs(lattice_, beam);
+  const Eigen::Vector2d n = lattice_.direction.col(beam);
+  const std::array<int, 4> t = {d[0], d[1], d[3], d[4]};
+  const std::array<double, 4> g = {-n.x(), -n.y(), n.x(), n.y()};
+  double elong_h = 0.0;
+  for (std::size_t a = 0; a < 4; ++a) elong_h += g[a] * held_value_[t[a]];
+  std::vector<Eigen::Triplet<double>> w;
+  for (std::size_t a = 0; a < 4; ++a) {
+    held_term_[t[a]] -= k * g[a] * elong_h;
+    const int r = free_index_[static_cast<std::size_t>(t[a])];
+    if (r >= 0 && g[a] != 0.0) w.emplace_back(r, 0, std::sqrt(k) * g[a]);
+  }
+  springs_[beam] = 0.0;
+  if (w.empty()) return;
+  SpdSolver::Matrix W(n_free_dofs(), 1);
+  W.setFromTriplets(w.begin(), w.end());
+  solver_->modify(W, -1);
+}
+
 BeamState BeamMechanics::break_beam(int beam) {
   if (beam < 0 || beam >= lattice_.n_beams())
     throw hm::InputError("beam = " + std::to_string(beam) + ", allowed: 0 <= beam < " + std::to_string(lattice_.n_beams()));
@@ -377,6 +400,8 @@ BeamState BeamMechanics::break_beam(int beam) {
   const Eigen::Vector2d du(raw_[dof_index(j, 0)] - raw_[dof_index(i, 0)], raw_[dof_index(j, 1)] - raw_[dof_index(i, 1)]);
   const BeamState to = du.dot(lattice_.direction.col(beam)) < 0.0 ? BeamState::contact : BeamState::open;
   change_state(beam, to);
+  if (broken_spring_ == BrokenBeamSpring::drop && springs_.size() > 0 && springs_[beam] > 0.0)
+    remove_normal_spring(beam);
   check_detachment(i, j);
   return states_[static_cast<std::size_t>(beam)];
 }
@@ -540,7 +565,7 @@ void BeamMechanics::move_pin() {
   pinned_particle_ = best;
 }
 
-void BeamMechanics::set_normal_springs(const Eigen::VectorXd& stiffness) {
+void BeamMechanics::set_normal_springs(const Eigen::VectorXd& stiffness, BrokenBeamSpring broken) {
   if (stiffness.size() != 0 && stiffness.size() != lattice_.n_beams())
     throw hm::InputError("normal_springs: size = " + std::to_string(stiffness.size()) +
                          ", allowed: 0 or n_beams = " + std::to_string(lattice_.n_beams()));
@@ -549,6 +574,9 @@ void BeamMechanics::set_normal_springs(const Eigen::VectorXd& stiffness) {
       throw hm::InputError("normal_springs[" + std::to_string(e) + "] = " + hm::core::format_value(stiffness[e]) +
                            ", allowed: finite, >= 0");
   springs_ = stiffness;
+  broken_spring_ = broken;
+  if (broken == BrokenBeamSpring::drop)
+    for (int e : broken_) springs_[e] = 0.0;
   setup_system();
 }
 

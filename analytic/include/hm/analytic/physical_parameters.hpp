@@ -41,6 +41,9 @@ struct DimensionlessParameters {
   double compressive_strength = 3.33e-3;
   /// mu_i, internal friction coefficient of Eq. 11 (Table 1: 0.9). Allowed: >= 0.
   double friction = 0.9;
+  /// E/K_w, the fluid's compressibility in units of the rock's (Table 1: 1e10/2.2e9); it enters E/M
+  /// through Eq. 22 and, on its own, the storage of a water-filled borehole. Allowed: > 0.
+  double E_over_Kw = table1_E_over_Kw;
 
   void validate() const;
 };

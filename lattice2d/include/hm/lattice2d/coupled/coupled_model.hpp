@@ -120,7 +120,8 @@ struct TimeStepping {
   double t_end = 1e-4;
   /// A step whose coupling loop does not converge (status not_converged) is retried with half the
   /// step, at most this many times, before run() stops; the nominal dt then grows again from there.
-  /// Our choice 8 (dt / 256). Breaks made by a failed attempt stay (broken beams never heal).
+  /// Our choice 8 (dt / 256). A failed attempt leaves no trace: its breaks are undone with the rest
+  /// of its state (CoupledModel::step), so the retry breaks what the shorter step breaks.
   /// Allowed: 0 ... 50.
   int max_step_halvings = 8;
   /// Times at which run() calls its observer besides t = 0 (steps are shortened to land on them).
@@ -223,7 +224,7 @@ class CoupledModel {
   const std::vector<BreakEvent>& break_log() const { return break_log_; }
 
   /// One coupled step of length dt > 0. On failure (status not_converged or solver_failure) the state
-  /// is left at t^n; the summary says why.
+  /// is restored to t^n bit for bit, breaks of the failed attempt included; the summary says why.
   CoupledStepSummary step(double dt);
 
   /// Observer of run(): called after every accepted step, with `is_output` true at t = 0, at each
@@ -271,7 +272,8 @@ class CoupledModel {
   const FlowNetwork& flow() const { return *flow_; }
   const BeamMechanics& mechanics() const { return *mechanics_; }
   const CouplingOptions& options() const { return options_; }
-  /// Per-beam spring stiffness of Eq. 20 (zero for the drained split).
+  /// Per-beam spring stiffness of Eq. 20 on the intact lattice (zero for the drained split); the
+  /// current ones, without dropped springs of broken beams, are mechanics().normal_springs().
   const Eigen::VectorXd& spring_stiffness() const { return springs_; }
   int n_broken() const;
 
@@ -290,6 +292,10 @@ class CoupledModel {
   void finish_step(double dt, bool converged, DualGraph dual, CoupledStepSummary& summary);  // accept or restore t^n
   Eigen::Matrix2Xd positions(const Eigen::VectorXd& u) const;
   Eigen::VectorXd unknown_volumes(const DualGraph& dual) const;  // V_s, then V_h
+  // save_state without the run cursor: what step() restores after a failed attempt. The accepted
+  // geometry (current_dual_, volume_) is not in it: only an accepted step changes it.
+  void save_model_state(core::StateWriter& w) const;
+  void restore_model_state(core::StateReader& r);
   // The accepted u and the linear predictor's history, saved (const Self) or restored (save_state).
   template <class Archive, class Self>
   static void transfer_history(Archive& a, Self& m);

@@ -11,6 +11,7 @@
 
 #include "hm/lattice2d/geometry/dual_graph.hpp"
 #include "hm/lattice2d/geometry/lattice.hpp"
+#include "hm/lattice2d/mechanics/beam_stiffness.hpp"
 
 namespace hm::lattice2d {
 
@@ -27,6 +28,10 @@ struct CouplingTerms {
   /// total-stress boundary condition), lumped half to each end of a wall beam, besides the b-weighted
   /// Voronoi-segment forces. Our choice true; see docs/coupling.md. No effect without a borehole.
   bool borehole_wall_traction = true;
+  /// The Psi spring of a beam that breaks: kept (default: the fluid in the segment is still there) or
+  /// dropped with the beam. Psi is a convergence parameter of the split; with "keep" and fracture
+  /// checks at every pass it also stiffens cracks while they form (docs/coupling.md).
+  BrokenBeamSpring broken_beam_spring = BrokenBeamSpring::keep;
 
   /// Throws hm::InputError "coupling.field = value, allowed: rule".
   void validate() const;

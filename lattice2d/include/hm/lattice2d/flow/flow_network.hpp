@@ -25,20 +25,24 @@ namespace hm::lattice2d {
 enum class BoreholeStorage {
   biot_modulus,  ///< (E/M) V_h (p_h^{n+1} - p_h^n), Eq. 16 as printed (dimensionless form); default
   none,          ///< no storage term: the borehole only passes Q on (Appendix A / fdm1d's choice)
+  fluid,         ///< (E/K_w) V_h (p_h^{n+1} - p_h^n): a hole filled with water, compressed as water
 };
 constexpr auto enum_names(BoreholeStorage) {
-  return core::enum_table<BoreholeStorage>({
-      {BoreholeStorage::biot_modulus, "biot-modulus"}, {BoreholeStorage::none, "none"}});
+  return core::enum_table<BoreholeStorage>({{BoreholeStorage::biot_modulus, "biot-modulus"},
+                                            {BoreholeStorage::none, "none"},
+                                            {BoreholeStorage::fluid, "fluid"}});
 }
 
 /// Whether the borehole node takes the deformation term of Eq. 16, -b (V_h^{n+1} - V_h^n).
 enum class BoreholeDeformation {
   biot,  ///< Eq. 16 as printed: the borehole's area change weighted by b, like a triangle's; default
   none,  ///< no term: the borehole is a flux boundary that passes Q on (Appendix A / fdm1d's choice)
+  full,  ///< -(V_h^{n+1} - V_h^n): the hole holds only fluid, so all of its area change is fluid volume
 };
 constexpr auto enum_names(BoreholeDeformation) {
-  return core::enum_table<BoreholeDeformation>({
-      {BoreholeDeformation::biot, "biot"}, {BoreholeDeformation::none, "none"}});
+  return core::enum_table<BoreholeDeformation>({{BoreholeDeformation::biot, "biot"},
+                                                {BoreholeDeformation::none, "none"},
+                                                {BoreholeDeformation::full, "full"}});
 }
 
 /// Parameters of the flow network. Every default is set here; validate() checks each rule.
@@ -52,6 +56,10 @@ struct FlowParameters {
   /// b, Biot coefficient multiplying the volume change V^{n+1} - V^n in Eqs. 15-16.
   /// Allowed: 0 <= b <= 1.
   double b = 0.5;
+  /// E/K_w, the borehole water's storage coefficient with borehole_storage = fluid (dimensionless:
+  /// fluid volume stored per unit pressure over E, per unit hole volume). Default Table 1's
+  /// E = 1e10 Pa over K_w = 2.2e9 Pa. Allowed: > 0, finite.
+  double E_over_Kw = hm::analytic::table1_E_over_Kw;
   /// iota = k_f/k, conductance factor of Voronoi segments crossing broken beams (Section 2.2).
   /// Allowed: > 0, finite.
   double iota = 1.0;
@@ -92,7 +100,7 @@ struct FlowParameters {
 };
 
 /// The borehole deformation term that goes with a borehole storage: Eq. 16's b dV_h with its storage,
-/// none without. With no storage p_h is set by b dV_h alone and the coupling loop through the borehole
+/// the full dV_h with the water-filled hole's (fluid), none without. With no storage p_h is set by b dV_h alone and the coupling loop through the borehole
 /// node does not converge (docs/coupling.md, section 3), so a case reader takes this as the default.
 BoreholeDeformation default_borehole_deformation(BoreholeStorage storage);
 
@@ -245,6 +253,8 @@ class FlowNetwork {
   };
 
   double conductance(int beam) const;  // A/d times iota if broken
+  double borehole_storage_coefficient() const;      // s_h of Eq. 16 per borehole_storage
+  double borehole_deformation_coefficient() const;  // the weight of dV_h per borehole_deformation
   void assemble_values(double dt, double storage_scale, Eigen::VectorXd& values) const;
   std::string factorise_if_needed(double dt);  // empty on success
   std::string factorise(double dt);            // assemble and factorise for dt; empty on success

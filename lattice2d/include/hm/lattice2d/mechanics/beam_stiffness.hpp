@@ -77,6 +77,17 @@ enum class BeamState : std::uint8_t {
   open,     ///< broken, particles apart: no force (Eq. 8 with H = 0)
 };
 
+/// What happens to the undrained split's normal spring of a beam (Eq. 20, BeamMechanics::
+/// set_normal_springs) when the beam breaks. The spring stands for the pore fluid's resistance to the
+/// Voronoi segment's change of volume, a convergence device of the operator split, not a bond.
+enum class BrokenBeamSpring {
+  keep,  ///< the spring stays (the fluid is still there); default, as the model has always run
+  drop,  ///< the spring goes with the beam, so the split's Psi cannot hold a crack closed
+};
+constexpr auto enum_names(BrokenBeamSpring) {
+  return core::enum_table<BrokenBeamSpring>({{BrokenBeamSpring::keep, "keep"}, {BrokenBeamSpring::drop, "drop"}});
+}
+
 /// Broken flags from beam states: true where state != BeamState::intact (the flow network's view of
 /// the beams: a broken beam, open or in contact, is a fracture channel).
 std::vector<bool> broken_flags(const std::vector<BeamState>& states);

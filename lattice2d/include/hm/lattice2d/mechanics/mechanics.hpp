@@ -166,8 +166,9 @@ class BeamMechanics {
   /// the undrained split of the coupling (Eq. 20, coupling.hpp); empty or all zero: none. Part of the
   /// matrix (re-assembled and refactorised once here), of reactions() and of the equilibrium residual;
   /// not part of beam_forces() (the springs are a numerical device, not a bond). Throws hm::InputError.
-  void set_normal_springs(const Eigen::VectorXd& stiffness);
-  /// The springs of set_normal_springs (empty if none).
+  /// With BrokenBeamSpring::drop, a beam's spring goes with the beam when it breaks (break_beam).
+  void set_normal_springs(const Eigen::VectorXd& stiffness, BrokenBeamSpring broken = BrokenBeamSpring::keep);
+  /// The springs of set_normal_springs (empty if none), zero where a dropped spring's beam broke.
   const Eigen::VectorXd& normal_springs() const { return springs_; }
 
   /// Displacements (3 n_particles, dof = 3 i + component) of the last solve (0 before).
@@ -230,6 +231,8 @@ class BeamMechanics {
   Eigen::VectorXd displacement_;
   std::vector<int> broken_;      // beams not intact
   Eigen::VectorXd springs_;      // set_normal_springs, per beam (empty: none)
+  BrokenBeamSpring broken_spring_ = BrokenBeamSpring::keep;
+  void remove_normal_spring(int beam);  // a rank-1 downdate of k n n^T
   std::unique_ptr<SpdSolver> solver_;
 };
 
