@@ -140,8 +140,8 @@ TEST_CASE("Fast injection breaks the 1D wall at p_b_fast, at second order in dr 
   // Q = 1: the wall fails at t ~ 2e-8, when the pressurised layer sqrt(t/S) is 1.3e-4 thick, 1e-3 R_i,
   // so the finite-rate error (of order the layer over R_i, and the drained part of the bulk) is ~1e-5
   // (study, table (c): Q = 10 at n_r = 1e5 repeats Q = 1 at n_r = 1e4 to 2e-5 at b = 0.5). The grid
-  // must resolve the layer: dr = 8.6e-5 ... 8.6e-6. Constant dt = t_b/400, one factorisation; the
-  // time step's share of the error: study, table (d).
+  // must resolve the layer: dr = 8.6e-5 ... 8.6e-6. Constant dt = t_b/400, one factorisation; halving
+  // it moves p_b by 1e-6 (first order: its share of the error is ~2e-6; study, table (d)).
   const DimensionlessParameters d = borehole(0.5, 1.0);
   const double p_b_fast = hm::analytic::fast_breakdown_pressure(d);
   const double t_b = half_space_time(d, p_b_fast);
