@@ -1,6 +1,7 @@
 // [fracture] stop_at_first_break = true: the run ends, complete, with the accepted step that breaks the
 // first beam, and that step is exactly the one the same case without the key breaks first (bit for bit),
-// written as an output time; stopped before it and resumed, it ends at the same step with the same files.
+// written as an output time; stopped before it and resumed, it ends at the same step with the same files;
+// with no break it runs to t_end and says so.
 #include <catch2/catch.hpp>
 
 #include <filesystem>
@@ -150,4 +151,21 @@ TEST_CASE("A stop_at_first_break run stopped before its first break and resumed 
   CHECK_FALSE(std::filesystem::exists(dir.path / "part/checkpoint.bin"));
   CHECK_FALSE(std::filesystem::exists(dir.path / "part/status.toml"));
   CHECK_THAT(slurp(dir.path / "part/.hmlattice"), !Catch::Contains("complete = false"));
+}
+
+TEST_CASE("A stop_at_first_break run in which nothing breaks goes to t_end and says so", "[case][cli]") {
+  TempDir dir("run-first-break-none");
+  std::string text = small_fig12(true);
+  // t_end = 1e-4 is before the first break (t* = 2.08e-4); the output times beyond it are dropped.
+  text.replace(text.find("t_end = 0.0045"), 14, "t_end = 1e-4");
+  text.replace(text.find("times = [0.002, 0.0045]"), 23, "times = [1e-4]");
+  dir.write("case.toml", text);
+  const auto r = run_hmlattice("run case.toml --out run", dir.path);
+  INFO("stdout: " << r.out << "\nstderr: " << r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK_THAT(r.out, Catch::Contains("No beam broke by t_end = 1e-04\n"));
+  CHECK_THAT(r.out, !Catch::Contains("Stopped at the first break"));
+  CHECK(cells_of(lines_of(slurp(dir.path / "run/breakdown.csv"))[1])[0] == "nan");
+  CHECK(cells_of(lines_of(slurp(dir.path / "run/series.csv")).back())[0] == "0.0001");
+  CHECK_THAT(slurp(dir.path / "run/.hmlattice"), !Catch::Contains("complete = false"));
 }

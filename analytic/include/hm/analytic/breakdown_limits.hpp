@@ -20,7 +20,7 @@ namespace hm::analytic {
 /// L = (1 + R_i^2)/(1 - R_i^2) (Lame's wall hoop stress per unit inner pressure),
 /// eta = poroelastic_stress_coefficient(b, nu). Exact in quasi-static radial poroelasticity (the
 /// thermoelastic analogy); time enters only through p_h and p_mean, whatever the fluid equation.
-/// Preconditions: 0 < R_i < 1, 0 <= b <= 1, 0 < nu < 0.5 (asserted).
+/// Preconditions: 0 < R_i < 1 (asserted), 0 <= b <= 1, 0 < nu < 0.5.
 double annulus_wall_hoop_stress(double p_h, double p_mean, double b, double nu, double R_i);
 
 /// p_mean/p_h of the Q -> infinity limit: the pressurised layer at the wall vanishes, and the rock
