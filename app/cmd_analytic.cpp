@@ -1,7 +1,8 @@
 // hmlattice analytic <solution>: evaluate a closed-form solution of analytic/ and print CSV
 // (a header row, then one row per radius; per (r, theta) pair for insitu, per formula for
-// breakdown-insitu) to stdout. Dimensionless, tension positive (far-field magnitudes S_H, S_h and
-// pressures are given compression positive, as geomechanics states them).
+// breakdown-insitu, per Biot coefficient for breakdown) to stdout. Dimensionless, tension positive
+// (far-field magnitudes S_H, S_h and pressures are given compression positive, as geomechanics
+// states them).
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -15,6 +16,7 @@
 #include "commands.hpp"
 #include "hm/analytic/biot_modulus.hpp"
 #include "hm/analytic/breakdown_insitu.hpp"
+#include "hm/analytic/breakdown_limits.hpp"
 #include "hm/analytic/insitu_annulus.hpp"
 #include "hm/analytic/lame.hpp"
 #include "hm/analytic/rudnicki.hpp"
@@ -251,6 +253,38 @@ void add_breakdown_insitu(CLI::App* parent) {
   });
 }
 
+void add_breakdown(CLI::App* parent) {
+  struct Args {
+    std::vector<double> b;
+    hm::analytic::DimensionlessParameters d;  // Table 1's nu, R_i, T_u
+  };
+  auto a = std::make_shared<Args>();
+  auto* cmd = parent->add_subcommand(
+      "breakdown", "Breakdown-pressure limits of the unfractured borehole (1D model): q_min, slow, fast, jacketed");
+  cmd->add_option("--b", a->b, "comma-separated Biot coefficients; E/M by Eq. 22 with Table 1's porosity, K_w, E")
+      ->delimiter(',')
+      ->required();
+  cmd->add_option("--nu", a->d.material.nu, "Poisson ratio")->capture_default_str();
+  cmd->add_option("--Ri,--R_i", a->d.R_i, "borehole radius R_i/R")->capture_default_str();
+  cmd->add_option("--Tu,--T_u", a->d.tensile_strength, "tensile strength T_u/E")->capture_default_str();
+  cmd->callback([a] {
+    // Named as the user typed them; every row is validated before any is printed.
+    require_open(a->d.material.nu, "nu", 0.0, 0.5);
+    require_open(a->d.R_i, "Ri", 0.0, 1.0);
+    require_positive(a->d.tensile_strength, "Tu");
+    std::vector<std::vector<double>> rows;
+    for (double b : a->b) {
+      require_closed(b, "b", 0.0, 1.0);
+      DimensionlessParameters d = a->d;
+      d.material.b = b;
+      d.material.E_over_M = E_over_M_table1(b, d.material.nu);
+      const BreakdownLimits l = breakdown_limits(d);
+      rows.push_back({b, l.q_min, l.p_b_slow, l.p_b_fast, l.p_b_jacketed});
+    }
+    print_table({"b", "q_min", "p_b_slow", "p_b_fast", "p_b_jacketed"}, rows);
+  });
+}
+
 }  // namespace
 
 void add_analytic_command(CLI::App& app, int& /*exit_code*/) {
@@ -262,6 +296,7 @@ void add_analytic_command(CLI::App& app, int& /*exit_code*/) {
   add_lame(cmd);
   add_insitu(cmd);
   add_breakdown_insitu(cmd);
+  add_breakdown(cmd);
 }
 
 }  // namespace hm::app

@@ -10,6 +10,8 @@
 //   vtk/         lattice.pvd + lattice_NNNN.vtu snapshots for ParaView (pressure per triangle)
 //   config.toml  the resolved case + provenance; rerunnable as a case
 //   checkpoint.bin  while the run is not complete: the state --resume continues from (checkpoint.hpp)
+// With [fracture] stop_at_first_break = true the run ends, complete, with the step that breaks the
+// first beam, and that step is written as an output time (radial.csv, VTK, fracture tables).
 // DIR must be new or empty, or an earlier result folder with --overwrite (hm/core/result_folder.hpp).
 // Examples:
 //   hmlattice run cases/fig07_rudnicki_free_quick.toml --out out/fig07_quick
@@ -101,7 +103,8 @@ void run_case(const RunArgs& a, int& exit_code, const std::string& command_line)
               << (out->path() / cases::checkpoint_file_name).string() << "\n";
 
   // 3. Run: the initial state, then while time remains a coupled step; each step is recorded, and a
-  //    checkpoint written at the output times and every checkpoint_seconds of wall time.
+  //    checkpoint written at the output times and every checkpoint_seconds of wall time. With
+  //    stop_at_first_break, the step that breaks the first beam is recorded as an output and is the last.
   cases::ProgressReporter progress(std::cout, "run");
   const core::InterruptRequest interrupt;  // Ctrl-C or SIGTERM: stop after the step, keep the results
   int step = first_step;
@@ -115,9 +118,13 @@ void run_case(const RunArgs& a, int& exit_code, const std::string& command_line)
     last_checkpoint = std::chrono::steady_clock::now();
   };
   double step_seconds = 0.0;  // for the ETA of the progress line
+  const auto is_first_break_end = [&](const lattice2d::CoupledModel& m) {
+    return c.stop_at_first_break && m.n_broken() > 0;
+  };
+  bool stopped_at_first_break = false;
   const auto run = model->run(c.stepping, [&](const lattice2d::CoupledModel& m, const lattice2d::CoupledStepSummary& s,
                                               bool is_output) {
-    recorder->record(m, s, is_output);
+    recorder->record(m, s, is_output || is_first_break_end(m));
     step = m.run_cursor().totals.n_steps;  // accepted steps so far (0 at the initial state)
     const double since = std::chrono::duration<double>(std::chrono::steady_clock::now() - last_checkpoint).count();
     if (step > 0 && (is_output || since >= a.checkpoint_seconds || step == a.stop_after_steps)) checkpoint(m);
@@ -133,7 +140,12 @@ void run_case(const RunArgs& a, int& exit_code, const std::string& command_line)
                         (s.n_mechanics_update_failures > 0
                              ? "; last failed update: " + m.mechanics().solver().report().last_update_failure
                              : std::string()));
-  }, [&] { return interrupt.signal() != 0 || step == a.stop_after_steps; });
+  }, [&] {
+    stopped_at_first_break = is_first_break_end(*model);
+    return stopped_at_first_break || interrupt.signal() != 0 || step == a.stop_after_steps;
+  });
+  // Ending at the first break is the run's end, not an interruption (whatever else came with that step).
+  const bool complete = run.is_ok() || stopped_at_first_break;
   char summary[500];
   std::snprintf(summary, sizeof summary,
                 "%d steps (%d halved), %d coupling iterations (= flow factorisations and solves), %d beams broken "
@@ -153,9 +165,9 @@ void run_case(const RunArgs& a, int& exit_code, const std::string& command_line)
   //    incomplete, with status.toml saying why and where it stopped; an interrupted one has a
   //    checkpoint of its last step (a numerical failure keeps the last one before: the failed
   //    attempts' breaks stay in the model, so its state is not a step's).
-  if (run.status == lattice2d::CoupledStatus::interrupted && checkpoint_step != step) checkpoint(*model);
+  if (!complete && run.status == lattice2d::CoupledStatus::interrupted && checkpoint_step != step) checkpoint(*model);
   recorder->finish();
-  if (!run.is_ok()) {
+  if (!complete) {
     const bool interrupted = run.status == lattice2d::CoupledStatus::interrupted;
     const std::string why = !interrupted                ? "numerical failure: " + run.message
                             : interrupt.signal() != 0 ? std::string("interrupted by ") + interrupt.signal_name()
@@ -177,6 +189,11 @@ void run_case(const RunArgs& a, int& exit_code, const std::string& command_line)
   std::filesystem::remove(out->path() / "status.toml", ec);  // a resumed run is complete now
   std::filesystem::remove(out->path() / cases::checkpoint_file_name, ec);
   out->commit();
+  if (stopped_at_first_break)
+    std::cout << "Stopped at the first break: t* = " << core::format_value(recorder->breakdown().t_first)
+              << ", p_h = " << core::format_value(recorder->breakdown().p_first) << " (step " << step << ")\n";
+  else if (c.stop_at_first_break)
+    std::cout << "No beam broke by t_end = " << core::format_value(c.stepping.t_end) << "\n";
   std::cout << "Results: " << out->target().string() << (c.fracture_enabled ? "/{series,radial,breaks,breakdown,fractures,fracture_summary}.csv, " : "/{series,radial}.csv, ") << (c.output.vtk ? "vtk/lattice.pvd, " : "")
             << "config.toml\n";
 }

@@ -125,6 +125,9 @@ CaseKeys<RunCase> make_run_case_keys() {
                "retries of an unconverged step with half the step");
   k.table("fracture")
       .boolean("enabled", [](auto& c) -> auto& { return c.fracture_enabled; }, "break beams (Eq. 11)")
+      .boolean("stop_at_first_break", [](auto& c) -> auto& { return c.stop_at_first_break; },
+               "end the run with the step that breaks the first beam (breakdown.csv's), its state written as an "
+               "output time's", "true or false; true only with enabled = true")
       .choice("distribution", [](auto& c) -> auto& { return c.strength.distribution; },
               "the beams' strength heterogeneity around [physics]' means")
       .real("width", [](auto& c) -> auto& { return c.strength.width; }, "0 <= width < 1", "uniform: relative half-width")
@@ -137,7 +140,10 @@ CaseKeys<RunCase> make_run_case_keys() {
                "the crack-tip factor (L/2L_m)^(1/2) of Fig. 2")
       .real("crack_tip_length", [](auto& c) -> auto& { return c.break_loop.crack_tip.material_length; }, "> 0",
             "L_m over R, the crack-tip factor's material length")
-      .check([](CaseTable&, CaseTable&, RunCase& c) {
+      .check([](CaseTable& fracture, CaseTable&, RunCase& c) {
+        if (c.stop_at_first_break && !c.fracture_enabled)
+          fracture.fail("stop_at_first_break = true, allowed: true only with enabled = true (no beam breaks with "
+                        "fracture disabled)");
         // The mean strengths and mu_i are the material's ([physics]).
         auto& st = c.strength;
         st.tensile_strength = c.physics.parameters.tensile_strength;

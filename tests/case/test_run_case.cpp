@@ -82,6 +82,11 @@ TEST_CASE("Bad 2D cases are rejected with one line naming table, key, value and 
   rejected(physics + "[fracture]\nwidth = 1.5\n", "case.toml: [fracture] width = 1.5, allowed: ");
   rejected(physics + "[fracture]\ndistribution = \"normal\"\n", "case.toml: [fracture] distribution = 'normal', allowed: ");
   rejected(physics + "[fracture]\ncrack_tip_length = 0\n", "case.toml: [fracture] crack_tip_length = 0, allowed: ");
+  rejected(physics + "[fracture]\nstop_at_first_break = true\n",
+           "case.toml: [fracture] stop_at_first_break = true, allowed: true only with enabled = true");
+  rejected(physics + "[fracture]\nenabled = true\nstop_at_first_break = \"yes\"\n",
+           "case.toml: [fracture] stop_at_first_break = ");
+  rejected(physics + "[fracture]\nenabled = true\nstop_at_first_break = 1\n", "case.toml: [fracture] stop_at_first_break = ");
   rejected("[physics]\nQ = 0.1\nR_i = 0\ntensile_strength = -1\n", "case.toml: [physics] tensile_strength = -1, allowed: ");
   rejected(physics + "[numerics]\ndt_initial = -1\n", "case.toml: [numerics] dt_initial = -1, allowed: ");
   rejected(physics + "[numerics]\ndt_growth = 0.9\n", "case.toml: [numerics] dt_growth = 0.9, allowed: >= 1");
@@ -222,7 +227,7 @@ TEST_CASE("A fracturing borehole run writes the break log, breakdown and fractur
   // At least one radial fracture from the borehole at the end (the tensile hoop stress peaks at the wall).
   CHECK_THAT(fractures, Catch::Contains(",radial,"));
   const auto config = hm::test::slurp(dir.path / "run" / "config.toml");
-  CHECK_THAT(config, Catch::Contains("[fracture]\nenabled = true\ndistribution = \"uniform\""));
+  CHECK_THAT(config, Catch::Contains("[fracture]\nenabled = true\nstop_at_first_break = false\ndistribution = \"uniform\""));
   CHECK_THAT(config, Catch::Contains("fracture_link = \"particle\""));
 
   // hmlattice fractures recomputes the same statistics from config.toml and breaks.csv (the rule the

@@ -124,9 +124,10 @@ class CaseKeys {
                 [field](const Case& c) { return std::to_string(field(c)); }});
   }
 
+  /// A boolean; `allowed` states a rule the table's check enforces (e.g. one that needs another key).
   template <class Field>
-  CaseKeys& boolean(std::string name, Field field, std::string help) {
-    return key({name, "boolean", "", "true or false", std::move(help),
+  CaseKeys& boolean(std::string name, Field field, std::string help, std::string allowed = "true or false") {
+    return key({name, "boolean", "", std::move(allowed), std::move(help),
                 [name, field](CaseTable& t, Case& c) { field(c) = t.get_bool(name, field(c)); },
                 [field](const Case& c) { return toml_bool(field(c)); }});
   }

@@ -49,6 +49,10 @@ struct RunCase {
   hm::lattice2d::CouplingOptions coupling;
   hm::lattice2d::TimeStepping stepping;         ///< output times from [output] times
   bool fracture_enabled = false;
+  /// End the run with the accepted step that breaks the first beam: Section 3.5's breakdown pressure
+  /// is known then, and the fracture after it is not needed (Fig. 18). That step's state is written
+  /// as an output time's; the folder is complete. Allowed only with fracture_enabled. Default false.
+  bool stop_at_first_break = false;
   /// Beam strengths (means from [physics]) and the break loop's crack-tip rule; used when enabled.
   hm::lattice2d::StrengthSpec strength;
   hm::lattice2d::BreakLoopOptions break_loop;
