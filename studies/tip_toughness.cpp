@@ -17,10 +17,10 @@
 //   K_c = p_c sqrt(pi c) F,
 // with F = 1 for Sneddon's crack and, for the wall crack, the weight-function F of a crack-line stress
 // (wall_crack_geometry_factor below; references in docs/fracture_study.md).
-// Run: OMP_NUM_THREADS=1 HM_TIP_SEEDS=4 HM_TIP_CSV_DIR=docs/reports/fracture-study-A build/studies/study_tip_toughness
+// Run: OMP_NUM_THREADS=1 HM_TIP_CSV_DIR=docs/reports/fracture-study-A build/studies/study_tip_toughness
 // (markdown tables on stdout, each tagged [name]; ~4 min on one core at 4 seeds, ~85% of it at N = 8e4).
 // Knobs (environment): HM_TIP_N comma-separated particle counts (default 5000,20000,80000),
-// HM_TIP_SEEDS lattice seeds 1..n (default 2), HM_TIP_SEEDS_LARGEST seeds at the largest N (default
+// HM_TIP_SEEDS lattice seeds 1..n (default 4), HM_TIP_SEEDS_LARGEST seeds at the largest N (default
 // HM_TIP_SEEDS), HM_TIP_ANGLES wall-crack rays per lattice (default 4, at 90 degree spacing),
 // HM_TIP_CSV_DIR: every printed table also as <name>_<default|none>.csv there (small, long form),
 // HM_TIP_ROWS_DIR: one row per crack and variant there (wall_crack.csv, sneddon.csv; ~0.4 MB at 4 seeds).
@@ -544,7 +544,7 @@ void where_table(const std::string& name, const std::string& study, int strength
 int main() {
   try {
     const std::vector<long long> ns = env_list("HM_TIP_N", {5000, 20000, 80000});
-    const int n_seeds = static_cast<int>(env_int("HM_TIP_SEEDS", 2));
+    const int n_seeds = static_cast<int>(env_int("HM_TIP_SEEDS", 4));
     const int n_seeds_largest = static_cast<int>(env_int("HM_TIP_SEEDS_LARGEST", n_seeds));
     const int n_rays = static_cast<int>(env_int("HM_TIP_ANGLES", 4));
     const long long n_largest = *std::max_element(ns.begin(), ns.end());
@@ -581,6 +581,11 @@ int main() {
             [&](const Row& r) { return r.b.pressure / p_lame; });
       table("wall_p_tip_over_p_init", "Wall crack: p_tip / p_init, the crack's advance over the intact wall's initiation",
             "wall", s, wall_cols, "beams", [](const Row& r) { return r.tip.beam >= 0 ? r.tip.pressure / r.p_init : NAN; });
+      // p_tip is proportional to L_m^(1/2) (the tip beam's stress carries (L/2 L_m)^(1/2), p_init has no tip),
+      // so L_m (p_init / p_tip)^2 is the L_m at which this crack advances exactly at the initiation pressure.
+      table("wall_L_m_balance", "Wall crack: L_m at which p_tip = p_init, L_m (p_init / p_tip)^2 (rule-on rows agree)",
+            "wall", s, wall_cols, "beams",
+            [](const Row& r) { return r.tip.beam >= 0 && r.l_m > 0 ? r.l_m * std::pow(r.p_init / r.tip.pressure, 2) : NAN; });
       where_table("wall_first_break_where", "wall", s);
       table("wall_c_over_h", "Wall crack: c / h, depth of the crack's Voronoi tip below the wall over the mean beam length",
             "wall", s, wall_cols, "beams", [](const Row& r) { return r.tip.beam >= 0 ? r.c / r.h : NAN; });
