@@ -181,6 +181,9 @@ struct Row {
   FirstBreak tip;  // first break of a crack-tip beam: the crack's own advance
   /// K at the crack's advance, p_tip sqrt(pi c) F.
   double k_c() const { return tip.pressure * std::sqrt(std::numbers::pi * c) * f; }
+  /// K at the first break anywhere, p_first sqrt(pi c) F: what the break loop sees when the first beam
+  /// to go is a neighbour of the tip triangle rather than one of its two beams.
+  double k_first() const { return b.pressure * std::sqrt(std::numbers::pi * c) * f; }
 };
 std::vector<Row> g_rows;
 
@@ -470,9 +473,10 @@ void table(const std::string& name, const char* title, const std::string& study,
 // The drift of K_c with N at fixed L_m: the weighted least-squares slope alpha of log mean K_c against
 // log N (K_c ~ N^alpha; the beam length h ~ N^(-1/2), so K_c ~ h^(-2 alpha)), weights from each cell's
 // standard error of the mean, and alpha's standard error from them.
+template <class Value>
 void drift_table(const std::string& name, const std::string& study, int strengths, const std::vector<int>& columns,
-                 const char* column_unit) {
-  const Cells cells = collect(study, strengths, [](const Row& r) { return r.tip.beam >= 0 ? r.k_c() : NAN; });
+                 const char* column_unit, Value k_of_row) {
+  const Cells cells = collect(study, strengths, k_of_row);
   struct Point {
     double x, y, w;
   };
@@ -482,7 +486,7 @@ void drift_table(const std::string& name, const std::string& study, int strength
       const double rel_se = m.n > 1 ? m.sd() / std::sqrt(static_cast<double>(m.n)) / m.mean() : 1.0;
       points[key.second][col].push_back({std::log(1000.0 * key.first), std::log(m.mean()), 1.0 / (rel_se * rel_se)});
     }
-  std::printf("\nDrift exponent alpha ± standard error of K_c ~ N^alpha at fixed L_m (%s crack, %s strengths; 0 = "
+  std::printf("\nDrift exponent alpha ± standard error of K ~ N^alpha at fixed L_m (%s crack, %s strengths; 0 = "
               "mesh-independent) [%s]\n| L_m |", study.c_str(), strengths ? "no-heterogeneity" : "default", name.c_str());
   for (int c : columns) std::printf(" %d %s |", c, column_unit);
   std::printf("\n|---|");
@@ -595,7 +599,8 @@ int main() {
             [&](const Row& r) { return r.tip.beam >= 0 ? r.k_c() / t_u : NAN; });
       table("wall_K_c_over_K_rule", ("Wall crack: " + k_title).c_str(), "wall", s, wall_cols, "beams",
             [](const Row& r) { return r.tip.beam >= 0 ? r.k_c() / k_scale(r) : NAN; });
-      drift_table("wall_K_c_drift", "wall", s, wall_cols, "beams");
+      drift_table("wall_K_c_drift", "wall", s, wall_cols, "beams",
+                  [](const Row& r) { return r.tip.beam >= 0 ? r.k_c() : NAN; });
       table("sneddon_crack_beams", "Sneddon crack: crack beams", "sneddon", s, sneddon_cols, "c/1e-3",
             [](const Row& r) { return static_cast<double>(r.n_crack_beams); });
       table("sneddon_K_c", ("Sneddon crack: " + k_raw).c_str(), "sneddon", s, sneddon_cols, "c/1e-3",
@@ -604,7 +609,12 @@ int main() {
             [](const Row& r) { return r.k_c() / k_scale(r); });
       table("sneddon_p_first_over_p_tip", "Sneddon crack: p_first / p_tip (< 1: a beam away from the tips breaks first)",
             "sneddon", s, sneddon_cols, "c/1e-3", [](const Row& r) { return r.b.pressure / r.tip.pressure; });
-      drift_table("sneddon_K_c_drift", "sneddon", s, sneddon_cols, "c/1e-3");
+      drift_table("sneddon_K_c_drift", "sneddon", s, sneddon_cols, "c/1e-3", [](const Row& r) { return r.k_c(); });
+      table("sneddon_K_first_over_K_rule",
+            "Sneddon crack: K_first / K_rule, K_first = p_first sqrt(pi c): the first break anywhere (a tip "
+             "triangle's neighbour where it goes first)", "sneddon", s, sneddon_cols, "c/1e-3",
+            [](const Row& r) { return r.k_first() / k_scale(r); });
+      drift_table("sneddon_K_first_drift", "sneddon", s, sneddon_cols, "c/1e-3", [](const Row& r) { return r.k_first(); });
     }
     if (const char* dir = std::getenv("HM_TIP_ROWS_DIR")) write_rows_csv(dir);
   } catch (const std::exception& e) {
