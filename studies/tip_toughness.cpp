@@ -18,7 +18,7 @@
 // with F = 1 for Sneddon's crack and, for the wall crack, the weight-function F of a crack-line stress
 // (wall_crack_geometry_factor below; references in docs/fracture_study.md).
 // Run: OMP_NUM_THREADS=1 HM_TIP_CSV_DIR=docs/reports/fracture-study-A build/studies/study_tip_toughness
-// (markdown tables on stdout, each tagged [name]; ~4 min on one core at 4 seeds, ~85% of it at N = 8e4).
+// (markdown tables on stdout, each tagged [name]; 3.5-4.5 min on one core at 4 seeds, ~85% of it at N = 8e4).
 // Knobs (environment): HM_TIP_N comma-separated particle counts (default 5000,20000,80000),
 // HM_TIP_SEEDS lattice seeds 1..n (default 4), HM_TIP_SEEDS_LARGEST seeds at the largest N (default
 // HM_TIP_SEEDS), HM_TIP_ANGLES wall-crack rays per lattice (default 4, at 90 degree spacing),
@@ -26,6 +26,7 @@
 // HM_TIP_ROWS_DIR: one row per crack and variant there (wall_crack.csv, sneddon.csv; ~0.4 MB at 4 seeds).
 // Findings: docs/fracture_study.md, "Study A".
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -38,7 +39,6 @@
 #include <optional>
 #include <sstream>
 #include <string>
-#include <tuple>
 #include <vector>
 
 #include <Eigen/Core>
@@ -175,19 +175,19 @@ struct Row {
   int n_crack_beams = 0;                 // 0: intact wall
   double c_nominal = 0;                  // Sneddon: the cut's half-length c / R
   double c = 0, h = 0, f = 0, p_init = 0;
-  double tip_distance = 0;               // breaking beam's midpoint to the (nearest) crack tip
-  double tip_distance_tip = 0;           // the same for the tip beam of `tip`
-  FirstBreak b;    // first break anywhere
-  FirstBreak tip;  // first break of a crack-tip beam: the crack's own advance
+  double first_to_tip = 0;               // first breaking beam's midpoint to the (nearest) crack tip
+  double tip_to_tip = 0;                 // the same for the breaking tip beam of `tip`
+  FirstBreak first;  // first break anywhere
+  FirstBreak tip;    // first break of a crack-tip beam: the crack's own advance
   /// K at the crack's advance, p_tip sqrt(pi c) F.
   double k_c() const { return tip.pressure * std::sqrt(std::numbers::pi * c) * f; }
   /// K at the first break anywhere, p_first sqrt(pi c) F: what the break loop sees when the first beam
   /// to go is a neighbour of the tip triangle rather than one of its two beams.
-  double k_first() const { return b.pressure * std::sqrt(std::numbers::pi * c) * f; }
+  double k_first() const { return first.pressure * std::sqrt(std::numbers::pi * c) * f; }
 };
 std::vector<Row> g_rows;
 
-double env_int(const char* name, double fallback) {
+double env_number(const char* name, double fallback) {
   const char* v = std::getenv(name);
   return v ? std::atof(v) : fallback;
 }
@@ -299,12 +299,12 @@ void wall_crack_study(long long n_target, int seed, int n_rays) {
           r.h = h;
           r.f = f;
           const FirstBreaks fb = first_breaks(m, dual, strengths[s], tip);
-          r.b = fb.any;
+          r.first = fb.any;
           r.tip = fb.tip;
-          if (k == 0) p_init[s] = r.b.pressure;  // no crack tip: the same for every variant
+          if (k == 0) p_init[s] = r.first.pressure;  // no crack tip: the same for every variant
           r.p_init = p_init[s];
-          r.tip_distance = (r.b.midpoint - tip_point).norm();
-          r.tip_distance_tip = (r.tip.midpoint - tip_point).norm();
+          r.first_to_tip = (r.first.midpoint - tip_point).norm();
+          r.tip_to_tip = (r.tip.midpoint - tip_point).norm();
           g_rows.push_back(r);
         }
     }
@@ -359,10 +359,10 @@ void sneddon_study(long long n_target, int seed) {
         r.h = h;
         r.f = 1.0;
         const FirstBreaks fb = first_breaks(m, dual, strengths[s], tip);
-        r.b = fb.any;
+        r.first = fb.any;
         r.tip = fb.tip;
-        r.tip_distance = std::min((r.b.midpoint - left).norm(), (r.b.midpoint - right).norm());
-        r.tip_distance_tip = std::min((r.tip.midpoint - left).norm(), (r.tip.midpoint - right).norm());
+        r.first_to_tip = std::min((r.first.midpoint - left).norm(), (r.first.midpoint - right).norm());
+        r.tip_to_tip = std::min((r.tip.midpoint - left).norm(), (r.tip.midpoint - right).norm());
         g_rows.push_back(r);
       }
   }
@@ -408,10 +408,10 @@ void write_rows_csv(const std::filesystem::path& dir) {
       const bool crack = r.tip.beam >= 0;
       csv.row({static_cast<double>(r.n), static_cast<double>(r.seed), static_cast<double>(r.ray),
                static_cast<double>(r.strengths), r.l_m, static_cast<double>(r.n_crack_beams), r.c_nominal, r.c, r.h,
-               r.f, r.p_init, r.b.pressure, where_code(r.b), r.b.mode == hm::analytic::FailureMode::shear ? 1.0 : 0.0,
-               r.b.tip_factor, r.tip_distance / r.h, crack ? r.tip.pressure : NAN,
+               r.f, r.p_init, r.first.pressure, where_code(r.first), r.first.mode == hm::analytic::FailureMode::shear ? 1.0 : 0.0,
+               r.first.tip_factor, r.first_to_tip / r.h, crack ? r.tip.pressure : NAN,
                crack ? (r.tip.mode == hm::analytic::FailureMode::shear ? 1.0 : 0.0) : NAN, crack ? r.tip.tip_factor : NAN,
-               crack ? r.tip_distance_tip / r.h : NAN, crack ? r.k_c() : NAN, crack ? r.k_c() / k_scale(r) : NAN});
+               crack ? r.tip_to_tip / r.h : NAN, crack ? r.k_c() : NAN, crack ? r.k_c() / k_scale(r) : NAN});
     }
     hm::core::close_checked(out, path);
   }
@@ -526,7 +526,7 @@ void where_table(const std::string& name, const std::string& study, int strength
   std::map<std::pair<long long, double>, std::array<int, 3>> count;
   for (const Row& r : g_rows) {
     if (r.study != study || r.strengths != strengths || r.tip.beam < 0) continue;
-    count[{n_key(r), -r.l_m}][static_cast<std::size_t>(where_code(r.b))]++;
+    count[{n_key(r), -r.l_m}][static_cast<std::size_t>(where_code(r.first))]++;
   }
   std::printf("\nWhere the first beam breaks (%s crack, %s strengths): counts over all cracks of crack-tip beam / other wall "
               "beam / elsewhere [%s]\n| N / 1e3 | L_m | tip | wall | elsewhere |\n|---|---|---|---|---|\n",
@@ -548,9 +548,9 @@ void where_table(const std::string& name, const std::string& study, int strength
 int main() {
   try {
     const std::vector<long long> ns = env_list("HM_TIP_N", {5000, 20000, 80000});
-    const int n_seeds = static_cast<int>(env_int("HM_TIP_SEEDS", 4));
-    const int n_seeds_largest = static_cast<int>(env_int("HM_TIP_SEEDS_LARGEST", n_seeds));
-    const int n_rays = static_cast<int>(env_int("HM_TIP_ANGLES", 4));
+    const int n_seeds = static_cast<int>(env_number("HM_TIP_SEEDS", 4));
+    const int n_seeds_largest = static_cast<int>(env_number("HM_TIP_SEEDS_LARGEST", n_seeds));
+    const int n_rays = static_cast<int>(env_number("HM_TIP_ANGLES", 4));
     const long long n_largest = *std::max_element(ns.begin(), ns.end());
     if (const char* dir = std::getenv("HM_TIP_CSV_DIR")) {
       g_csv_dir = dir;
@@ -571,7 +571,9 @@ int main() {
       }
     std::printf("  total %.1f s\n", seconds_since(t_all));
 
-    const double p_lame = t_u * (1 - kInnerRadius * kInnerRadius) / (1 + kInnerRadius * kInnerRadius);
+    // The continuum's initiation pressure: Lame's wall hoop stress per unit pressure reaching T_u.
+    const hm::analytic::LameCylinder lame(1.0, 0.0, kInnerRadius, 1.0, calibrated_continuum().poisson_ratio);
+    const double p_lame = t_u / lame.state(kInnerRadius).sigma_theta;
     const std::vector<int> wall_cols{1, 2, 4, 8};
     std::vector<int> sneddon_cols;
     for (double c : kSneddonHalfLengths) sneddon_cols.push_back(static_cast<int>(std::lround(1000 * c)));
@@ -582,7 +584,7 @@ int main() {
       table("wall_p_first_over_p_lame",
             "Wall crack: p_first / p_Lame, first break anywhere (0 beams: the intact wall's initiation p_init; p_Lame = "
             "T_u (1 - R_i^2)/(1 + R_i^2))", "wall", s, {0, 1, 2, 4, 8}, "beams",
-            [&](const Row& r) { return r.b.pressure / p_lame; });
+            [&](const Row& r) { return r.first.pressure / p_lame; });
       table("wall_p_tip_over_p_init", "Wall crack: p_tip / p_init, the crack's advance over the intact wall's initiation",
             "wall", s, wall_cols, "beams", [](const Row& r) { return r.tip.beam >= 0 ? r.tip.pressure / r.p_init : NAN; });
       // p_tip is proportional to L_m^(1/2) (the tip beam's stress carries (L/2 L_m)^(1/2), p_init has no tip),
@@ -608,7 +610,7 @@ int main() {
       table("sneddon_K_c_over_K_rule", ("Sneddon crack: " + k_title).c_str(), "sneddon", s, sneddon_cols, "c/1e-3",
             [](const Row& r) { return r.k_c() / k_scale(r); });
       table("sneddon_p_first_over_p_tip", "Sneddon crack: p_first / p_tip (< 1: a beam away from the tips breaks first)",
-            "sneddon", s, sneddon_cols, "c/1e-3", [](const Row& r) { return r.b.pressure / r.tip.pressure; });
+            "sneddon", s, sneddon_cols, "c/1e-3", [](const Row& r) { return r.first.pressure / r.tip.pressure; });
       drift_table("sneddon_K_c_drift", "sneddon", s, sneddon_cols, "c/1e-3", [](const Row& r) { return r.k_c(); });
       table("sneddon_K_first_over_K_rule",
             "Sneddon crack: K_first / K_rule, K_first = p_first sqrt(pi c): the first break anywhere (a tip "
