@@ -18,6 +18,7 @@ lt::FlowParameters RunCase::flow_parameters() const {
   lt::FlowParameters flow = lt::flow_parameters_of(physics.parameters, stepping.dt_initial);
   flow.borehole_storage = borehole_storage;
   flow.borehole_deformation = borehole_deformation;
+  flow.crack_coupling = crack_coupling;
   flow.reuse_factorisation = reuse_flow_factorisation;
   flow.refresh_after_refinements = flow_refresh_after_refinements;
   return flow;
@@ -82,6 +83,9 @@ CaseKeys<RunCase> make_run_case_keys() {
                   "\"` for borehole_storage = \"none\"; `\"" +
                   core::name_of(lt::default_borehole_deformation(lt::BoreholeStorage::fluid)) +
                   "\"` for \"fluid\"")
+      .choice("crack_coupling", [](auto& c) -> auto& { return c.crack_coupling; },
+              "the Biot coefficient of a crack: the rock's b on broken beams' triangles and segments (Eqs. 15, 17), "
+              "or 1 (full: a fluid-filled void, docs/flow.md)")
       .boolean("reuse_factorisation", [](auto& c) -> auto& { return c.reuse_flow_factorisation; },
                "reuse the flow matrix's factor while the geometry changes little (iterative refinement)")
       .integer("refresh_after_refinements", [](auto& c) -> auto& { return c.flow_refresh_after_refinements; }, 0, 1000000,

@@ -46,6 +46,7 @@ TEST_CASE("Every named enum has one distinct name per value, parsed back to it",
   check_names<lt::BoreholeStorage>(3);
   check_names<lt::BoreholeDeformation>(3);
   check_names<lt::BrokenBeamSpring>(2);
+  check_names<lt::CrackCoupling>(2);
   check_names<lt::CouplingSplit>(2);
   check_names<lt::CouplingRelaxation>(3);
   check_names<lt::FractureCheck>(2);

@@ -72,6 +72,8 @@ TEST_CASE("Bad 2D cases are rejected with one line naming table, key, value and 
   rejected(physics + "[coupling]\nmax_iterations = 0\n", "case.toml: [coupling] max_iterations = 0, allowed: ");
   rejected(physics + "[flow]\nborehole_deformation = \"half\"\n",
            "case.toml: [flow] borehole_deformation = 'half', allowed: biot, none, full");
+  rejected(physics + "[flow]\ncrack_coupling = \"half\"\n",
+           "case.toml: [flow] crack_coupling = 'half', allowed: biot, full");
   rejected(physics + "[coupling]\nbroken_beam_spring = \"soft\"\n",
            "case.toml: [coupling] broken_beam_spring = 'soft', allowed: keep, drop");
   rejected(physics + "[flow]\nreuse_factorisation = 1\n", "case.toml: [flow] reuse_factorisation = ");

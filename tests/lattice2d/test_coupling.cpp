@@ -284,3 +284,26 @@ TEST_CASE("Timing: the Eq. 20 springs by refactorisation against a rank-n_beams 
   const Eigen::VectorXd x1 = refactor.solve(b), x2 = update.solve(b);
   CHECK((x1 - x2).cwiseAbs().maxCoeff() < 1e-8 * x1.cwiseAbs().maxCoeff());
 }
+
+TEST_CASE("Crack faces flagged for the full pressure carry (1 - b) p more than Eq. 17's b p", "[lattice2d]") {
+  const Lattice lattice = make_lattice(DomainShape::disk, 1500);
+  const DualGraph dual = build_dual_graph(lattice);
+  const double b = 0.2, p = 3e-4;
+  const Eigen::VectorXd uniform = Eigen::VectorXd::Constant(lattice.n_triangles(), p);
+  int e = 0;  // an interior beam
+  while (lattice.beam_boundary[static_cast<std::size_t>(e)] != BoundaryTag::interior) ++e;
+  std::vector<bool> flags(lattice.beams.size(), false);
+  flags[static_cast<std::size_t>(e)] = true;
+  const Eigen::VectorXd rock = pressure_forces(lattice, dual, uniform, b, CouplingTerms{});
+  const Eigen::VectorXd crack = pressure_forces(lattice, dual, uniform, b, CouplingTerms{}, flags);
+  // Only the flagged segment changes: by -(1 - b) d p n on i and the opposite on j.
+  const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
+  const Eigen::Vector2d extra = -(1.0 - b) * dual.dual_length[e] * p * lattice.direction.col(e);
+  Eigen::VectorXd expected = rock;
+  expected.segment<2>(3 * i) += extra;
+  expected.segment<2>(3 * j) -= extra;
+  CHECK((crack - expected).cwiseAbs().maxCoeff() < 1e-15 * p);  // a few round-offs of p d
+  CHECK(extra.norm() > 0.1 * p * dual.dual_length[e]);
+  // No flags: Eq. 17 as printed, bit for bit.
+  CHECK(pressure_forces(lattice, dual, uniform, b, CouplingTerms{}, std::vector<bool>(flags.size(), false)) == rock);
+}

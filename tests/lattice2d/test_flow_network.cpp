@@ -545,3 +545,29 @@ TEST_CASE("Point injection: the error against Rudnicki shrinks from N = 1e4 to 4
     CHECK(fine[k] <= 2e-2);
   }
 }
+
+TEST_CASE("crack_coupling = full charges a crack's triangles with their whole change of area", "[lattice2d]") {
+  const Lattice lattice = make_lattice(DomainShape::disk, 700);
+  const DualGraph dual = build_dual_graph(lattice);
+  int e = 0;  // an interior beam: two triangles
+  while (lattice.beam_boundary[static_cast<std::size_t>(e)] != BoundaryTag::interior) ++e;
+  std::vector<bool> broken(lattice.beams.size(), false);
+  broken[static_cast<std::size_t>(e)] = true;
+  const double delta = 1e-7;
+  const Eigen::VectorXd dV = Eigen::VectorXd::Constant(lattice.n_triangles(), delta);
+  FlowParameters parameters;
+  parameters.b = 0.2;
+  const double n_t = lattice.n_triangles();
+  for (const auto coupling : {CrackCoupling::biot, CrackCoupling::full}) {
+    INFO("crack coupling " << hm::core::name_of(coupling));
+    parameters.crack_coupling = coupling;
+    FlowNetwork network(lattice, dual, parameters);
+    network.set_broken(broken);
+    const FlowStepSummary s = network.step(dV);
+    REQUIRE(s.is_ok());
+    // b dV everywhere; with full, the broken beam's two triangles take all of theirs.
+    const double expected = coupling == CrackCoupling::full ? delta * (parameters.b * (n_t - 2) + 2) : delta * parameters.b * n_t;
+    CHECK(s.deformation == Approx(expected).epsilon(1e-12));  // a sum of n_t terms
+    CHECK(s.balance_error < 1e-12);
+  }
+}

@@ -200,7 +200,9 @@ bool CoupledModel::solve_mechanics(int pass, const PassGuess& guess, bool check_
                                    CoupledStepSummary& summary) {
   // The pressure force of the guess (Eq. 17) and the undrained predictor's springs (Eq. 20).
   const Lattice& l = lattice();
-  Eigen::VectorXd f = pressure_forces(l, reference_dual_, guess.pressure, flow_->parameters().b, options_.terms);
+  const bool full_crack_pressure = flow_->parameters().crack_coupling == CrackCoupling::full;
+  Eigen::VectorXd f = pressure_forces(l, reference_dual_, guess.pressure, flow_->parameters().b, options_.terms,
+                                      full_crack_pressure ? flow_->broken() : std::vector<bool>{});
   if (options_.terms.psi > 0.0) f += spring_preload(l, mechanics_->normal_springs(), guess.displacement);
   mechanics_->set_external_forces(f);
   // Solve, then break one beam at a time until none fails (the stresses of the effective, i.e. beam,

@@ -17,18 +17,20 @@ void CouplingTerms::validate() const {
 }
 
 Eigen::VectorXd pressure_forces(const Lattice& lattice, const DualGraph& dual, const Eigen::VectorXd& pressure,
-                                double b, const CouplingTerms& terms) {
+                                double b, const CouplingTerms& terms, const std::vector<bool>& full_pressure) {
   const int n_t = lattice.n_triangles();
   assert((pressure.size() == n_t || pressure.size() == n_t + 1) && "pressure_forces: one value per triangle (+ p_h)");
   assert(dual.dual_length.size() == lattice.n_beams() && "pressure_forces: dual graph of another lattice");
   const double p_h = pressure.size() > n_t ? pressure[n_t] : 0.0;
-  const double scale = terms.xi * b;
+  assert((full_pressure.empty() || full_pressure.size() == lattice.beams.size()) && "pressure_forces: one flag per beam");
   Eigen::VectorXd f = Eigen::VectorXd::Zero(3 * lattice.n_particles());
   for (int e = 0; e < lattice.n_beams(); ++e) {
     const auto [s, t] = lattice.beam_triangles[static_cast<std::size_t>(e)];
     const BoundaryTag tag = lattice.beam_boundary[static_cast<std::size_t>(e)];
     const double p_t = t >= 0 ? pressure[t] : (tag == BoundaryTag::inner ? p_h : 0.0);
     const double p_st = 0.5 * (pressure[s] + p_t);
+    const bool full = !full_pressure.empty() && full_pressure[static_cast<std::size_t>(e)];
+    const double scale = terms.xi * (full ? 1.0 : b);
     const Eigen::Vector2d F_i = -scale * dual.dual_length[e] * p_st * lattice.direction.col(e);
     const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
     f[dof_index(i, 0)] += F_i.x();

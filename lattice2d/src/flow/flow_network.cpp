@@ -48,6 +48,8 @@ void FlowParameters::validate() const {
       borehole_storage != BoreholeStorage::fluid)
     throw InputError("borehole_storage = " + std::to_string(static_cast<int>(borehole_storage)) +
                      ", allowed: biot-modulus, none, fluid");
+  if (crack_coupling != CrackCoupling::biot && crack_coupling != CrackCoupling::full)
+    throw InputError("crack_coupling = " + std::to_string(static_cast<int>(crack_coupling)) + ", allowed: biot, full");
   if (borehole_deformation != BoreholeDeformation::biot && borehole_deformation != BoreholeDeformation::none &&
       borehole_deformation != BoreholeDeformation::full)
     throw InputError("borehole_deformation = " + std::to_string(static_cast<int>(borehole_deformation)) +
@@ -380,6 +382,12 @@ FlowStepSummary FlowNetwork::solve(double dt, const Eigen::VectorXd& volume_chan
   // weighted by b when the hole is taken as all fluid.
   Eigen::VectorXd deformation = volume_change.size() > 0 ? Eigen::VectorXd(parameters_.b * volume_change)
                                                          : Eigen::VectorXd::Zero(n);
+  if (parameters_.crack_coupling == CrackCoupling::full && volume_change.size() > 0)
+    for (std::size_t e = 0; e < connections_.size(); ++e) {
+      if (!broken_[e]) continue;  // a crack's triangles: their change of area is the crack's opening
+      for (const int u : {connections_[e].s, connections_[e].t})
+        if (u >= 0 && u < n_triangles_) deformation[u] = volume_change[u];
+    }
   if (has_borehole_) deformation[n_triangles_] = borehole_deformation_coefficient() *
                                                  (volume_change.size() > 0 ? volume_change[n_triangles_] : 0.0);
   Eigen::VectorXd rhs = storage_coefficient.cwiseProduct(pressure_) - deformation;

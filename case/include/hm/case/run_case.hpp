@@ -44,6 +44,8 @@ struct RunCase {
   hm::lattice2d::BoreholeStorage borehole_storage = hm::lattice2d::BoreholeStorage::biot_modulus;
   /// Read with the default default_borehole_deformation(borehole_storage).
   hm::lattice2d::BoreholeDeformation borehole_deformation = hm::lattice2d::BoreholeDeformation::biot;
+  /// [flow] crack_coupling: the Biot coefficient of broken beams' triangles and segments.
+  hm::lattice2d::CrackCoupling crack_coupling = hm::lattice2d::CrackCoupling::biot;
   bool reuse_flow_factorisation = hm::lattice2d::FlowParameters{}.reuse_factorisation;
   int flow_refresh_after_refinements = hm::lattice2d::FlowParameters{}.refresh_after_refinements;
   hm::lattice2d::CouplingOptions coupling;

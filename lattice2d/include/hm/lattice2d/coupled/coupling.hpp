@@ -7,6 +7,8 @@
 /// Geometry: like the beam mechanics (mechanics.hpp), the terms are linearised about the undeformed
 /// lattice: d_st, n_ij and L_ij are those of build_dual_graph(lattice) and Lattice. The flow network
 /// is the part that sees the deformed geometry (V^{n+1} - V^n).
+#include <vector>
+
 #include <Eigen/Core>
 
 #include "hm/lattice2d/geometry/dual_graph.hpp"
@@ -49,9 +51,11 @@ struct CouplingTerms {
 /// pressure sampled at the dual points gives -xi b V_i grad p on interior particles to round-off.
 /// Limits: pressures are cell constants; the signed dual lengths are used as they are (a slightly
 /// negative d_st of a nearly co-circular pair keeps the cells closed).
-/// b is the Biot coefficient (FlowParameters::b, 0 <= b <= 1).
+/// b is the Biot coefficient (FlowParameters::b, 0 <= b <= 1). Beams flagged in `full_pressure`
+/// (empty, or one flag per beam: the broken ones with CrackCoupling::full) take 1 instead of b: a
+/// crack's faces carry the whole fluid pressure.
 Eigen::VectorXd pressure_forces(const Lattice& lattice, const DualGraph& dual, const Eigen::VectorXd& pressure,
-                                double b, const CouplingTerms& terms);
+                                double b, const CouplingTerms& terms, const std::vector<bool>& full_pressure = {});
 
 /// Stiffness per beam of the undrained split's normal spring (Eq. 20 linearised, docs/coupling.md):
 ///   k_ij = Psi xi b^2 (M/E) max(d_st, 0) / L_ij,

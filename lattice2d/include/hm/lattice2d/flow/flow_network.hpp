@@ -45,6 +45,17 @@ constexpr auto enum_names(BoreholeDeformation) {
                                                 {BoreholeDeformation::full, "full"}});
 }
 
+/// The Biot coefficient that couples a crack to its fluid: the weight of the volume change of the
+/// triangles along a broken beam (Eq. 15) and of the pressure force on the broken beam's Voronoi
+/// segment (Eq. 17, CoupledModel).
+enum class CrackCoupling {
+  biot,  ///< b, as for the intact rock: Eqs. 15 and 17 as printed; default
+  full,  ///< 1: an open crack is a fluid-filled void, its faces carry the full p and its opening is fluid
+};
+constexpr auto enum_names(CrackCoupling) {
+  return core::enum_table<CrackCoupling>({{CrackCoupling::biot, "biot"}, {CrackCoupling::full, "full"}});
+}
+
 /// Parameters of the flow network. Every default is set here; validate() checks each rule.
 struct FlowParameters {
   /// Q, dimensionless injection rate (Eq. 14, Q = mu q/(k E)), into the borehole node (annulus) or
@@ -89,6 +100,8 @@ struct FlowParameters {
   /// the default storage). With borehole_storage = none and this = none the borehole node is the 1D
   /// model's flux boundary; see docs/flow.md.
   BoreholeDeformation borehole_deformation = BoreholeDeformation::biot;
+  /// Coupling of broken beams' triangles and segments: b or 1 (CrackCoupling). Default: b (Eq. 15).
+  CrackCoupling crack_coupling = CrackCoupling::biot;
   /// Point-source position (x, y) for a domain without borehole (Section 3.1: r = 0). Our choice to
   /// make it a field; the source goes into the triangle containing it. Allowed: finite, inside the
   /// lattice (checked by FlowNetwork).
