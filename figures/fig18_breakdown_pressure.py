@@ -8,8 +8,12 @@ other keys, e.g. lattice.seed: their runs are drawn as points, their mean as the
 
 where --data holds results.csv (the Snakemake workflow's `fig18` target writes it and runs this).
 A combination whose run is not complete, or that did not break a beam by t_end, is left out and
-counted in the printed line. The dotted line is the dimensionless tensile strength T_u/E of the first
-run's config.toml (the paper compares the breakdown pressure with it).
+counted in the printed line. The dotted grey line is the dimensionless tensile strength T_u/E of the
+first run's config.toml (the paper compares the breakdown pressure with it). If --data also holds
+breakdown_limits.csv (`hmlattice analytic breakdown --b LIST`, which the workflow writes), each b's
+closed-form limits of the unfractured 1D model are drawn in its colour: the slow (drained steady state)
+limit dashed and the fast (Q -> infinity) limit dash-dotted, both from q_min on, and q_min as a tick
+on the Q axis (below it the unfractured 1D wall never fails).
 """
 import csv
 import math
@@ -37,12 +41,28 @@ def main():
             continue
         points[float(r["physics.b"])][float(r["physics.Q"])].append(p)
 
+    limits = {}
+    limits_file = os.path.join(args.data, "breakdown_limits.csv")
+    if os.path.isfile(limits_file):
+        with open(limits_file, newline="") as f:
+            limits = {float(r["b"]): r for r in csv.DictReader(f)}
+
     fig, ax = plt.subplots(figsize=(4.5, 3.4))
+    all_q = sorted({q for b in points for q in points[b]})
     for b in sorted(points):
         qs = sorted(points[b])
         line, = ax.plot(qs, [sum(points[b][q]) / len(points[b][q]) for q in qs], marker="o", label=f"b = {b:g}")
         for q in qs:
             ax.plot([q] * len(points[b][q]), points[b][q], ".", color=line.get_color(), alpha=0.4)
+        if b in limits:
+            q_min = float(limits[b]["q_min"])
+            for column, style in (("p_b_slow", "--"), ("p_b_fast", "-.")):
+                ax.hlines(float(limits[b][column]), q_min, all_q[-1] * 2, colors=line.get_color(), linestyles=style,
+                          linewidth=0.9)
+            ax.axvline(q_min, ymax=0.05, color=line.get_color(), linewidth=1.5)  # below it the 1D wall never fails
+    if limits:
+        ax.plot([], [], "k--", linewidth=0.9, label="1D slow limit")
+        ax.plot([], [], "k-.", linewidth=0.9, label="1D fast limit")
     complete = [r for r in rows if r["status"] == "complete"]
     tensile = hmplot.run_physics(os.path.join(args.data, "runs", complete[0]["name"]), "tensile_strength") if complete else None
     if tensile:
