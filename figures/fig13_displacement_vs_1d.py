@@ -69,33 +69,14 @@ def main():
     for col, (label, folder, folder_1d, folder_twin, folder_eq16) in enumerate(runs):
         b = hmplot.run_physics(folder, "b")
         title = f"b = {b:g}" if b is not None else label
-        radial = hmplot.group_by(hmplot.read_csv(os.path.join(folder, "radial.csv")), "t")
-        times = [t for t in radial if t > 0.0]
-        profiles_1d = None
-        if folder_1d and os.path.exists(os.path.join(folder_1d, "profiles.csv")):
-            profiles_1d = hmplot.group_by(hmplot.read_csv(os.path.join(folder_1d, "profiles.csv")), "t")
         bd = hmplot.read_csv(os.path.join(folder, "breakdown.csv"))
         t_first, p_first = bd["t_first_break"][0], bd["p_h_first_break"][0]
+        times = [t for t in hmplot.group_by(hmplot.read_csv(os.path.join(folder, "radial.csv")), "t") if t > 0.0]
 
         # Top: u_r(r) at the output times.
         ax = axes[0][col]
-        colors = plt.cm.viridis(np.linspace(0.0, 0.85, len(times)))
-        markers = "osD^v<>"
-        n_compared = 0
-        for k, t in enumerate(times):
-            d = radial[t]
-            state = "unbroken" if not (t >= t_first) else "fractured"
-            ax.plot(d["r_mean"], d["u_r"], "-", marker=markers[k % len(markers)], ms=3.5, markevery=2,
-                    color=colors[k], label=f"2D, t* = {t:.3g} ({state})")
-            if profiles_1d is not None:
-                match = [t1 for t1 in profiles_1d if abs(t1 - t) <= 1e-6 * t]
-                if match:
-                    n_compared += 1
-                    d1 = profiles_1d[match[0]]
-                    ax.plot(d1["r"], d1["u_r"], "--", color=colors[k], lw=1.2)
-        print(f"fig13: {title}: {len(times)} output times, {n_compared} with a 1D profile")
-        if profiles_1d is not None:
-            ax.plot([], [], "k--", lw=1.2, label="1D (fdm1d), no fracture")
+        n_times, n_compared = hmplot.draw_displacement_vs_1d(ax, folder, folder_1d, t_first)
+        print(f"fig13: {title}: {n_times} output times, {n_compared} with a 1D profile")
         twin = existing(folder_twin, "radial.csv")
         if twin:
             tr = hmplot.group_by(hmplot.read_csv(os.path.join(twin, "radial.csv")), "t")
@@ -110,9 +91,6 @@ def main():
             state = "unbroken" if not (t_e >= t_e_first) else "fractured"
             ax.plot(er[t_e]["r_mean"], er[t_e]["u_r"], "-.", color="C2", lw=1.4,
                     label=f"2D, Eq. 16 borehole node, t* = {t_e:.3g} ({state})")
-        ax.set_xlabel("r*")
-        ax.set_ylabel("radially averaged u_r*")
-        ax.set_xlim(0.0, 1.0)
         ax.set_title(f"{title}: u_r, lattice (solid) vs 1D without fracture (dashed)", fontsize=9)
         ax.legend(loc="best", fontsize=7)
 

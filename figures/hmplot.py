@@ -20,13 +20,16 @@ import json
 import os
 import sys
 import tomllib
+import xml.etree.ElementTree as ET
 from collections import defaultdict
 
 import matplotlib
 
 matplotlib.use("Agg")  # no display on CI machines
+import matplotlib.colors as mcolors  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+from matplotlib.collections import LineCollection  # noqa: E402
 
 STYLE = {
     "figure.dpi": 110,
@@ -176,6 +179,215 @@ def group_by(columns, key):
     for i, v in enumerate(columns[key]):
         groups[v].append(i)
     return {v: {name: col[idx] for name, col in columns.items()} for v, idx in groups.items()}
+
+
+def is_run_folder(folder):
+    """True if `folder` is what `hmlattice run` writes (its resolved config.toml and its break log)."""
+    return all(os.path.isfile(os.path.join(folder, name)) for name in ("config.toml", "breaks.csv"))
+
+
+def runs_to_draw(data):
+    """[(label, folder)] of the fracturing runs a figure draws, one row or curve each, in order of b:
+
+    - a folder with runs.csv (the lattice2d benchmarks' data folder): its rows with `figure` = 1;
+    - a run folder: that run alone;
+    - a folder of run folders (e.g. out/fig14 holding fig14_b0.2 and fig14_b0.8): each of them."""
+    index = os.path.join(data, "runs.csv")
+    if os.path.exists(index):
+        with open(index, newline="") as f:
+            rows = [r for r in csv.DictReader(f) if r["figure"] == "1"]
+        return [(r["run"], os.path.join(data, r["run"])) for r in sorted(rows, key=lambda r: float(r["b"]))]
+    if is_run_folder(data):
+        return [(os.path.basename(os.path.normpath(data)), data)]
+    runs = [(name, os.path.join(data, name)) for name in sorted(os.listdir(data))
+            if is_run_folder(os.path.join(data, name))]
+    return sorted(runs, key=lambda run: run_physics(run[1], "b") or 0.0)
+
+
+def runs_problem(data):
+    """None if `data` holds runs to draw (see runs_to_draw), else the one-line reason (for arguments' check)."""
+    if not os.path.isdir(data):
+        return f"--data = '{data}' is not a folder"
+    if not runs_to_draw(data):
+        return (f"--data = '{data}' holds no run: allowed: a folder `hmlattice run` wrote (config.toml, breaks.csv), "
+                "a folder of such folders, or a benchmark data folder with runs.csv")
+    return None
+
+
+def vtk_snapshots(folder):
+    """[(t, .vtu path)] listed in a run's vtk/lattice.pvd, t > 0 only (the output times)."""
+    pvd = os.path.join(folder, "vtk", "lattice.pvd")
+    root = ET.parse(pvd).getroot()
+    out = []
+    for ds in root.iter("DataSet"):
+        t = float(ds.get("timestep"))
+        if t > 0.0:
+            out.append((t, os.path.join(folder, "vtk", ds.get("file"))))
+    return out
+
+
+def read_snapshot(path):
+    """Points, triangles with their pressure, broken-beam segments, borehole-wall points (in order)."""
+    import meshio  # only the lattice snapshot figures need it
+
+    mesh = meshio.read(path)
+    tri, p, seg = None, None, []
+    for k, block in enumerate(mesh.cells):
+        if block.type == "triangle":
+            tri, p = block.data, np.asarray(mesh.cell_data["pressure"][k])
+        elif block.type == "line":
+            broken = np.asarray(mesh.cell_data["broken"][k]) == 1
+            seg = block.data[broken]
+    xy = mesh.points[:, :2]
+    wall = xy[np.asarray(mesh.point_data["boundary"]) == 2]
+    if len(wall):
+        wall = wall[np.argsort(np.arctan2(wall[:, 1], wall[:, 0]))]
+        wall = np.vstack([wall, wall[:1]])
+    return xy, tri, p, xy[seg] if len(seg) else np.zeros((0, 2, 2)), wall
+
+
+def fracture_summary_at(folder, t):
+    """The run's fracture_summary.csv row at time t, as a dict (or None)."""
+    path = os.path.join(folder, "fracture_summary.csv")
+    if not os.path.exists(path):
+        return None
+    s = read_csv(path)
+    k = np.argmin(np.abs(s["t"] - t))
+    return {name: col[k] for name, col in s.items()} if abs(s["t"][k] - t) <= 1e-6 * t else None
+
+
+def fracture_counts(summary):
+    """The second title line of a snapshot panel: fracture_summary.csv's counts at that time."""
+    if summary is None:
+        return ""
+    return (f"\n{int(summary['n_radial'])} radial clusters, {int(summary['n_arms'])} arms, "
+            f"{int(summary['n_broken'])} broken")
+
+
+def draw_pressure_snapshot(fig, ax, path, title):
+    """One panel of the paper's Figs. 12, 14, 16, 17, 19: the pressure per triangle of a VTK snapshot
+    (undeformed lattice; diverging colours centred on p* = 0, limits from that snapshot's min and max,
+    as the paper's colour bars), broken beams as black segments (the beam from particle i to j, so a
+    crack shows as a chain of short segments across it), the borehole wall in grey."""
+    xy, tri, p, seg, wall = read_snapshot(path)
+    p_min, p_max = float(p.min()), float(p.max())
+    # Centred on 0 like the paper's colour bars; TwoSlopeNorm needs vmin < 0 < vmax.
+    scale = max(abs(p_min), abs(p_max), 1e-30)
+    norm = mcolors.TwoSlopeNorm(vmin=min(p_min, -1e-6 * scale), vcenter=0.0, vmax=max(p_max, 1e-6 * scale))
+    im = ax.tripcolor(xy[:, 0], xy[:, 1], tri, facecolors=p, cmap="RdBu_r", norm=norm, rasterized=True)
+    if len(seg):
+        ax.add_collection(LineCollection(seg, colors="k", linewidths=0.7))
+    if len(wall):
+        ax.plot(wall[:, 0], wall[:, 1], color="0.3", lw=0.6)
+    ax.set_aspect("equal")
+    ax.set_xlim(-1.02, 1.02)
+    ax.set_ylim(-1.02, 1.02)
+    ax.set_xticks([-1, 0, 1])
+    ax.set_yticks([-1, 0, 1])
+    ax.grid(False)
+    ax.set_title(title, fontsize=8)
+    cb = fig.colorbar(im, ax=ax, fraction=0.046, pad=0.03)
+    cb.set_ticks([p_min, 0.0, p_max] if p_min < 0 < p_max else [p_min, p_max])
+    cb.ax.tick_params(labelsize=7)
+    cb.formatter = plt.FuncFormatter(lambda v, _: f"{v:.2e}")
+    cb.update_ticks()
+
+
+def fracture_pressure_figure(runs, suptitle, times=None):
+    """Figs. 12, 14, 16, 17: one row per run (label, folder), one panel per output time (or, with
+    `times`, per listed time that the run has), panels lettered A, B, ... row by row as in the paper.
+    Returns the figure."""
+    rows = []
+    for label, folder in runs:
+        snaps = vtk_snapshots(folder)
+        if times is not None:
+            snaps = [(t, path) for t, path in snaps if any(abs(t - w) <= 1e-6 * w for w in times)]
+        rows.append((label, folder, snaps))
+    n_cols = max(1, max(len(s) for _, _, s in rows))
+    fig, axes = plt.subplots(len(rows), n_cols, figsize=(3.0 * n_cols, 3.0 * len(rows)), squeeze=False)
+    panel = iter("ABCDEFGHIJKLMNOPQRSTUVWXYZ")
+    for row, (label, folder, snaps) in enumerate(rows):
+        b = run_physics(folder, "b")
+        for col in range(n_cols):
+            ax = axes[row][col]
+            if col >= len(snaps):
+                ax.axis("off")
+                continue
+            t, path = snaps[col]
+            b_text = f"b = {b:g}, " if b is not None else ""
+            draw_pressure_snapshot(fig, ax, path, f"{next(panel)}: {b_text}t* = {t:.3g}"
+                                   + fracture_counts(fracture_summary_at(folder, t)))
+            if col == 0:
+                ax.set_ylabel(f"{label}\ny*")
+            if row == len(rows) - 1:
+                ax.set_xlabel("x*")
+    fig.suptitle(suptitle, fontsize=10)
+    return fig
+
+
+def fdm1d_folders(folder):
+    """{b: folder} of the `hmlattice fdm1d` results in `folder` (itself one, or a folder of them)."""
+    if folder is None:
+        return {}
+    candidates = [folder] if os.path.isfile(os.path.join(folder, "profiles.csv")) else [
+        os.path.join(folder, name) for name in sorted(os.listdir(folder))
+        if os.path.isfile(os.path.join(folder, name, "profiles.csv"))]
+    return {run_physics(c, "b"): c for c in candidates}
+
+
+def draw_displacement_vs_1d(ax, folder, folder_1d, t_first):
+    """u_r(r) of a lattice run at its output times (radial.csv: solid, markers, shells binned by undeformed
+    centroid radius) and, where the 1D folder has a profile at the same time, fdm1d's nodal u_r (dashed,
+    same colour) - Figs. 13 and 15. Each curve says whether the run had broken a beam by then (t_first:
+    breakdown.csv's first break, NaN if none). Returns (number of output times, number with a 1D profile)."""
+    radial = group_by(read_csv(os.path.join(folder, "radial.csv")), "t")
+    times = [t for t in radial if t > 0.0]
+    profiles_1d = None
+    if folder_1d and os.path.exists(os.path.join(folder_1d, "profiles.csv")):
+        profiles_1d = group_by(read_csv(os.path.join(folder_1d, "profiles.csv")), "t")
+    colors = plt.cm.viridis(np.linspace(0.0, 0.85, len(times)))
+    markers = "osD^v<>"
+    n_compared = 0
+    for k, t in enumerate(times):
+        d = radial[t]
+        state = "unbroken" if not (t >= t_first) else "fractured"
+        ax.plot(d["r_mean"], d["u_r"], "-", marker=markers[k % len(markers)], ms=3.5, markevery=2,
+                color=colors[k], label=f"2D, t* = {t:.3g} ({state})")
+        if profiles_1d is not None:
+            match = [t1 for t1 in profiles_1d if abs(t1 - t) <= 1e-6 * t]
+            if match:
+                n_compared += 1
+                d1 = profiles_1d[match[0]]
+                ax.plot(d1["r"], d1["u_r"], "--", color=colors[k], lw=1.2)
+    if profiles_1d is not None:
+        ax.plot([], [], "k--", lw=1.2, label="1D (fdm1d), no fracture")
+    ax.set_xlabel("r*")
+    ax.set_ylabel("radially averaged u_r*")
+    ax.set_xlim(0.0, 1.0)
+    return len(times), n_compared
+
+
+def sweep_problem(data, key):
+    """None if `data` is a sweep folder over `key` (results.csv from `hmlattice sweep collect`, run folders
+    in runs/), else the one-line reason (for arguments' check)."""
+    path = os.path.join(data, "results.csv")
+    if not os.path.isfile(path):
+        return f"--data = '{data}' has no results.csv (hmlattice sweep collect)"
+    with open(path, newline="") as f:
+        header = next(csv.reader(f), [])
+    if key not in header:
+        return f"--data = '{data}': results.csv has no column {key} (a sweep over {key})"
+    return None
+
+
+def sweep_runs(data, key):
+    """[(value of key, run folder)] of a sweep folder's complete runs in order of the value, and the number
+    of combinations left out (incomplete or missing runs)."""
+    with open(os.path.join(data, "results.csv"), newline="") as f:
+        rows = list(csv.DictReader(f))
+    done = [r for r in rows if r["status"] == "complete"]
+    runs = sorted((float(r[key]), os.path.join(data, "runs", r["name"])) for r in done)
+    return runs, len(rows) - len(done)
 
 
 def save(fig, out, name):
