@@ -18,7 +18,7 @@ import hmplot
 
 def main():
     args = hmplot.arguments(__doc__.splitlines()[0], check=lambda a: hmplot.runs_problem(a.data))
-    fig = hmplot.fracture_pressure_figure(hmplot.runs_to_draw(args.data),
+    fig = hmplot.fracture_pressure_figure("fig12", hmplot.runs_to_draw(args.data),
                                           "Pressure p* per triangle and broken beams (black); Q = 0.01, iota = 1")
     hmplot.save(fig, args.out, "fig12_fracture_pressure")
 

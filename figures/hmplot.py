@@ -293,15 +293,15 @@ def draw_pressure_snapshot(fig, ax, path, title):
     cb.update_ticks()
 
 
-def fracture_pressure_figure(runs, suptitle, times=None):
-    """Figs. 12, 14, 16, 17: one row per run (label, folder), one panel per output time (or, with
-    `times`, per listed time that the run has), panels lettered A, B, ... row by row as in the paper.
+def fracture_pressure_figure(name, runs, suptitle):
+    """Figs. 12, 14, 16, 17: one row per run (label, folder), one panel per output time, panels lettered
+    A, B, ... row by row as in the paper. Prints one line per row (`name: b = ...: n snapshots`).
     Returns the figure."""
     rows = []
     for label, folder in runs:
         snaps = vtk_snapshots(folder)
-        if times is not None:
-            snaps = [(t, path) for t, path in snaps if any(abs(t - w) <= 1e-6 * w for w in times)]
+        b = run_physics(folder, "b")
+        print(f"{name}: {f'b = {b:g}' if b is not None else label}: {len(snaps)} snapshots")
         rows.append((label, folder, snaps))
     n_cols = max(1, max(len(s) for _, _, s in rows))
     fig, axes = plt.subplots(len(rows), n_cols, figsize=(3.0 * n_cols, 3.0 * len(rows)), squeeze=False)
