@@ -199,8 +199,9 @@ def runs_to_draw(data):
         return [(r["run"], os.path.join(data, r["run"])) for r in sorted(rows, key=lambda r: float(r["b"]))]
     if is_run_folder(data):
         return [(os.path.basename(os.path.normpath(data)), data)]
+    # Hidden folders are left out: a run still under way writes into .hmlattice-staging-* beside its --out.
     runs = [(name, os.path.join(data, name)) for name in sorted(os.listdir(data))
-            if is_run_folder(os.path.join(data, name))]
+            if not name.startswith(".") and is_run_folder(os.path.join(data, name))]
     return sorted(runs, key=lambda run: run_physics(run[1], "b") or 0.0)
 
 
