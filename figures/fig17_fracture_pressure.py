@@ -1,0 +1,29 @@
+"""Fig. 17 of Ulven & Sun (2017): pressure and fractures in low-permeability rock, Q = 1, iota = 1e6,
+b = 0.2 (top row, A-D) and b = 0.8 (bottom row, E-H), at the case's four output times.
+
+Reads what `hmlattice run` writes for a fracturing case (vtk/lattice.pvd + lattice_NNNN.vtu and
+fracture_summary.csv): one run folder (one row), a folder of run folders (one row each, in order of b),
+or a folder with runs.csv (a lattice2d benchmark's data folder, `figure` = 1 for the runs to draw):
+
+    build/hmlattice run cases/fig17_b0.2_quick.toml --out out/fig17/b0.2
+    build/hmlattice run cases/fig17_b0.8_quick.toml --out out/fig17/b0.8
+    /usr/bin/python3 figures/fig17_fracture_pressure.py --data out/fig17 --out out/fig17/figures
+
+The output times (initiation, growth, fractures near and at the boundary) were chosen from a quick run's
+fracture_summary.csv; the case files say what was measured.
+Each panel as Fig. 12's (hmplot.draw_pressure_snapshot): the pressure per triangle on the undeformed
+lattice, colours centred on p* = 0 with that snapshot's min and max as limits (the paper's colour
+bars), broken beams in black, the borehole wall in grey; the title gives fracture_summary.csv's counts.
+"""
+import hmplot
+
+
+def main():
+    args = hmplot.arguments(__doc__.splitlines()[0], check=lambda a: hmplot.runs_problem(a.data))
+    fig = hmplot.fracture_pressure_figure("fig17", hmplot.runs_to_draw(args.data),
+                                          "Pressure p* per triangle and broken beams (black); Q = 1, iota = 1e6")
+    hmplot.save(fig, args.out, "fig17_fracture_pressure")
+
+
+if __name__ == "__main__":
+    main()
