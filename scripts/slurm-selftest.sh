@@ -98,12 +98,16 @@ mkdir "$work"
 sed '/^\[sweep\]/,$d' "$src/cases/sweep_fig18_quick.toml" > "$work/mini.toml"
 printf '[sweep]\n"physics.Q" = [0.01, 0.1]\n"lattice.seed" = [1, 2]\n' >> "$work/mini.toml"
 smk() {
-  # One status check a second instead of Snakemake's every 33 s for Slurm: jobs of seconds here.
-  (cd "$work" && snakemake --profile "$src/workflow/profiles/slurm" --snakefile "$src/workflow/Snakefile" \
+  # One status check a second instead of Snakemake's every 33 s for Slurm: jobs of seconds here. The
+  # timeout: a job Slurm cannot start (time limit above MaxTime) would stay pending for ever, and
+  # snakemake answers SIGTERM by waiting for its jobs, hence the SIGKILL 10 s later.
+  (cd "$work" && timeout --kill-after=10 300 snakemake --profile "$src/workflow/profiles/slurm" --snakefile "$src/workflow/Snakefile" \
      --max-status-checks-per-second 1 --config sweep="$work/mini.toml" out="$work/out" hmlattice="$hm" "$@")
 }
 sweep_start=$SECONDS
-smk > "$work/snakemake.log" 2>&1 || { tail -n 40 "$work/snakemake.log"; fail "snakemake with the Slurm profile"; }
+rc=0
+smk > "$work/snakemake.log" 2>&1 || rc=$?
+[ $rc -eq 0 ] || { tail -n 40 "$work/snakemake.log"; squeue; fail "snakemake with the Slurm profile: exit $rc (137: stopped after 300 s)"; }
 echo "slurm-selftest: snakemake --profile workflow/profiles/slurm: $((SECONDS - sweep_start)) s"
 smk -n > "$work/dry.log" 2>&1 && grep -q "Nothing to be done" "$work/dry.log" ||
   { cat "$work/dry.log"; fail "a second snakemake still plans jobs"; }
