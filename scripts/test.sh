@@ -6,6 +6,8 @@ cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh snakemake  # snakemake: the workflow test (tests/workflow/)
 bash scripts/build.sh
 ctest --test-dir build --output-on-failure -j "$(nproc)"
+# The Slurm profile on a one-node Slurm started here (installs munge and Slurm; ~20 s, docs/cluster.md).
+bash scripts/slurm-selftest.sh
 
 # The library suites only, to stay within ~6 min on 2 cores: the case and verification suites run the
 # program as a process and would more than double it, and six lattice2d tests that each take 13-22 s
