@@ -75,7 +75,10 @@ def main():
     columns = ["crossing_r0.5", "reaching_r1", "arms", "secondary", "broken", "t_first_break", "p_first_break"]
     print("| " + " | ".join(swept + ["seeds"] + columns) + " |")
     print("|" + "---|" * (len(swept) + 1 + len(columns)))
-    for cell in sorted(cells):
+    def numeric_first(cell):  # numbers in numeric order (3000 before 10000), then text
+        return tuple((0, float(v), "") if v.replace(".", "", 1).replace("e-", "", 1).isdigit() else (1, 0.0, v) for v in cell)
+
+    for cell in sorted(cells, key=numeric_first):
         group = cells[cell]
         print("| " + " | ".join(list(cell) + [str(len(group))] + [mean_spread([float(g[c]) for g in group]) for c in columns]) + " |")
     incomplete = len(runs) - len(scores)
