@@ -72,7 +72,11 @@ void run_case(const RunArgs& a, int& exit_code, const std::string& command_line)
   const auto& p = c.physics.parameters;
   std::cout << "run: Q = " << p.Q << ", b = " << p.material.b << ", E/M = " << p.material.E_over_M
             << ", iota = " << p.iota << "; " << core::name_of(c.lattice.domain) << ", N = " << c.lattice.n_particles
-            << ", seed = " << c.lattice.seed << ", outer " << core::name_of(c.boundary.outer) << "; split "
+            << ", seed = " << c.lattice.seed << ", outer " << core::name_of(c.boundary.outer);
+  if (!c.insitu.is_zero())
+    std::cout << " (S_H = " << c.insitu.S_H << ", S_h = " << c.insitu.S_h << " at " << c.insitu.theta_H_deg
+              << " deg, p0 = " << c.insitu.p0 << ")";
+  std::cout << "; split "
             << core::name_of(c.coupling.split) << ", Psi = " << c.coupling.terms.psi << ", xi = " << c.coupling.terms.xi
             << "; t_end = " << c.stepping.t_end << "\n";
 

@@ -7,7 +7,7 @@ namespace hm::cases {
 namespace lt = hm::lattice2d;
 
 std::unique_ptr<lt::CoupledModel> make_coupled_model(const RunCase& c, lt::Lattice lattice) {
-  auto model = std::make_unique<lt::CoupledModel>(std::move(lattice), c.beams(), c.boundary, c.mechanics,
+  auto model = std::make_unique<lt::CoupledModel>(std::move(lattice), c.beams(), c.boundary_conditions(), c.mechanics,
                                                   c.flow_parameters(), c.coupling);
   if (c.fracture_enabled)
     model->enable_fracture(lt::draw_beam_strengths(c.strength, model->lattice().n_beams()), c.break_loop);

@@ -1,10 +1,12 @@
 #include "hm/case/run_case.hpp"
 
 #include <limits>
+#include <numbers>
 
 #include "hm/core/input_error.hpp"
 #include "hm/core/validation.hpp"
 #include "hm/lattice2d/mechanics/calibration.hpp"
+#include "hm/lattice2d/mechanics/far_field.hpp"
 #include "hm/case/case_keys.hpp"
 
 namespace hm::cases {
@@ -13,6 +15,15 @@ namespace lt = hm::lattice2d;
 
 
 lt::BeamParameters RunCase::beams() const { return lt::calibrated_beam_parameters(stiffness_scaling); }
+
+hm::analytic::FarFieldStress InSituState::far_field() const { return {S_H, S_h, theta_H_deg * std::numbers::pi / 180.0}; }
+
+lt::BoundaryConditions RunCase::boundary_conditions() const {
+  lt::BoundaryConditions bc = boundary;
+  if (!insitu.is_zero())
+    lt::add_far_field_loads(insitu.far_field(), insitu.p0, physics.parameters.material.b, lattice.domain, bc);
+  return bc;
+}
 
 lt::FlowParameters RunCase::flow_parameters() const {
   lt::FlowParameters flow = lt::flow_parameters_of(physics.parameters, stepping.dt_initial);
@@ -69,7 +80,21 @@ CaseKeys<RunCase> make_run_case_keys() {
       .choice("outer", [](auto& c) -> auto& { return c.boundary.outer; },
               "the outer boundary r = 1: traction-free or held")
       .choice("solver", [](auto& c) -> auto& { return c.mechanics.solver; },
-              "the mechanics' linear solver: CHOLMOD's Cholesky factor or preconditioned CG");
+              "the mechanics' linear solver: CHOLMOD's Cholesky factor or preconditioned CG")
+      .real("S_H", [](auto& c) -> auto& { return c.insitu.S_H; }, ">= S_h, finite",
+            "in-situ largest horizontal stress S_H/E, compression positive: the far field at rest (docs/insitu.md)")
+      .real("S_h", [](auto& c) -> auto& { return c.insitu.S_h; }, "0 <= S_h <= S_H", "in-situ smallest horizontal stress S_h/E")
+      .real("theta_H", [](auto& c) -> auto& { return c.insitu.theta_H_deg; }, "finite",
+            "azimuth of S_H from the x axis, degrees")
+      .real("p0", [](auto& c) -> auto& { return c.insitu.p0; }, ">= 0, finite",
+            "rest pore pressure p0/E: the flow's p is the deviation from it (docs/insitu.md)")
+      .check([](CaseTable& mechanics, CaseTable&, RunCase& c) {
+        if (c.insitu.is_zero()) return;
+        if (c.boundary.outer != lt::BoundarySupport::free)
+          mechanics.fail("outer = \"" + core::name_of(c.boundary.outer) +
+                         "\", allowed: \"free\" with an in-situ stress or p0 (a held boundary takes no traction)");
+        c.boundary_conditions();  // validates S_H, S_h, theta_H and p0 with the library's rules
+      });
   k.table("flow")
       .choice("borehole_storage", [](auto& c) -> auto& { return c.borehole_storage; },
               "the borehole node's storage: Eq. 16's E/M V_h, none, or the water-filled hole's E/K_w V_h "

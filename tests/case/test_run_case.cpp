@@ -61,6 +61,12 @@ TEST_CASE("Bad 2D cases are rejected with one line naming table, key, value and 
            "case.toml: [output] fracture_link = 'beam', allowed: particle, triangle");
   rejected(physics + "[mechanics]\nouter = \"clamped\"\n", "case.toml: [mechanics] outer = 'clamped', allowed: free, fixed");
   rejected(physics + "[mechanics]\nsolver = \"lu\"\n", "case.toml: [mechanics] solver = 'lu', allowed: cholmod, pcg");
+  rejected(physics + "[mechanics]\nS_H = 1e-4\nS_h = 2e-4\n",
+           "case.toml: [mechanics] S_h = 2e-04, allowed: 0 <= S_h <= S_H (1e-04)");
+  rejected(physics + "[mechanics]\nS_H = -1e-4\n", "case.toml: [mechanics] S_H = -1e-04, allowed: ");
+  rejected(physics + "[mechanics]\np0 = -1e-5\n", "case.toml: [mechanics] p0 = -1e-05, allowed: >= 0");
+  rejected(physics + "[mechanics]\nouter = \"fixed\"\nS_H = 1e-4\n",
+           "case.toml: [mechanics] outer = \"fixed\", allowed: \"free\" with an in-situ stress or p0");
   rejected(physics + "[flow]\nborehole_storage = \"tank\"\n", "case.toml: [flow] borehole_storage = 'tank', allowed: ");
   rejected(physics + "[coupling]\nsplit = \"monolithic\"\n",
            "case.toml: [coupling] split = 'monolithic', allowed: undrained, drained");

@@ -83,6 +83,7 @@ CoupledModel::CoupledModel(Lattice lattice, const BeamParameters& beams, const B
   if (options_.terms.psi > 0.0) mechanics_->set_normal_springs(springs_, options_.terms.broken_beam_spring);
   displacement_ = Eigen::VectorXd::Zero(3 * mechanics_->lattice().n_particles());
   volume_ = unknown_volumes(reference_dual_);
+  unloaded_ = conditions.is_unloaded();
   relaxation_ = make_pass_relaxation(options_.relaxation, options_.initial_relaxation, options_.anderson_depth);
 }
 
@@ -120,10 +121,54 @@ Eigen::VectorXd CoupledModel::unknown_volumes(const DualGraph& dual) const {
 
 // One time step (Fig. 5): predict the guess, then passes of mechanics (with the break loop) and flow
 // until the guess stops changing, then accept the step or restore t^n.
-CoupledStepSummary CoupledModel::step(double dt) {
+CoupledStepSummary CoupledModel::settle() {
+  CoupledStepSummary summary;
+  summary.time = time();
+  if (at_rest_) return summary;
+  at_rest_ = true;
+  if (unloaded_) return summary;
   const auto start = std::chrono::steady_clock::now();
+  // Drained: before injection the pore pressure has long equalised at p0 (p = 0 here). The Eq. 20
+  // springs belong to the split, not to the rock: they are out of the matrix for this solve.
+  const bool sprung = options_.terms.psi > 0.0;
+  if (sprung) mechanics_->set_normal_springs(Eigen::VectorXd());
+  mechanics_->set_external_forces(Eigen::VectorXd::Zero(3 * lattice().n_particles()));
+  bool ok = true;
+  if (fracture_) {
+    int n_breaks = 0;
+    ok = break_beams(0, n_breaks, summary);
+  } else {
+    const MechanicsSummary ms = mechanics_->solve();
+    summary.mechanics_seconds += ms.solve_seconds;
+    ++summary.n_mechanics_solves;
+    summary.n_contact_changes += ms.n_contact_changes;
+    if (!ms.is_converged()) {
+      ok = false;
+      summary.status = CoupledStatus::solver_failure;
+      summary.message = "mechanics at rest (t = 0): " + ms.message;
+    }
+  }
+  if (sprung) mechanics_->set_normal_springs(springs_, options_.terms.broken_beam_spring);
+  if (ok) {
+    displacement_ = mechanics_->displacement();
+    const Eigen::Matrix2Xd x = positions(displacement_);
+    current_dual_ = build_dual_graph(lattice(), x, reference_dual_.options);
+    flow_->update_geometry(current_dual_, x);
+    volume_ = unknown_volumes(current_dual_);
+  }
+  summary.n_broken = n_broken();
+  summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return summary;
+}
+
+CoupledStepSummary CoupledModel::step(double dt) {
   if (!(dt > 0.0 && std::isfinite(dt)))
     throw hm::InputError("dt = " + hm::core::format_value(dt) + ", allowed: > 0, finite");
+  if (!at_rest_) {
+    CoupledStepSummary rest = settle();
+    if (!rest.is_ok()) return rest;
+  }
+  const auto start = std::chrono::steady_clock::now();
   CoupledStepSummary summary;
   summary.dt = dt;
   summary.time = time() + dt;
@@ -309,7 +354,13 @@ CoupledRunSummary CoupledModel::run(const TimeStepping& stepping, const Observer
   RunCursor& c = cursor_;
   CoupledRunSummary& run = c.totals;
   const double seconds_before = run.seconds;
-  if (!c.started) {  // initial step: the unloaded lattice at t = 0
+  if (!c.started) {  // initial step: the lattice at rest at t = 0
+    const CoupledStepSummary rest = settle();
+    if (!rest.is_ok()) {
+      run.status = rest.status;
+      run.message = rest.message;
+      return run;
+    }
     c.started = true;
     c.next_output = 0;
     c.dt_nominal = stepping.dt_initial;
@@ -436,8 +487,9 @@ void CoupledModel::restore_state(core::StateReader& r) {
   restore_model_state(r);
   transfer_cursor(r, cursor_);
   // The accepted geometry is a function of the accepted displacement (finish_step's dual graph).
-  current_dual_ = cursor_.totals.n_steps == 0 ? reference_dual_
-                                              : build_dual_graph(lattice(), positions(displacement_), reference_dual_.options);
+  current_dual_ = cursor_.totals.n_steps == 0 && (unloaded_ || !at_rest_)
+                      ? reference_dual_
+                      : build_dual_graph(lattice(), positions(displacement_), reference_dual_.options);
   volume_ = unknown_volumes(current_dual_);
 }
 
@@ -447,6 +499,7 @@ void CoupledModel::save_model_state(core::StateWriter& w) const {
   mechanics_->save_state(w);
   flow_->save_state(w);
   transfer_history(w, *this);
+  w.put("model.at_rest", at_rest_);
   w.put("model.fracture", fracture_enabled());
   if (fracture_) {
     w.put("strengths.tensile", fracture_->strengths.tensile);
@@ -466,6 +519,7 @@ void CoupledModel::restore_model_state(core::StateReader& r) {
   mechanics_->restore_state(r);
   flow_->restore_state(r);
   transfer_history(r, *this);
+  r.get("model.at_rest", at_rest_);
   bool fracture = false;
   r.get("model.fracture", fracture);
   if (fracture != fracture_enabled())

@@ -28,6 +28,15 @@ void BoundaryConditions::validate(const Lattice& lattice) const {
                          ", allowed: 0 unless domain = annulus");
   if (!annulus && inner == BoundarySupport::fixed)
     throw hm::InputError("boundary_conditions.inner = 'fixed', allowed: free unless domain = annulus");
+  for (int a = 0; a < 2; ++a)
+    for (int b = 0; b < 2; ++b) require_finite(outer_stress(a, b), "boundary_conditions.outer_stress");
+  if (outer_stress(0, 1) != outer_stress(1, 0))
+    throw hm::InputError("boundary_conditions.outer_stress(0,1) = " + format_value(outer_stress(0, 1)) +
+                         ", allowed: equal to outer_stress(1,0) = " + format_value(outer_stress(1, 0)));
+  if (outer == BoundarySupport::fixed && !outer_stress.isZero(0.0))
+    throw hm::InputError("boundary_conditions.outer_stress = (" + format_value(outer_stress(0, 0)) + ", " +
+                         format_value(outer_stress(0, 1)) + ", " + format_value(outer_stress(1, 1)) +
+                         "), allowed: 0 unless outer = 'free' (a held boundary takes no traction)");
   if (prescribe_boundary_strain) {
     for (int a = 0; a < 2; ++a)
       for (int b = 0; b < 2; ++b) require_finite(boundary_strain(a, b), "boundary_conditions.boundary_strain");
@@ -49,6 +58,12 @@ void BoundaryConditions::validate(const Lattice& lattice) const {
                            ", allowed: 0 (x), 1 (y), 2 (rotation)");
     require_finite(p.value, name + ".value");
   }
+}
+
+bool BoundaryConditions::is_unloaded() const {
+  return inner_pressure == 0.0 && outer_pressure == 0.0 && outer_stress.isZero(0.0) &&
+         !(prescribe_boundary_strain && !boundary_strain.isZero(0.0)) &&
+         std::all_of(prescribed.begin(), prescribed.end(), [](const PrescribedDisplacement& d) { return d.value == 0.0; });
 }
 
 void MechanicsOptions::validate() const {
@@ -228,21 +243,25 @@ BeamMechanics::BeamMechanics(Lattice lattice, const BeamParameters& parameters, 
                            "translation and rotation are all stopped");
   }
 
-  // 3. Loads: boundary pressures as normal tractions on the boundary polygon, lumped half to each end.
+  // 3. Loads: boundary pressures and the outer stress as tractions on the boundary polygon, lumped
+  // half to each end (exact for a constant traction: the segment's force and moment).
   pressure_loads_ = Eigen::VectorXd::Zero(n_dof);
   extra_loads_ = Eigen::VectorXd::Zero(n_dof);
+  const bool outer_stressed = !conditions_.outer_stress.isZero(0.0);
   for (int e = 0; e < lattice_.n_beams(); ++e) {
     const BoundaryTag tag = lattice_.beam_boundary[static_cast<std::size_t>(e)];
     if (tag == BoundaryTag::interior) continue;
     const double p = tag == BoundaryTag::inner ? conditions_.inner_pressure : conditions_.outer_pressure;
-    if (p == 0.0) continue;
+    const bool stressed = tag == BoundaryTag::outer && outer_stressed;
+    if (p == 0.0 && !stressed) continue;
     const auto [i, j] = lattice_.beams[static_cast<std::size_t>(e)];
     const auto& tri = lattice_.triangles[static_cast<std::size_t>(lattice_.beam_triangles[static_cast<std::size_t>(e)][0])];
     const int k = tri[0] != i && tri[0] != j ? tri[0] : tri[1] != i && tri[1] != j ? tri[1] : tri[2];
     const Eigen::Vector2d n = lattice_.direction.col(e);
     Eigen::Vector2d m(-n.y(), n.x());  // outward normal: away from the triangle's third vertex
     if (m.dot(lattice_.points.col(k) - lattice_.points.col(i)) > 0.0) m = -m;
-    const Eigen::Vector2d f = -0.5 * p * lattice_.length[e] * m;  // positive p pushes into the solid
+    Eigen::Vector2d f = -0.5 * p * lattice_.length[e] * m;  // positive p pushes into the solid
+    if (stressed) f += 0.5 * lattice_.length[e] * (conditions_.outer_stress * m);
     for (int q : {i, j}) {
       pressure_loads_[dof_index(q, 0)] += f.x();
       pressure_loads_[dof_index(q, 1)] += f.y();

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "hm/analytic/insitu_annulus.hpp"
 #include "hm/lattice2d/mechanics/beam_stiffness.hpp"
 #include "hm/lattice2d/coupled/coupled_model.hpp"
 #include "hm/lattice2d/flow/flow_network.hpp"
@@ -33,6 +34,17 @@ struct RunOutput {
   hm::lattice2d::FractureLink fracture_link = hm::lattice2d::FractureStatisticsOptions{}.link;
 };
 
+/// [mechanics]' in-situ state of the rock before injection (docs/insitu.md): the far-field total
+/// stress and the rest pore pressure, over E, compression positive.
+struct InSituState {
+  double S_H = 0.0;          ///< largest horizontal stress. Allowed: >= S_h.
+  double S_h = 0.0;          ///< smallest horizontal stress. Allowed: >= 0.
+  double theta_H_deg = 0.0;  ///< azimuth of S_H from the x axis [degrees]. Allowed: finite.
+  double p0 = 0.0;           ///< rest pore pressure (the flow's p is the deviation from it). Allowed: >= 0.
+  bool is_zero() const { return S_H == 0.0 && S_h == 0.0 && p0 == 0.0; }
+  hm::analytic::FarFieldStress far_field() const;
+};
+
 /// A fully read and validated 2D case.
 struct RunCase {
   CasePhysics physics;
@@ -40,6 +52,7 @@ struct RunCase {
   /// Which calibrated beams (calibrated_beam_parameters(stiffness_scaling)); default the toolkit's.
   hm::lattice2d::StiffnessScaling stiffness_scaling = hm::lattice2d::StiffnessScaling::voronoi_facet;
   hm::lattice2d::BoundaryConditions boundary;   ///< only `outer` is read from the case
+  InSituState insitu;                           ///< [mechanics] S_H, S_h, theta_H, p0
   hm::lattice2d::MechanicsOptions mechanics;    ///< only `solver` is read from the case
   hm::lattice2d::BoreholeStorage borehole_storage = hm::lattice2d::BoreholeStorage::biot_modulus;
   /// Read with the default default_borehole_deformation(borehole_storage).
@@ -62,6 +75,8 @@ struct RunCase {
 
   /// The calibrated beam constants of this case's stiffness scaling.
   hm::lattice2d::BeamParameters beams() const;
+  /// `boundary` with the in-situ state's rest loads (add_far_field_loads with [physics] b).
+  hm::lattice2d::BoundaryConditions boundary_conditions() const;
   /// The flow parameters of the physics (Q, b, iota, E/M) with this case's borehole node.
   hm::lattice2d::FlowParameters flow_parameters() const;
 };

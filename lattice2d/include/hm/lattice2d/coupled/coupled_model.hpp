@@ -225,7 +225,17 @@ class CoupledModel {
 
   /// One coupled step of length dt > 0. On failure (status not_converged or solver_failure) the state
   /// is restored to t^n bit for bit, breaks of the failed attempt included; the summary says why.
+  /// The first call (or run()) first brings the model to rest (settle).
   CoupledStepSummary step(double dt);
+
+  /// The state at rest before injection: the drained equilibrium (p = 0, the deviation from p0, and
+  /// no Eq. 20 springs) under the constant boundary loads, e.g. the in-situ far field, with the break
+  /// loop when fracture is enabled (breaks logged at t = 0); injection starts from it, and failure
+  /// sees the rest stress plus the increment. With no boundary load (is_unloaded) u = 0 is that state
+  /// and nothing is solved. Called by the first step() or run(); later calls do nothing. The summary
+  /// says what the solve did (status solver_failure and a message when it failed).
+  CoupledStepSummary settle();
+  bool is_at_rest() const { return at_rest_; }
 
   /// Observer of run(): called after every accepted step, with `is_output` true at t = 0, at each
   /// output time and at t_end.
@@ -321,6 +331,8 @@ class CoupledModel {
   };
   std::unique_ptr<FractureSetup> fracture_;
   std::vector<BreakEvent> break_log_;
+  bool unloaded_ = true;  // BoundaryConditions::is_unloaded: the rest state is u = 0
+  bool at_rest_ = false;  // settle() has run
   RunCursor cursor_;
 };
 

@@ -53,6 +53,12 @@ struct BoundaryConditions {
   /// Normal pressure on the outer boundary; positive pushes into the solid (inward). Any finite value.
   /// On a fixed boundary a pressure only adds to the reactions (loads at held DOFs do nothing).
   double outer_pressure = 0.0;
+  /// A stress tensor whose traction outer_stress . m (m the outward normal) loads the outer boundary
+  /// besides outer_pressure: the in-situ far field (the effective one in a coupled run, see
+  /// docs/insitu.md). Tension positive, over E. Any constant tensor's traction is self-equilibrated
+  /// on the closed boundary polygon, so a free lattice needs no support. Allowed: finite, symmetric;
+  /// zero unless outer = free (loads at held DOFs would do nothing).
+  Eigen::Matrix2d outer_stress = Eigen::Matrix2d::Zero();
   /// Hold x, y of every boundary particle (inner and outer) at u = boundary_strain * x (homogeneous
   /// strain, for calibration and patch tests); rotations stay free. Needs both supports free.
   bool prescribe_boundary_strain = false;
@@ -63,6 +69,9 @@ struct BoundaryConditions {
 
   /// Throws hm::InputError "boundary_conditions.field = value, allowed: rule".
   void validate(const Lattice& lattice) const;
+  /// No boundary pressure, outer stress, boundary strain or non-zero prescribed value: u = 0 is the
+  /// equilibrium of the unloaded lattice.
+  bool is_unloaded() const;
 };
 
 /// Numerical options of the mechanical solve.

@@ -1,0 +1,26 @@
+#pragma once
+/// \file
+/// The lattice's boundary loads for a rock at rest under an in-situ (far-field) horizontal stress,
+/// in the paper's deviation form: the flow's pressure is the deviation from the rest pore pressure
+/// p0, and the beams carry the effective stress of Eq. 1, sigma_m = sigma + b p (tension positive).
+/// At rest (uniform p0 in the rock and the hole) the effective state is the total one plus b p0 I, so
+/// the beams see the far field -S + b p0 I on the outer boundary and the wall pressure (1 - b) p0.
+/// Derivation and limits: docs/insitu.md. Dimensionless (over E).
+#include <Eigen/Core>
+
+#include "hm/analytic/insitu_annulus.hpp"
+#include "hm/lattice2d/geometry/lattice.hpp"
+#include "hm/lattice2d/mechanics/mechanics.hpp"
+
+namespace hm::lattice2d {
+
+/// The far-field total stress tensor -S_H e_H e_H - S_h e_h e_h (tension positive), e_H at theta_H.
+Eigen::Matrix2d far_field_tensor(const analytic::FarFieldStress& far);
+
+/// Adds the rest state's effective loads to `conditions`: outer_stress += far_field_tensor(far) +
+/// b p0 I, and on an annulus inner_pressure += (1 - b) p0. Throws hm::InputError for an invalid
+/// `far`, p0 < 0 or not finite, or b outside [0, 1].
+void add_far_field_loads(const analytic::FarFieldStress& far, double p0, double b, DomainShape domain,
+                         BoundaryConditions& conditions);
+
+}  // namespace hm::lattice2d

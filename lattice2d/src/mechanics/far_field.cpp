@@ -1,0 +1,29 @@
+#include "hm/lattice2d/mechanics/far_field.hpp"
+
+#include <cmath>
+
+#include "hm/core/input_error.hpp"
+#include "hm/core/validation.hpp"
+
+namespace hm::lattice2d {
+
+Eigen::Matrix2d far_field_tensor(const analytic::FarFieldStress& far) {
+  // Written out so that the off-diagonal entries are one and the same number (symmetric exactly).
+  const double c = std::cos(far.theta_H), s = std::sin(far.theta_H);
+  const double xy = -(far.S_H - far.S_h) * c * s;
+  Eigen::Matrix2d t;
+  t << -(far.S_H * c * c + far.S_h * s * s), xy, xy, -(far.S_H * s * s + far.S_h * c * c);
+  return t;
+}
+
+void add_far_field_loads(const analytic::FarFieldStress& far, double p0, double b, DomainShape domain,
+                         BoundaryConditions& conditions) {
+  far.validate();
+  core::require_finite(p0, "p0");
+  if (!(p0 >= 0.0)) throw hm::InputError("p0 = " + core::format_value(p0) + ", allowed: >= 0 (compression positive)");
+  if (!(b >= 0.0 && b <= 1.0)) throw hm::InputError("b = " + core::format_value(b) + ", allowed: 0 <= b <= 1");
+  conditions.outer_stress += far_field_tensor(far) + b * p0 * Eigen::Matrix2d::Identity();
+  if (domain == DomainShape::annulus) conditions.inner_pressure += (1.0 - b) * p0;
+}
+
+}  // namespace hm::lattice2d
