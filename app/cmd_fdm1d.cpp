@@ -47,7 +47,7 @@ void add_fdm1d_command(CLI::App& app, int& exit_code, const std::string& command
     cases::Fdm1dRecorder recorder(out.path(), c.numerics.probe_radii);
     const core::InterruptRequest interrupt;  // Ctrl-C or SIGTERM: stop after the step, keep the results
     const auto result = fdm1d::run_fdm1d(
-        p, c.numerics, [&](double t, double t_end) { progress.update(t, t_end); },
+        p, c.numerics, c.rest, [&](double t, double t_end) { progress.update(t, t_end); },
         [&](const fdm1d::Fdm1dResult& so_far) { recorder.record(so_far); }, [&] { return interrupt.signal() != 0; });
     const auto& s = result.summary;
     char balance[32];

@@ -1,5 +1,6 @@
 #include "hm/case/fdm1d_case.hpp"
 
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <utility>
@@ -13,6 +14,26 @@ namespace {
 
 CaseKeys<Fdm1dCase> make_fdm1d_case_keys() {
   CaseKeys<Fdm1dCase> k;
+  // S_H and S_h as in a 2D case, so that one sweep can name both models; they must be equal here.
+  k.table("mechanics")
+      .real("S_H", [](auto& c) -> auto& { return c.rest.S; }, ">= 0, finite; equal to S_h",
+            "in-situ stress S/E, compression positive (isotropic: S_H = S_h; docs/insitu.md)")
+      .key({"S_h", "real", "S_H", "equal to S_H (the 1D model is radially symmetric)",
+            "in-situ smallest horizontal stress: must be S_H",
+            [](CaseTable& t, Fdm1dCase& c) {
+              const double S_h = t.get_double("S_h", c.rest.S);
+              if (S_h != c.rest.S)
+                t.fail("S_h = " + core::format_value(S_h) + ", allowed: equal to S_H = " + core::format_value(c.rest.S) +
+                       " (the 1D model is radially symmetric: isotropic in-situ stress only)");
+            },
+            [](const Fdm1dCase& c) { return toml_real(c.rest.S); }})
+      .real("p0", [](auto& c) -> auto& { return c.rest.p0; }, ">= 0, finite",
+            "rest pore pressure p0/E: p is the deviation from it (docs/insitu.md)")
+      .check([](CaseTable& t, CaseTable&, Fdm1dCase& c) {
+        if (!(std::isfinite(c.rest.S) && c.rest.S >= 0.0))  // RestState's S is the case's S_H
+          t.fail("S_H = " + core::format_value(c.rest.S) + ", allowed: >= 0, finite (compression positive)");
+        c.rest.validate();
+      });
   k.table("numerics")
       .integer("n_r", [](auto& c) -> auto& { return c.numerics.n_r; }, std::numeric_limits<int>::min(),
                std::numeric_limits<int>::max(), "8 <= n_r <= 1000000", "grid intervals on [R_i, 1]")

@@ -125,11 +125,19 @@ double radial_strain(const Eigen::VectorXd& u, const RadialGrid& grid, int i) {
 }
 
 hm::analytic::RadialState node_state(const Eigen::VectorXd& u, const Eigen::VectorXd& p,
-                                     const RadialGrid& grid, int i, double nu) {
+                                     const RadialGrid& grid, int i, double nu,
+                                     const hm::analytic::LameCylinder* rest) {
   hm::analytic::RadialState s;
   s.p = p[i];
   s.u_r = u[i];
   hm::analytic::set_plane_strain_stresses(s, nu, radial_strain(u, grid, i), u[i] / grid.r(i));
+  if (rest) {
+    const hm::analytic::RadialState r = rest->state(grid.r(i));
+    s.u_r += r.u_r;
+    s.sigma_r += r.sigma_r;
+    s.sigma_theta += r.sigma_theta;
+    s.sigma_z += r.sigma_z;
+  }
   return s;
 }
 
@@ -139,14 +147,15 @@ double coulomb_of(const hm::analytic::RadialState& s, double friction) {
 }
 
 Fdm1dSnapshot make_snapshot(const Eigen::VectorXd& u, const Eigen::VectorXd& p, const RadialGrid& grid,
-                            const hm::analytic::DimensionlessParameters& params, double t) {
+                            const hm::analytic::DimensionlessParameters& params, double t,
+                            const hm::analytic::LameCylinder* rest) {
   Fdm1dSnapshot snap;
   snap.t = t;
   const auto n_nodes = static_cast<std::size_t>(grid.n + 1);
   for (auto* v : {&snap.p, &snap.u_r, &snap.sigma_r, &snap.sigma_theta, &snap.sigma_z, &snap.coulomb})
     v->reserve(n_nodes);
   for (int i = 0; i <= grid.n; ++i) {
-    const auto s = node_state(u, p, grid, i, params.material.nu);
+    const auto s = node_state(u, p, grid, i, params.material.nu, rest);
     snap.p.push_back(s.p);
     snap.u_r.push_back(s.u_r);
     snap.sigma_r.push_back(s.sigma_r);

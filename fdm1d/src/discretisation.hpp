@@ -25,6 +25,7 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
+#include "hm/analytic/lame.hpp"
 #include "hm/analytic/physical_parameters.hpp"
 #include "hm/analytic/radial_state.hpp"
 #include "hm/fdm1d/fdm1d.hpp"
@@ -63,15 +64,18 @@ SparseMatrix implicit_euler_matrix(const Blocks& blocks, double dt);
 /// du/dr at node i: centred inside, one-sided second order at the ends.
 double radial_strain(const Eigen::VectorXd& u, const RadialGrid& grid, int i);
 
-/// Effective stresses at node i from u (plane strain), with p and u_r filled in.
+/// Effective stresses at node i from u (plane strain), with p and u_r filled in; plus the rest
+/// state's u_r and stresses at r_i when `rest` is given (RestState).
 hm::analytic::RadialState node_state(const Eigen::VectorXd& u, const Eigen::VectorXd& p,
-                                     const RadialGrid& grid, int i, double nu);
+                                     const RadialGrid& grid, int i, double nu,
+                                     const hm::analytic::LameCylinder* rest = nullptr);
 
 /// sigma_CC of Eq. 11 with sigma_1, sigma_3 = max, min of the three effective stresses.
 double coulomb_of(const hm::analytic::RadialState& s, double friction);
 
 /// Whole profiles at time t from nodal u and p.
 Fdm1dSnapshot make_snapshot(const Eigen::VectorXd& u, const Eigen::VectorXd& p, const RadialGrid& grid,
-                            const hm::analytic::DimensionlessParameters& params, double t);
+                            const hm::analytic::DimensionlessParameters& params, double t,
+                            const hm::analytic::LameCylinder* rest = nullptr);
 
 }  // namespace hm::fdm1d::detail

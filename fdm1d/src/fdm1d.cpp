@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "discretisation.hpp"
@@ -73,14 +74,34 @@ Probe locate(double r, const RadialGrid& grid) {
 
 }  // namespace
 
+void RestState::validate() const {
+  core::require_finite(S, "S");
+  core::require_finite(p0, "p0");
+  if (!(S >= 0.0)) throw InputError("S = " + core::format_value(S) + ", allowed: >= 0 (compression positive)");
+  if (!(p0 >= 0.0)) throw InputError("p0 = " + core::format_value(p0) + ", allowed: >= 0 (compression positive)");
+}
+
 Fdm1dResult run_fdm1d(const an::DimensionlessParameters& params, const Fdm1dNumerics& numerics,
                       const ProgressCallback& progress, const StepObserver& observer, const StopPredicate& stop_request) {
+  return run_fdm1d(params, numerics, RestState{}, progress, observer, stop_request);
+}
+
+Fdm1dResult run_fdm1d(const an::DimensionlessParameters& params, const Fdm1dNumerics& numerics, const RestState& rest,
+                      const ProgressCallback& progress, const StepObserver& observer, const StopPredicate& stop_request) {
   params.validate();
+  rest.validate();
   if (!(params.R_i > 0.0))
     throw InputError("R_i = " + core::format_value(params.R_i) +
                      ", allowed: 0 < R_i < 1 (the 1D model needs a borehole)");
   numerics.validate(params.R_i);
   const auto start = std::chrono::steady_clock::now();
+  // The rest state in effective stress (RestState): none when zero, so such runs are those without it.
+  const double b = params.material.b;
+  const std::optional<an::LameCylinder> rest_lame =
+      rest.is_zero() ? std::nullopt
+                     : std::optional<an::LameCylinder>(std::in_place, (1.0 - b) * rest.p0, rest.S - b * rest.p0,
+                                                       params.R_i, 1.0, params.material.nu);
+  const an::LameCylinder* at_rest = rest_lame ? &*rest_lame : nullptr;
 
   // 1. Grid, operators, output schedule.
   const RadialGrid grid(numerics.n_r, params.R_i);
@@ -107,7 +128,7 @@ Fdm1dResult run_fdm1d(const an::DimensionlessParameters& params, const Fdm1dNume
     s.stored = blk.storage.dot(p) + (blk.strain * u).sum();
     s.outflow = outflow;
     s.balance_error = balance_error;
-    const auto wall = detail::node_state(u, p, grid, 0, params.material.nu);
+    const auto wall = detail::node_state(u, p, grid, 0, params.material.nu, at_rest);
     s.sigma_r = wall.sigma_r;
     s.sigma_theta = wall.sigma_theta;
     s.sigma_z = wall.sigma_z;
@@ -212,7 +233,7 @@ Fdm1dResult run_fdm1d(const an::DimensionlessParameters& params, const Fdm1dNume
       ++res.summary.n_steps;
       res.summary.max_balance_error = std::max(res.summary.max_balance_error, balance);
       record(balance);
-      if (!(t < target)) res.snapshots.push_back(detail::make_snapshot(u, p, grid, params, t));
+      if (!(t < target)) res.snapshots.push_back(detail::make_snapshot(u, p, grid, params, t, at_rest));
       if (observer) observer(res);
       if (progress) progress(t, numerics.t_end);
       dt_nominal = std::min(dt_nominal * numerics.dt_growth, numerics.dt_max);

@@ -94,6 +94,10 @@ TEST_CASE("Bad 1D cases are rejected before anything is written", "[verification
   rejected("[physics]\nnu = 0.6\n", "case.toml: [physics] nu = 0.6, allowed: 0 < nu < 0.5");
   rejected("[physics]\nR_i = 1.0\n", "case.toml: [physics] R_i = 1, allowed: 0 <= R_i < 1");
   rejected("[physics]\nR_i = 0\n", "R_i = 0, allowed: 0 < R_i < 1 (the 1D model needs a borehole)");
+  rejected("[mechanics]\nS_H = 2e-4\nS_h = 1e-4\n",
+           "case.toml: [mechanics] S_h = 1e-04, allowed: equal to S_H = 2e-04 (the 1D model is radially symmetric");
+  rejected("[mechanics]\nS_H = -2e-4\nS_h = -2e-4\n", "case.toml: [mechanics] S_H = -2e-04, allowed: >= 0");
+  rejected("[mechanics]\np0 = -1e-5\n", "case.toml: [mechanics] p0 = -1e-05, allowed: >= 0");
   rejected("[physics_si]\nk = -1e-14\n", "case.toml: [physics_si] k = -1e-14, allowed: k > 0");
   rejected("[numerics]\nn_r = 4\n", "case.toml: [numerics] n_r = 4, allowed: 8 <= n_r <= 1000000");
   rejected("[numerics]\nn_r = 40\nsolver = \"cg\"\n", "case.toml: [numerics] unknown key 'solver', allowed: ");

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// A 1D case file (model = "fdm1d"): [physics] or [physics_si] (read_physics), then the tables of
-/// fdm1d_case_keys() — [numerics], [output]. Every key: docs/case-format.md (`hmlattice case-format`).
+/// fdm1d_case_keys() — [mechanics], [numerics], [output]. Every key: docs/case-format.md (`hmlattice case-format`).
 #include <filesystem>
 #include <string>
 
@@ -14,6 +14,8 @@ namespace hm::cases {
 struct Fdm1dCase {
   CasePhysics physics;
   hm::fdm1d::Fdm1dNumerics numerics;
+  /// [mechanics] S_H = S_h (isotropic only: the model is radially symmetric) and p0.
+  hm::fdm1d::RestState rest;
 };
 
 /// The keys of a 1D case after [physics]: the reader, the config.toml writer and the reference.

@@ -108,11 +108,28 @@ using StepObserver = std::function<void(const Fdm1dResult& so_far)>;
 /// unless that step reached t_end.
 using StopPredicate = std::function<bool()>;
 
+/// The rock at rest before injection under an isotropic in-situ stress (the 1D model's only far
+/// field: radial symmetry), in the deviation form of the lattice (docs/insitu.md): p is the deviation
+/// from p0, so the rest state is Lame's cylinder in effective stress, wall pressure (1 - b) p0 and
+/// outer pressure S - b p0, and every reported stress and u_r is the rest state plus the increment
+/// (exact: the model is linear and its outer boundary is traction-free in the increment).
+struct RestState {
+  double S = 0.0;   ///< in-situ stress S/E, compression positive. Allowed: >= 0, finite.
+  double p0 = 0.0;  ///< rest pore pressure p0/E. Allowed: >= 0, finite.
+  bool is_zero() const { return S == 0.0 && p0 == 0.0; }
+  /// Throws hm::InputError "field = value, allowed: rule".
+  void validate() const;
+};
+
 /// Runs the Appendix A model from p = u = 0 at t = 0 to numerics.t_end.
 /// Validates both inputs first (throws hm::InputError, also for R_i = 0). Cost: one banded sparse
 /// solve of 2(n_r + 1) unknowns per step.
 Fdm1dResult run_fdm1d(const hm::analytic::DimensionlessParameters& params,
                       const Fdm1dNumerics& numerics, const ProgressCallback& progress = {},
+                      const StepObserver& observer = {}, const StopPredicate& stop = {});
+/// The same from the rest state `rest` (its stresses and u_r added to every reported one).
+Fdm1dResult run_fdm1d(const hm::analytic::DimensionlessParameters& params, const Fdm1dNumerics& numerics,
+                      const RestState& rest, const ProgressCallback& progress = {},
                       const StepObserver& observer = {}, const StopPredicate& stop = {});
 
 }  // namespace hm::fdm1d
