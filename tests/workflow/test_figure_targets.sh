@@ -4,7 +4,9 @@
 #      on a second pass;
 #   2. dry runs of the targets of Figs. 10-17 in both tiers: one run job per case, from cases/ (quick) or
 #      cases/paper/ (paper), one figure job per figure, the 1D references shared by both tiers;
-#   3. a tier that is neither quick nor paper is refused.
+#   3. the verify target: its planning job for real (hmlattice verify --write-cases, a second), then a
+#      dry run plans one run job per planned run and the report with --runs;
+#   4. a tier that is neither quick nor paper is refused.
 # The quick figure runs themselves are each case's smoke test (tests/CMakeLists.txt); the sweeps of
 # Figs. 18-20 are tested by test_sweep_workflow.sh and tests/figures/test_fig19_fig20_sweep.sh.
 # Usage: test_figure_targets.sh <hmlattice executable> <source folder>. Exit 77 (skipped) only when
@@ -49,7 +51,16 @@ for tier in quick paper; do
   echo "$tier tier: 12 runs and 6 figures planned for $targets"
 done
 
-# 3. A bad tier.
+# 3. The verify target's plan (the quick tier's: the fig12 benchmark's six runs).
+smk quick "$work/out/verify_quick/cases" > "$work/plan.log" 2>&1 || { cat "$work/plan.log"; fail "planning verify's runs"; }
+[ "$(tail -n +2 "$work/out/verify_quick/cases/index.csv" | wc -l)" -eq 6 ] || fail "verify_quick/cases: not 6 runs"
+smk quick -n -p verify > "$work/verify.log" 2>&1 || { cat "$work/verify.log"; fail "dry run of verify"; }
+[ "$(grep -cE '^rule run:' "$work/verify.log")" -eq 6 ] || { cat "$work/verify.log"; fail "verify: not 6 run jobs"; }
+grep -q "verify --tier quick --runs $work/out/verify_quick/runs --out $work/out/verify_quick/report " "$work/verify.log" ||
+  { cat "$work/verify.log"; fail "verify: no report with --runs"; }
+echo "verify: 6 runs and the report with --runs planned"
+
+# 4. A bad tier.
 rc=0
 smk fast -n fig12 > "$work/bad.log" 2>&1 || rc=$?
 [ $rc -ne 0 ] && grep -q "tier=fast: allowed: quick or paper" "$work/bad.log" || { cat "$work/bad.log"; fail "tier=fast accepted"; }
