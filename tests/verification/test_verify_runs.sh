@@ -15,9 +15,7 @@ set -euo pipefail
 hm=$1
 reference=$2
 smoke=$3
-work=$(mktemp -d "${TMPDIR:-/tmp}/hmlattice-verify-runs-XXXXXX")
-trap 'rm -rf "$work"' EXIT
-fail() { echo "FAILED: $*" >&2; exit 1; }
+. "$(dirname "$0")/../scratch_folder.sh" verify-runs
 
 # 1. Four runs made outside verify, read back; the other two run here.
 "$hm" verify --tier quick --filter fig12_quick --write-cases "$work/cases" > /dev/null
