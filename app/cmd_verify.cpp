@@ -1,4 +1,12 @@
 // hmlattice verify: run every registered benchmark and write report.md + metrics.json.
+//   hmlattice verify --tier quick --out out/verify
+// The runs of case files a benchmark makes (lattice2d.fig12*) can be made elsewhere, e.g. by the
+// Snakemake workflow on a cluster (docs/cluster.md), and read back:
+//   hmlattice verify --tier paper --write-cases out/verify_cases    # <label>.toml + index.csv; runs nothing
+//   hmlattice run out/verify_cases/<label>.toml --out out/verify_runs/<label>     # each, anywhere
+//   hmlattice verify --tier paper --runs out/verify_runs --out out/verify_paper
+// With --runs, a planned run whose folder is there is read (refused, exit 2, if it is not complete or
+// holds another case); one that is not there is run here as without --runs.
 #include <iostream>
 
 #include "commands.hpp"
@@ -10,7 +18,7 @@ namespace hm::app {
 void add_verify_command(CLI::App& app, int& exit_code, const std::string& command_line) {
   auto* cmd = app.add_subcommand("verify", "Run the verification suite and write DIR/report.md, DIR/metrics.json");
   struct Options {
-    std::string tier = "quick", out = "out/verify", filter;
+    std::string tier = "quick", out = "out/verify", filter, runs, write_cases;
     bool overwrite = false;
   };
   auto opt = std::make_shared<Options>();
@@ -21,9 +29,27 @@ void add_verify_command(CLI::App& app, int& exit_code, const std::string& comman
       ->capture_default_str();
   cmd->add_flag("--overwrite", opt->overwrite, "replace the output folder if it holds an earlier hmlattice result");
   cmd->add_option("--filter", opt->filter, "run only benchmarks whose id contains this text");
+  auto* runs = cmd->add_option("--runs", opt->runs,
+                               "read the benchmarks' runs of case files from DIR/<label>/ where present (hmlattice run "
+                               "folders, e.g. the workflow's); absent ones are run here");
+  cmd->add_option("--write-cases", opt->write_cases,
+                  "write the benchmarks' runs of case files as DIR/<label>.toml and DIR/index.csv, run nothing "
+                  "(with --overwrite: replace an earlier such folder)")
+      ->excludes(runs)
+      ->excludes("--out");
   cmd->callback([opt, &exit_code, command_line] {
+    const auto tier = core::from_name<verification::Tier>(opt->tier, "--tier");
+    if (!opt->write_cases.empty()) {
+      const auto selected = verification::select_benchmarks(verification::all_benchmarks(), tier, opt->filter);
+      const int n = verification::write_planned_cases(selected, opt->write_cases, opt->overwrite, command_line);
+      std::cout << n << " cases of the " << opt->tier << " tier's runs written to " << opt->write_cases
+                << "/ (index.csv: name, benchmark); run each with hmlattice run <case> --out <runs>/<name>, then "
+                << "hmlattice verify --tier " << opt->tier << " --runs <runs>\n";
+      return;
+    }
     verification::HarnessOptions options;
-    options.tier = core::from_name<verification::Tier>(opt->tier, "--tier");
+    options.tier = tier;
+    options.runs_dir = opt->runs;
     options.out_dir = opt->out;
     options.overwrite = opt->overwrite;
     options.filter = opt->filter;

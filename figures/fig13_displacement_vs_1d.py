@@ -4,11 +4,13 @@ borehole pressure history of both with the first break marked.
 
 Reads a folder with runs.csv written by the lattice2d.fig12 benchmarks (run folders as `hmlattice run`
 writes them: radial.csv, series.csv, breakdown.csv; 1D folders as `hmlattice fdm1d` writes them:
-profiles.csv, borehole.csv), or a single run folder, with the 1D curves when --fdm1d names an
-`hmlattice fdm1d` folder at the run's output times (cases/fig13_fdm1d_b*.toml):
+profiles.csv, borehole.csv), or a run folder or a folder of run folders (one column each, in order of
+b), with the 1D curves when --fdm1d names an `hmlattice fdm1d` folder at the runs' output times
+(cases/fig13_fdm1d_b*.toml) or a folder of them (each run drawn against the one with its b):
 
     /usr/bin/python3 figures/fig13_displacement_vs_1d.py --data verify/data/fig12_quick --out fig
     /usr/bin/python3 figures/fig13_displacement_vs_1d.py --data out/fig12_b0.2 --fdm1d out/fig13_fdm1d_b0.2 --out fig
+    /usr/bin/python3 figures/fig13_displacement_vs_1d.py --data out/fig12 --fdm1d out/fig13_fdm1d --out fig
 
 Prints, per run, how many of its output times have a 1D profile to compare with.
 
@@ -41,7 +43,9 @@ def runs_to_draw(data, fdm1d=None):
 
         return [(r["run"], os.path.join(data, r["run"]), folder(r, "fdm1d"), folder(r, "flux_twin"),
                  folder(r, "eq16_node")) for r in rows]
-    return [(os.path.basename(os.path.normpath(data)), data, fdm1d, None, None)]
+    by_b = hmplot.fdm1d_folders(fdm1d)
+    return [(label, folder, by_b.get(hmplot.run_physics(folder, "b")), None, None)
+            for label, folder in hmplot.runs_to_draw(data)]
 
 
 def existing(folder, name):
@@ -50,19 +54,22 @@ def existing(folder, name):
 
 
 def check_fdm1d(args):
-    """Why --fdm1d cannot be used with these arguments, or None."""
-    if not args.fdm1d:
-        return None
+    """Why these arguments cannot be drawn (no runs in --data, a --fdm1d that is not 1D), or None."""
+    problem = hmplot.runs_problem(args.data)
+    if problem or not args.fdm1d:
+        return problem
     if os.path.exists(os.path.join(args.data, "runs.csv")):
-        return f"--fdm1d = {args.fdm1d}: allowed only with a single run folder ({args.data}/runs.csv names its 1D runs)"
-    if not os.path.exists(os.path.join(args.fdm1d, "profiles.csv")):
-        return f"--fdm1d = {args.fdm1d}: allowed: a folder `hmlattice fdm1d` wrote (no profiles.csv there)"
+        return f"--fdm1d = {args.fdm1d}: allowed only with run folders ({args.data}/runs.csv names its 1D runs)"
+    if not os.path.isdir(args.fdm1d) or not hmplot.fdm1d_folders(args.fdm1d):
+        return (f"--fdm1d = {args.fdm1d}: allowed: a folder `hmlattice fdm1d` wrote or a folder of such folders "
+                "(no profiles.csv there)")
     return None
 
 
 def main():
     args = hmplot.arguments(__doc__.splitlines()[0], lambda parser: parser.add_argument(
-        "--fdm1d", help="with a single run folder: an `hmlattice fdm1d` folder at the run's output times"),
+        "--fdm1d", help="with run folders: an `hmlattice fdm1d` folder at the runs' output times, or a folder of them "
+                        "(matched by b)"),
         check_fdm1d)
     runs = runs_to_draw(args.data, args.fdm1d)
     fig, axes = plt.subplots(2, len(runs), figsize=(5.2 * len(runs), 7.4), squeeze=False)

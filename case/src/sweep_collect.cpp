@@ -43,14 +43,6 @@ std::string marker_value(const fs::path& marker, const std::string& key) {
   return "";
 }
 
-std::string run_status(const fs::path& run) {
-  std::error_code ec;
-  if (!fs::exists(fs::symlink_status(run, ec))) return "missing";
-  if (!core::is_result_folder(run)) return "incomplete";
-  const fs::path marker = run / core::result_marker_name;
-  if (marker_value(marker, "complete") == "false" || marker_value(marker, "state") == "running") return "incomplete";
-  return "complete";
-}
 
 // Seconds since the epoch of "2026-12-02T14:08:00Z" (core::utc_now), or -1.
 long long utc_seconds(const std::string& stamp) {
@@ -95,6 +87,15 @@ std::map<std::string, std::string> run_results(const fs::path& run, std::vector<
 
 }  // namespace
 
+std::string run_folder_status(const fs::path& run) {
+  std::error_code ec;
+  if (!fs::exists(fs::symlink_status(run, ec))) return "missing";
+  if (!core::is_result_folder(run)) return "incomplete";
+  const fs::path marker = run / core::result_marker_name;
+  if (marker_value(marker, "complete") == "false" || marker_value(marker, "state") == "running") return "incomplete";
+  return "complete";
+}
+
 SweepCollectCounts collect_sweep(const fs::path& sweep_folder, const fs::path& runs_folder, std::ostream& csv) {
   const std::vector<Row> index = read_csv(sweep_folder / sweep_index_name);
   if (index.empty() || index.front().size() < 2 || index.front()[0] != "name" || index.front()[1] != "command")
@@ -107,7 +108,7 @@ SweepCollectCounts collect_sweep(const fs::path& sweep_folder, const fs::path& r
   SweepCollectCounts counts;
   for (std::size_t i = 1; i < index.size(); ++i) {
     const fs::path run = runs_folder / index[i][0];
-    status.push_back(run_status(run));
+    status.push_back(run_folder_status(run));
     results.push_back(status.back() == "complete" ? run_results(run, columns) : std::map<std::string, std::string>{});
     ++(status.back() == "complete" ? counts.complete : status.back() == "missing" ? counts.missing : counts.incomplete);
   }

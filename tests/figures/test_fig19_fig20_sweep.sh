@@ -9,10 +9,7 @@ set -euo pipefail
 hm=$1
 src=$2
 py=$3
-
-work=$(mktemp -d "${TMPDIR:-/tmp}/hmlattice-fig19-XXXXXX")
-trap 'rm -rf "$work"' EXIT
-fail() { echo "FAILED: $*" >&2; exit 1; }
+. "$(dirname "$0")/../scratch_folder.sh" fig19
 
 sweep=$work/sweep_fig19_quick
 "$hm" sweep expand "$src/cases/sweep_fig19_quick.toml" --out "$sweep/cases"

@@ -6,14 +6,7 @@
 #   3. with one run folder removed, only that run (and the collect) is done again.
 # Usage: test_sweep_workflow.sh <hmlattice executable> <source folder>. Exit 77 (skipped) only when
 # snakemake is missing; scripts/test.sh installs it.
-set -euo pipefail
-hm=$1
-src=$2
-command -v snakemake >/dev/null || { echo "snakemake not found: skipped (scripts/test.sh installs it)"; exit 77; }
-
-work=$(mktemp -d "${TMPDIR:-/tmp}/hmlattice-workflow-XXXXXX")
-trap 'rm -rf "$work"' EXIT
-fail() { echo "FAILED: $*" >&2; exit 1; }
+. "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
 # The quick Fig. 18 case with a smaller [sweep] (its last table).
 sed '/^\[sweep\]/,$d' "$src/cases/sweep_fig18_quick.toml" > "$work/mini.toml"

@@ -40,24 +40,44 @@ namespace {
 using namespace borehole_fracture;
 namespace fs = std::filesystem;
 
+// The labels of a case's runs (the folders under the data folder, or under `hmlattice verify --runs`).
+std::string twin_label(const std::string& name) { return name + "_flux_borehole"; }
+std::string eq16_label(const std::string& name) { return name + "_eq16_node"; }
+
 // --- quick tier ---------------------------------------------------------------------------------
+
+const std::vector<std::string> kQuickCases = {"fig12_b0.2_quick", "fig12_b0.8_quick"};
+
+RunCase quick_case(const std::string& name) { return read_run_case(fs::path(HM_SOURCE_DIR) / "cases" / (name + ".toml")); }
+
+std::vector<PlannedRun> fig12_quick_runs() {
+  std::vector<PlannedRun> runs;
+  for (const std::string& name : kQuickCases) {
+    const RunCase c = quick_case(name);
+    runs.push_back({name, c});
+    runs.push_back({twin_label(name), flux_twin_case(c)});
+    runs.push_back({eq16_label(name), with_eq16_borehole_node(c)});
+  }
+  return runs;
+}
 
 BenchmarkResult fig12_quick(const BenchmarkContext& ctx) {
   BenchmarkResult res;
   const fs::path root = ctx.data_dir / "fig12_quick";
   fs::create_directories(root);
+  RunSource source(root, ctx.runs_dir, ctx.progress);
   Table snaps = snapshot_table(), breakdown = breakdown_table(), timing = timing_table(), node = borehole_node_table();
   std::vector<RunOutcome> runs;  // per case: the case, then the same case with Eq. 16's borehole node
-  for (const std::string name : {"fig12_b0.2_quick", "fig12_b0.8_quick"}) {
-    const RunCase c = read_run_case(fs::path(HM_SOURCE_DIR) / "cases" / (name + ".toml"));
+  for (const std::string& name : kQuickCases) {
+    const RunCase c = quick_case(name);
     const fdm1d::Fdm1dResult ref = write_reference(c, root);
-    runs.push_back(run_case(c, name, root, ref));
-    runs.back().twin_label = name + "_flux_borehole";
-    runs.back().twin = run_flux_twin(c, runs.back().twin_label, root, ref);
-    runs.back().eq16_label = name + "_eq16_node";
-    runs.push_back(run_case(with_eq16_borehole_node(c), runs.back().eq16_label, root, ref));
+    runs.push_back(source.run(c, name, ref));
+    runs.back().twin_label = twin_label(name);
+    runs.back().twin = source.twin(c, runs.back().twin_label, ref);
+    runs.back().eq16_label = eq16_label(name);
+    runs.push_back(source.run(with_eq16_borehole_node(c), runs.back().eq16_label, ref));
   }
-  write_index(root, runs, {true, false, true, false});
+  write_index(root, runs, {true, false, true, false}, source);
   for (const auto& o : runs) {
     add_snapshot_rows(o, snaps);
     add_breakdown_row(o, breakdown);
@@ -74,6 +94,7 @@ BenchmarkResult fig12_quick(const BenchmarkContext& ctx) {
   res.figures = figures("fig12_quick", "quick tier, N = 3000");
   res.notes.push_back(notes_common());
   res.notes.push_back(notes_borehole_node());
+  if (const std::string read = source.note(); !read.empty()) res.notes.push_back(read);
   res.notes.push_back("At N = 3000 the lattice spacing is ~0.034 (the borehole is ~25 spacings round): the fracture "
                       "counts are a first look, not the paper's resolution (the paper tier runs N = 1e5 and a seed "
                       "scatter at N = 2e4). Data: fig12_quick/<case>/ as `hmlattice run` writes it, "
@@ -87,10 +108,44 @@ BenchmarkResult fig12_quick(const BenchmarkContext& ctx) {
 /// finer than the quick tier.
 constexpr long long kScatterN = 20000;
 
+RunCase paper_case(const std::string& b) {
+  return read_run_case(fs::path(HM_SOURCE_DIR) / "cases" / "paper" / ("fig12_b" + b + ".toml"));
+}
+
+/// The case at the scatter's resolution with `seed` for the lattice and the strengths.
+RunCase scatter_case(RunCase c, unsigned long long seed) {
+  c.lattice.n_particles = kScatterN;
+  c.lattice.seed = seed;
+  c.strength.seed = seed;
+  return c;
+}
+
+std::string scatter_label(const std::string& b, unsigned long long seed) {
+  return "fig12_b" + b + "_N" + std::to_string(kScatterN) + "_seed" + std::to_string(seed);
+}
+
+const std::vector<std::string> kPaperB = {"0.2", "0.8"};
+const std::vector<unsigned long long> kScatterSeeds = {1, 2, 3};
+
+std::vector<PlannedRun> fig12_paper_runs() {
+  std::vector<PlannedRun> runs;
+  for (const std::string& b : kPaperB) {
+    const RunCase c = paper_case(b);
+    runs.push_back({"fig12_b" + b, c});
+    runs.push_back({twin_label("fig12_b" + b), flux_twin_case(c)});
+    for (unsigned long long seed : kScatterSeeds) {
+      runs.push_back({scatter_label(b, seed), scatter_case(c, seed)});
+      runs.push_back({eq16_label(scatter_label(b, seed)), with_eq16_borehole_node(scatter_case(c, seed))});
+    }
+  }
+  return runs;
+}
+
 BenchmarkResult fig12_paper(const BenchmarkContext& ctx) {
   BenchmarkResult res;
   const fs::path root = ctx.data_dir / "fig12_paper";
   fs::create_directories(root);
+  RunSource source(root, ctx.runs_dir, ctx.progress);
   Table snaps = snapshot_table(), breakdown = breakdown_table(), timing = timing_table(), node = borehole_node_table();
   Table scatter{"Seed scatter at N = " + std::to_string(kScatterN) + " (seeds 1, 2, 3 of the lattice and the strengths): "
                 "mean ± sample standard deviation over the three runs",
@@ -102,22 +157,18 @@ BenchmarkResult fig12_paper(const BenchmarkContext& ctx) {
                    {}};
   std::vector<RunOutcome> runs;
   std::vector<bool> in_figure;
-  for (const std::string b : {"0.2", "0.8"}) {
-    const RunCase c = read_run_case(fs::path(HM_SOURCE_DIR) / "cases" / "paper" / ("fig12_b" + b + ".toml"));
+  for (const std::string& b : kPaperB) {
+    const RunCase c = paper_case(b);
     const fdm1d::Fdm1dResult ref = write_reference(c, root);
-    runs.push_back(run_case(c, "fig12_b" + b, root, ref, ctx.progress));
-    runs.back().twin_label = "fig12_b" + b + "_flux_borehole";
-    runs.back().twin = run_flux_twin(c, runs.back().twin_label, root, ref);
+    runs.push_back(source.run(c, "fig12_b" + b, ref));
+    runs.back().twin_label = twin_label("fig12_b" + b);
+    runs.back().twin = source.twin(c, runs.back().twin_label, ref);
     in_figure.push_back(true);
     std::vector<RunOutcome> seeds, eq16_seeds;
-    for (unsigned long long seed : {1ULL, 2ULL, 3ULL}) {
-      RunCase cs = c;
-      cs.lattice.n_particles = kScatterN;
-      cs.lattice.seed = seed;
-      cs.strength.seed = seed;
-      const std::string label = "fig12_b" + b + "_N" + std::to_string(kScatterN) + "_seed" + std::to_string(seed);
-      seeds.push_back(run_case(cs, label, root, ref, ctx.progress));
-      eq16_seeds.push_back(run_case(with_eq16_borehole_node(cs), label + "_eq16_node", root, ref, ctx.progress));
+    for (unsigned long long seed : kScatterSeeds) {
+      const RunCase cs = scatter_case(c, seed);
+      seeds.push_back(source.run(cs, scatter_label(b, seed), ref));
+      eq16_seeds.push_back(source.run(with_eq16_borehole_node(cs), eq16_label(scatter_label(b, seed)), ref));
     }
     std::vector<const RunOutcome*> flux_group, eq16_group;
     for (std::size_t k = 0; k < seeds.size(); ++k) flux_group.push_back(&seeds[k]), eq16_group.push_back(&eq16_seeds[k]);
@@ -152,7 +203,7 @@ BenchmarkResult fig12_paper(const BenchmarkContext& ctx) {
         in_figure.push_back(false);
       }
   }
-  write_index(root, runs, in_figure);
+  write_index(root, runs, in_figure, source);
   for (const auto& o : runs) {
     add_snapshot_rows(o, snaps);
     add_breakdown_row(o, breakdown);
@@ -164,6 +215,7 @@ BenchmarkResult fig12_paper(const BenchmarkContext& ctx) {
   res.figures = figures("fig12_paper", "paper tier, N = 1e5");
   res.notes.push_back(notes_common());
   res.notes.push_back(notes_borehole_node());
+  if (const std::string read = source.note(); !read.empty()) res.notes.push_back(read);
   res.notes.push_back("Data: fig12_paper/fig12_b<b>/ (N = 1e5, the figures) and fig12_paper/fig12_b<b>_N" +
                       std::to_string(kScatterN) + "_seed<s>/ (the scatter; _eq16_node: with Eq. 16's borehole node), as `hmlattice run` writes them; "
                       "fig12_paper/fdm1d_b<b>/, runs.csv.");
@@ -180,7 +232,8 @@ void add_lattice2d_borehole_fracture_benchmarks(std::vector<Benchmark>& into) {
                                  "fractures per output time, beside the paper's Fig. 12; the borehole pressure "
                                  "before the first break against fdm1d; each case again with Eq. 16's borehole node.",
                   .tier = Tier::quick,
-                  .run = fig12_quick});
+                  .run = fig12_quick,
+                  .planned_runs = fig12_quick_runs});
   into.push_back({.id = "lattice2d.fig12",
                   .title = "Fracture from a pressurised borehole, b = 0.2 and 0.8, N = 1e5 and a seed scatter at "
                            "N = 2e4 (Figs. 12-13)",
@@ -188,7 +241,8 @@ void add_lattice2d_borehole_fracture_benchmarks(std::vector<Benchmark>& into) {
                                  "resolution, and each at N = 2e4 with seeds 1, 2, 3 (again with Eq. 16's borehole "
                                  "node): as the quick benchmark, plus mean ± sd over the seeds and each run's wall time.",
                   .tier = Tier::paper,
-                  .run = fig12_paper});
+                  .run = fig12_paper,
+                  .planned_runs = fig12_paper_runs});
 }
 
 }  // namespace hm::verification

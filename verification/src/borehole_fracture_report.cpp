@@ -99,7 +99,7 @@ Table timing_table() {
 }
 
 void add_timing_row(const RunOutcome& o, Table& t) {
-  t.rows.push_back({run_name(o), std::to_string(o.n_steps), std::to_string(o.passes), std::to_string(o.n_halvings),
+  t.rows.push_back({run_name(o), std::to_string(o.n_steps), std::to_string(o.passes), o.n_halvings < 0 ? std::string("-") : std::to_string(o.n_halvings),
                     fmt(o.seconds), fmt(o.mechanics), fmt(o.fracture), fmt(o.geometry), fmt(o.flow),
                     fmt(o.max_balance)});
 }
@@ -191,13 +191,14 @@ void add_paper_metrics(const RunOutcome& o, std::vector<Metric>& m) {
 }
 
 /// runs.csv: which folder is which (text columns; read by the figure scripts with csv.DictReader).
-void write_index(const fs::path& root, const std::vector<RunOutcome>& runs, const std::vector<bool>& in_figure) {
+void write_index(const fs::path& root, const std::vector<RunOutcome>& runs, const std::vector<bool>& in_figure,
+                 const RunSource& source) {
   std::ofstream f = core::open_for_writing(root / "runs.csv");
   f << "run,b,n_particles,seed,fdm1d,figure,flux_twin,eq16_node\n";
   for (std::size_t k = 0; k < runs.size(); ++k)
-    f << runs[k].label << "," << fmt(runs[k].b) << "," << runs[k].n_particles << "," << runs[k].seed << ",fdm1d_b"
-      << fmt(runs[k].b) << "," << (in_figure[k] ? 1 : 0) << "," << runs[k].twin_label << "," << runs[k].eq16_label
-      << "\n";
+    f << source.folder(runs[k].label) << "," << fmt(runs[k].b) << "," << runs[k].n_particles << "," << runs[k].seed
+      << ",fdm1d_b" << fmt(runs[k].b) << "," << (in_figure[k] ? 1 : 0) << "," << source.folder(runs[k].twin_label) << ","
+      << source.folder(runs[k].eq16_label) << "\n";
   core::close_checked(f, root / "runs.csv");
 }
 

@@ -42,8 +42,9 @@ void add_gating_metrics(const RunOutcome& o, std::vector<Metric>& m);
 void add_paper_metrics(const RunOutcome& o, std::vector<Metric>& m);
 
 /// runs.csv: which folder is which (text columns; read by the figure scripts with csv.DictReader).
+/// `source` says where each run's folder is (RunSource::folder).
 void write_index(const std::filesystem::path& root, const std::vector<RunOutcome>& runs,
-                 const std::vector<bool>& in_figure);
+                 const std::vector<bool>& in_figure, const RunSource& source);
 
 /// Figs. 12 and 13 drawn from root/<subdir>; `what` names the tier in the captions.
 std::vector<Figure> figures(const std::string& subdir, const std::string& what);

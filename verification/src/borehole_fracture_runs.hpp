@@ -89,14 +89,50 @@ struct RunOutcome {
 /// lattice's nu), written to root/fdm1d_b<b>/ as `hmlattice fdm1d` writes it.
 fdm1d::Fdm1dResult write_reference(const cases::RunCase& c, const std::filesystem::path& root);
 
-/// Runs case `c` with fracture into root/label/. `progress` (null: silent) gets a line a minute and one
-/// at the end: the paper tier's runs take up to an hour.
+/// What the files of run folder `dir` of case `c` (as `hmlattice run` writes it, complete) show: every
+/// field of RunOutcome but the pressure in the fractures (VTK only: left NaN, n_away = 0) and the timing
+/// split (NaN; n_halvings -1). Numbers as the CSV files hold them (10 significant digits). Throws
+/// std::runtime_error naming a missing or damaged file.
+RunOutcome read_run(const cases::RunCase& c, const std::string& label, const std::filesystem::path& dir,
+                    const fdm1d::Fdm1dResult& ref);
+
+/// Runs case `c` with fracture into root/label/, then reads its numbers from there (read_run), so that
+/// a folder made by `hmlattice run` gives the same; adds what only the running model shows (the
+/// pressure in the fractures, the timing split, a beam found intact after breaking). `progress`
+/// (null: silent) gets a line a minute and one at the end: the paper tier's runs take up to an hour.
 RunOutcome run_case(const cases::RunCase& c, const std::string& label, const std::filesystem::path& root,
                     const fdm1d::Fdm1dResult& ref, std::ostream* progress = nullptr);
 
-/// Runs the unfractured flux-borehole twin of `c` into root/label/, to the case's first output time.
+/// The unfractured flux-borehole twin of `c`, to the case's first output time.
+cases::RunCase flux_twin_case(const cases::RunCase& c);
+
+/// What the twin's run folder shows (`twin_case` = flux_twin_case(c)).
+TwinOutcome read_twin(const cases::RunCase& twin_case, const std::filesystem::path& dir, const fdm1d::Fdm1dResult& ref);
+
+/// Runs the twin of `c` into root/label/ and reads it (read_twin).
 TwinOutcome run_flux_twin(const cases::RunCase& c, const std::string& label, const std::filesystem::path& root,
                           const fdm1d::Fdm1dResult& ref);
+
+/// Where a benchmark's runs come from: run here into root/<label> (hmlattice verify's single-process
+/// mode), or read from runs_dir/<label> when that folder exists (`hmlattice verify --runs DIR`; the
+/// harness has checked it is complete and of the same case: check_run_folders).
+class RunSource {
+ public:
+  RunSource(std::filesystem::path root, std::filesystem::path runs_dir, std::ostream* progress);
+  RunOutcome run(const cases::RunCase& c, const std::string& label, const fdm1d::Fdm1dResult& ref);
+  /// The flux-borehole twin of the fracturing case `c`.
+  TwinOutcome twin(const cases::RunCase& c, const std::string& label, const fdm1d::Fdm1dResult& ref);
+  /// The folder of run `label` for runs.csv: the label (under root) if run here, else the absolute path.
+  std::string folder(const std::string& label) const;
+  /// For the report: which runs were read from runs_dir ("" without runs_dir).
+  std::string note() const;
+
+ private:
+  bool is_read(const std::string& label) const;
+  std::filesystem::path root_, runs_dir_;
+  std::ostream* progress_;
+  std::vector<std::string> read_;
+};
 
 /// `c` with the paper's Eq. 16 borehole node (storage (E/M) V_h dp_h and b dV_h, errata E15) instead of
 /// the cases' flux boundary.

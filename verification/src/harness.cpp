@@ -15,18 +15,28 @@ using cases::make_provenance;
 
 namespace fs = std::filesystem;
 
-HarnessSummary run_harness(const std::vector<Benchmark>& benchmarks, const HarnessOptions& options,
-                           std::ostream& log) {
+std::vector<const Benchmark*> select_benchmarks(const std::vector<Benchmark>& benchmarks, Tier tier,
+                                                const std::string& filter) {
   std::vector<const Benchmark*> selected;
   for (const auto& b : benchmarks)
-    if ((options.tier == Tier::paper || b.tier == Tier::quick) &&
-        b.id.find(options.filter) != std::string::npos)
+    if ((tier == Tier::paper || b.tier == Tier::quick) && b.id.find(filter) != std::string::npos)
       selected.push_back(&b);
-  // A filter that selects nothing is a typo, not an empty report.
   if (selected.empty())
-    throw InputError("--filter = '" + core::echo(options.filter) + "' matches no benchmark id of the " +
-                     core::name_of(options.tier) + " tier, allowed: part of an id (" +
+    throw InputError("--filter = '" + core::echo(filter) + "' matches no benchmark id of the " + core::name_of(tier) +
+                     " tier, allowed: part of an id (" +
                      (benchmarks.empty() ? std::string("none registered") : "e.g. '" + benchmarks.front().id + "'") + ")");
+  return selected;
+}
+
+HarnessSummary run_harness(const std::vector<Benchmark>& benchmarks, const HarnessOptions& options,
+                           std::ostream& log) {
+  const std::vector<const Benchmark*> selected = select_benchmarks(benchmarks, options.tier, options.filter);
+  // Run folders made elsewhere (a workflow engine) are checked before anything is written or run.
+  if (!options.runs_dir.empty()) {
+    const RunFolderCheck check = check_run_folders(selected, options.runs_dir);
+    log << "--runs " << options.runs_dir.string() << ": " << check.found << " of the " << check.planned
+        << " planned runs found there (complete, same case), " << check.planned - check.found << " to run here\n";
+  }
 
   core::ResultFolder out(options.out_dir, "--out", options.overwrite, options.command_line);
   const fs::path data_dir = out.path() / "data", figure_dir = out.path() / "figures";
@@ -44,7 +54,7 @@ HarnessSummary run_harness(const std::vector<Benchmark>& benchmarks, const Harne
     log << heading << (long_running ? " ...\n" : " ... ") << std::flush;
     const auto start = std::chrono::steady_clock::now();
     try {
-      o.result = o.benchmark->run(BenchmarkContext{options.tier, data_dir, long_running ? &log : nullptr});
+      o.result = o.benchmark->run(BenchmarkContext{options.tier, data_dir, long_running ? &log : nullptr, options.runs_dir});
     } catch (const std::exception& e) {
       o.error = e.what();
     }

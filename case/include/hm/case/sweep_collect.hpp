@@ -14,6 +14,11 @@ struct SweepCollectCounts {
   int missing = 0;
 };
 
+/// The state of a run folder as collect_sweep reports it: "complete" (a result folder whose marker says
+/// it finished), "incomplete" (stopped before t_end, still being written, or not written by hmlattice)
+/// or "missing" (nothing there). Reads only.
+std::string run_folder_status(const std::filesystem::path& run);
+
 /// Writes to `csv` one row per combination of `sweep_folder`/index.csv (an `hmlattice sweep expand`
 /// folder), in its order: name, the swept values, `status` (complete: `runs_folder`/<name> is a
 /// result folder whose marker says it finished; incomplete: a folder that stopped before t_end, is

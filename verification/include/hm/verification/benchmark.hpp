@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "hm/case/run_case.hpp"
 #include "hm/core/enum_names.hpp"
 
 namespace hm::verification {
@@ -72,6 +73,16 @@ struct BenchmarkContext {
   std::filesystem::path data_dir;  ///< write CSV for figures here (exists)
   /// Paper-tier benchmarks may print progress lines of their long runs here; null in the quick tier.
   std::ostream* progress = nullptr;
+  /// `hmlattice verify --runs DIR`: a planned run (Benchmark::planned_runs) whose folder DIR/<label>
+  /// exists is read from there instead of run (the harness has checked that it is complete and of the
+  /// same case); empty: every run is run here.
+  std::filesystem::path runs_dir;
+};
+
+/// One run of a case file a benchmark makes: what `hmlattice run` would run into a folder <label>.
+struct PlannedRun {
+  std::string label;  ///< file-name safe, unique over every benchmark of both tiers
+  cases::RunCase c;
 };
 
 struct Benchmark {
@@ -81,6 +92,9 @@ struct Benchmark {
   /// quick benchmarks run in both tiers; paper benchmarks only in the paper tier.
   Tier tier = Tier::quick;
   std::function<BenchmarkResult(const BenchmarkContext&)> run;
+  /// The runs of case files it makes (empty for a benchmark that runs nothing of the kind): what
+  /// `hmlattice verify --write-cases` writes for a workflow engine, and what `--runs` may read back.
+  std::function<std::vector<PlannedRun>()> planned_runs = {};
 };
 
 /// Every registered benchmark, in report order. Each module's benchmarks are added by one
