@@ -14,6 +14,7 @@
 #include "hm/analytic/breakdown_insitu.hpp"
 #include "hm/analytic/insitu_annulus.hpp"
 #include "hm/case/coupled_model_of_case.hpp"
+#include "hm/case/provenance.hpp"
 #include "hm/case/run_case.hpp"
 #include "hm/case/run_output.hpp"
 #include "hm/core/csv_writer.hpp"
@@ -241,6 +242,11 @@ InjectionRun run_injection(const cases::RunCase& c, const std::filesystem::path&
       c.stepping, [&](const l2::CoupledModel& m, const l2::CoupledStepSummary& step, bool out) { recorder.record(m, step, out); });
   recorder.finish();
   if (!s.is_ok()) throw std::runtime_error("in-situ injection run " + dir.filename().string() + ": " + s.message);
+  core::write_file_atomically(dir / "config.toml", [&](std::ostream& out) {
+    out << cases::run_case_to_toml(
+        c, cases::to_toml(cases::make_provenance("hmlattice verify (lattice2d.insitu_injection), run " +
+                                                 dir.filename().string())));
+  });
   run.breakdown = recorder.breakdown();
   const l2::Lattice& l = model->lattice();
   run.stats = l2::compute_fracture_statistics(l, model->mechanics().states(), model->break_log());
@@ -330,6 +336,11 @@ BenchmarkResult insitu_injection(const BenchmarkContext& ctx) {
                          .justification = "a deviatoric far field selects the S_H direction: fewer arms than the "
                                           "isotropic field's, which leaves every direction equal; 0.75 asks for a "
                                           "clear fall, not a number"});
+  res.figures.push_back({"verify_insitu_injection.py", "verify_insitu_injection.png",
+                         "Injection from rest under an isotropic and an anisotropic far field: broken beams (colour: "
+                         "time of breaking) with the S_H direction, and the borehole pressure with each field's "
+                         "Hubbert-Willis pressure.",
+                         ""});
   res.notes.push_back(
       "The lattice is brought to rest under the far field before injection (CoupledModel::settle, docs/insitu.md). "
       "Breakdown is bracketed by the p_h of the step before and of the step that broke the first beam (8-14% "
