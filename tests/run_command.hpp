@@ -8,7 +8,10 @@
 #include <fstream>
 #include <functional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace hm::test {
 
@@ -22,6 +25,17 @@ inline std::string slurp(const std::filesystem::path& p) {
   std::stringstream ss;
   ss << in.rdbuf();
   return ss.str();
+}
+
+/// `text` with each edit's first `from` replaced by its `to`, in order; throws std::runtime_error for
+/// a `from` that is not there (the case file the test edits has changed under it).
+inline std::string edited(std::string text, const std::vector<std::pair<std::string, std::string>>& edits) {
+  for (const auto& [from, to] : edits) {
+    const auto at = text.find(from);
+    if (at == std::string::npos) throw std::runtime_error("edited: '" + from + "' is not in the text");
+    text.replace(at, from.size(), to);
+  }
+  return text;
 }
 
 /// Runs `HMLATTICE_EXE <args>` in `workdir` (args are passed to the shell as written), after the

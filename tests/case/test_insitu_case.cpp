@@ -18,17 +18,11 @@ namespace {
 // The Fig. 12 quick case (b = 0.2, N = 3000) to t* = 5e-4, without VTK, with `mechanics` added to
 // its [mechanics] table.
 std::string short_fig12_case(const std::string& mechanics) {
-  std::string text = slurp(std::filesystem::path(HM_SOURCE_DIR) / "cases/fig12_b0.2_quick.toml");
-  const auto replace = [&](const std::string& from, const std::string& to) {
-    const auto at = text.find(from);
-    REQUIRE(at != std::string::npos);
-    text.replace(at, from.size(), to);
-  };
-  replace("t_end = 0.0272", "t_end = 0.0005");
-  replace("times = [0.0045, 0.009, 0.0272]", "times = [0.0005]");
-  replace("vtk = true", "vtk = false");
-  replace("outer = \"free\"\n", "outer = \"free\"\n" + mechanics);
-  return text;
+  return hm::test::edited(slurp(std::filesystem::path(HM_SOURCE_DIR) / "cases/fig12_b0.2_quick.toml"),
+                          {{"t_end = 0.0272", "t_end = 0.0005"},
+                           {"times = [0.0045, 0.009, 0.0272]", "times = [0.0005]"},
+                           {"vtk = true", "vtk = false"},
+                           {"outer = \"free\"\n", "outer = \"free\"\n" + mechanics}});
 }
 
 // The beams it breaks, in order, as the model before in-situ stress existed broke them (the

@@ -20,15 +20,9 @@ namespace {
 // 34 beams at step 1 and 443 by step 24, so the stops below fall in a pause of the fracturing, in its
 // middle and near its end, with contacts switching and the factor downdated in between.
 std::string fig12_to_first_snapshot() {
-  std::string text = slurp(std::filesystem::path(HM_SOURCE_DIR) / "cases/fig12_b0.2_quick.toml");
-  const auto replace = [&](const std::string& from, const std::string& to) {
-    const auto at = text.find(from);
-    REQUIRE(at != std::string::npos);
-    text.replace(at, from.size(), to);
-  };
-  replace("t_end = 0.0272", "t_end = 0.0045");
-  replace("times = [0.0045, 0.009, 0.0272]", "times = [0.002, 0.0045]");
-  return text;
+  return hm::test::edited(slurp(std::filesystem::path(HM_SOURCE_DIR) / "cases/fig12_b0.2_quick.toml"),
+                          {{"t_end = 0.0272", "t_end = 0.0045"},
+                           {"times = [0.0045, 0.009, 0.0272]", "times = [0.002, 0.0045]"}});
 }
 
 // Every file a user compares: the step series, the break log, the radial profiles, the fracture tables,

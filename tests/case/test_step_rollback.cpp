@@ -19,19 +19,13 @@ namespace {
 // the first step) and a pass cap of 15: the first attempts break hundreds of beams at once and do not
 // converge within the cap, so run() halves; the halved steps converge.
 std::string halving_case() {
-  std::string text = slurp(std::filesystem::path(HM_SOURCE_DIR) / "cases/fig12_b0.2_quick.toml");
-  const auto replace = [&](const std::string& from, const std::string& to) {
-    const auto at = text.find(from);
-    REQUIRE(at != std::string::npos);
-    text.replace(at, from.size(), to);
-  };
-  replace("n_particles = 3000", "n_particles = 2000");
-  replace("dt_initial = 1e-5\ndt_growth = 1.2\ndt_max = 5e-4\nt_end = 0.0272",
-          "dt_initial = 1e-3\ndt_growth = 1\ndt_max = 1e-3\nt_end = 0.006");
-  replace("times = [0.0045, 0.009, 0.0272]", "times = [0.006]");
-  replace("vtk = true", "vtk = false");
-  replace("displacement_tolerance = 1e-4", "displacement_tolerance = 1e-4\nmax_iterations = 15");
-  return text;
+  return hm::test::edited(slurp(std::filesystem::path(HM_SOURCE_DIR) / "cases/fig12_b0.2_quick.toml"),
+                          {{"n_particles = 3000", "n_particles = 2000"},
+                           {"dt_initial = 1e-5\ndt_growth = 1.2\ndt_max = 5e-4\nt_end = 0.0272",
+                            "dt_initial = 1e-3\ndt_growth = 1\ndt_max = 1e-3\nt_end = 0.006"},
+                           {"times = [0.0045, 0.009, 0.0272]", "times = [0.006]"},
+                           {"vtk = true", "vtk = false"},
+                           {"displacement_tolerance = 1e-4", "displacement_tolerance = 1e-4\nmax_iterations = 15"}});
 }
 
 bool same_events(const hm::lattice2d::BreakEvent& a, const hm::lattice2d::BreakEvent& b) {
