@@ -40,27 +40,6 @@ namespace {
 
 std::string fmt(double x) { return format_number(x); }
 
-/// The 1D reference of a case: fdm1d (Appendix A, no fracture, flux-boundary borehole) with the
-/// calibrated lattice's nu and the case's E/M, plane-strain volumetric strain (as benchmarks_lattice2d_vs_fdm1d.cpp),
-/// on the case's dt sequence and output times.
-fdm1d::Fdm1dResult run_reference(const RunCase& c) {
-  analytic::DimensionlessParameters p = c.physics.parameters;
-  p.material.nu = lt::calibrated_continuum(c.stiffness_scaling).poisson_ratio;
-  p.material.vol_strain = analytic::VolStrain::plane_strain;
-  fdm1d::Fdm1dNumerics n;
-  n.n_r = 400;  // steady state within ~0.2% of Appendix B; far finer than the lattice
-  n.dt_initial = c.stepping.dt_initial;
-  n.dt_growth = c.stepping.dt_growth;
-  n.dt_max = c.stepping.dt_max;
-  n.t_end = c.stepping.t_end;
-  n.output_times = c.output.times;
-  n.output_times.erase(std::remove_if(n.output_times.begin(), n.output_times.end(),
-                                      [&](double t) { return t >= c.stepping.t_end * (1 - 1e-12); }),
-                       n.output_times.end());
-  fdm1d::Fdm1dResult r = fdm1d::run_fdm1d(p, n);
-  if (!r.summary.is_success()) throw std::runtime_error("fdm1d failed: " + r.summary.message);
-  return r;
-}
 
 /// u_r of the lattice against 1D at time t, shell by shell (Fig. 13's comparison): the max of
 /// |u_r/u_r,1D - 1| and the mean of u_r/u_r,1D over the shells; nothing if the reference has no snapshot at t.
@@ -183,6 +162,31 @@ FracturePressure fracture_pressure(const lt::CoupledModel& m) {
   if (f.n_all > 0) f.mean_all = pa_all / a_all;
   if (f.n_away > 0) f.mean_away = pa_away / a_away, f.negative_area_fraction = a_neg / a_away;
   return f;
+}
+
+/// The 1D reference of a case: fdm1d (Appendix A, no fracture, flux-boundary borehole) with the
+/// calibrated lattice's nu and the case's E/M, plane-strain volumetric strain (as benchmarks_lattice2d_vs_fdm1d.cpp),
+/// on the case's dt sequence and output times.
+fdm1d::Fdm1dResult run_reference(const RunCase& c) {
+  analytic::DimensionlessParameters p = c.physics.parameters;
+  p.material.nu = lt::calibrated_continuum(c.stiffness_scaling).poisson_ratio;
+  p.material.vol_strain = analytic::VolStrain::plane_strain;
+  fdm1d::Fdm1dNumerics n;
+  n.n_r = 400;  // steady state within ~0.2% of Appendix B; far finer than the lattice
+  n.dt_initial = c.stepping.dt_initial;
+  n.dt_growth = c.stepping.dt_growth;
+  n.dt_max = c.stepping.dt_max;
+  n.t_end = c.stepping.t_end;
+  n.output_times = c.output.times;
+  n.output_times.erase(std::remove_if(n.output_times.begin(), n.output_times.end(),
+                                      [&](double t) { return t >= c.stepping.t_end * (1 - 1e-12); }),
+                       n.output_times.end());
+  // An isotropic in-situ stress is the 1D model's rest state; a deviatoric one has no 1D counterpart.
+  const fdm1d::RestState rest = c.insitu.S_H == c.insitu.S_h ? fdm1d::RestState{c.insitu.S_H, c.insitu.p0}
+                                                              : fdm1d::RestState{};
+  fdm1d::Fdm1dResult r = fdm1d::run_fdm1d(p, n, rest);
+  if (!r.summary.is_success()) throw std::runtime_error("fdm1d failed: " + r.summary.message);
+  return r;
 }
 
 fdm1d::Fdm1dResult write_reference(const RunCase& c, const fs::path& root) {

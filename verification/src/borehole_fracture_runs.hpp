@@ -85,6 +85,10 @@ struct RunOutcome {
   std::string eq16_label;  // the folder of the same case with Eq. 16's borehole node; empty: none
 };
 
+/// The 1D model on case `c`'s material (the calibrated lattice's nu, plane strain), dt sequence and
+/// output times, from the case's rest state when its in-situ stress is isotropic (fdm1d::RestState).
+fdm1d::Fdm1dResult run_reference(const cases::RunCase& c);
+
 /// The 1D reference of a case (fdm1d: Appendix A, no fracture, flux-boundary borehole, with the calibrated
 /// lattice's nu), written to root/fdm1d_b<b>/ as `hmlattice fdm1d` writes it.
 fdm1d::Fdm1dResult write_reference(const cases::RunCase& c, const std::filesystem::path& root);
