@@ -1,6 +1,6 @@
 // hmlattice analytic <solution>: evaluate a closed-form solution of analytic/ and print CSV
-// (a header row, then one row per radius; per (r, theta) pair for insitu, per formula for
-// breakdown-insitu, per Biot coefficient for breakdown) to stdout. Dimensionless, tension positive
+// (a header row, then one row per radius; per (r, theta) pair for insitu; per Biot coefficient for
+// breakdown, or per Biot coefficient and formula under a far field) to stdout. Dimensionless, tension positive
 // (far-field magnitudes S_H, S_h and pressures are given compression positive, as geomechanics
 // states them).
 #include <cmath>
@@ -225,53 +225,50 @@ void add_insitu(CLI::App* parent) {
   });
 }
 
-void add_breakdown_insitu(CLI::App* parent) {
-  struct Args {
-    double SH = 0.0, Sh = 0.0, Ri = 0.138;
-    BreakdownParameters m;
-  };
-  auto a = std::make_shared<Args>();
-  auto* cmd = parent->add_subcommand(
-      "breakdown-insitu", "Breakdown pressure under a far-field stress: Hubbert-Willis, Haimson-Fairhurst, jacketed annulus");
-  cmd->add_option("--SH,--S_H", a->SH, "largest far-field stress magnitude S_H/E, compression positive")->required();
-  cmd->add_option("--Sh,--S_h", a->Sh, "smallest far-field stress magnitude S_h/E <= S_H, compression positive")
-      ->required();
-  cmd->add_option("--T,--T_u", a->m.T_u, "tensile strength T_u/E")->capture_default_str();
-  cmd->add_option("--p0", a->m.p0, "in-situ pore pressure p0/E, compression positive")->capture_default_str();
-  cmd->add_option("--b", a->m.b, "Biot coefficient of the effective stress (1: the textbook forms)")
-      ->capture_default_str();
-  cmd->add_option("--nu", a->m.nu, "Poisson ratio")->capture_default_str();
-  cmd->add_option("--Ri,--R_i", a->Ri, "borehole radius R_i/R of the annulus")->capture_default_str();
-  cmd->callback([a] {
-    const FarFieldStress far{a->SH, a->Sh, 0.0};
-    std::vector<std::pair<std::string, std::vector<double>>> rows;
-    for (const auto& [name, bd] : {std::pair{"hubbert_willis", hubbert_willis_breakdown(far, a->m)},
-                                   std::pair{"haimson_fairhurst", haimson_fairhurst_breakdown(far, a->m)},
-                                   std::pair{"annulus_jacketed", annulus_jacketed_breakdown(far, a->m, a->Ri)}})
-      rows.push_back({name, {bd.p_w, degrees(bd.theta)}});
-    print_named_table("formula", {"p_b", "theta_deg"}, rows);
-  });
-}
-
 void add_breakdown(CLI::App* parent) {
   struct Args {
     std::vector<double> b;
     hm::analytic::DimensionlessParameters d;  // Table 1's nu, R_i, T_u
+    double SH = 0.0, Sh = 0.0, p0 = 0.0;
   };
   auto a = std::make_shared<Args>();
   auto* cmd = parent->add_subcommand(
-      "breakdown", "Breakdown-pressure limits of the unfractured borehole (1D model): q_min, slow, fast, jacketed");
+      "breakdown", "Breakdown pressures: without --SH/--Sh the unfractured borehole's limits (1D model: q_min, slow, "
+                   "fast, jacketed); with them Hubbert-Willis, Haimson-Fairhurst and the jacketed annulus under the "
+                   "far field (docs/insitu.md)");
   cmd->add_option("--b", a->b, "comma-separated Biot coefficients; E/M by Eq. 22 with Table 1's porosity, K_w, E")
       ->delimiter(',')
       ->required();
   cmd->add_option("--nu", a->d.material.nu, "Poisson ratio")->capture_default_str();
   cmd->add_option("--Ri,--R_i", a->d.R_i, "borehole radius R_i/R")->capture_default_str();
   cmd->add_option("--Tu,--T_u", a->d.tensile_strength, "tensile strength T_u/E")->capture_default_str();
-  cmd->callback([a] {
+  auto* SH = cmd->add_option("--SH,--S_H", a->SH, "largest far-field stress magnitude S_H/E, compression positive");
+  auto* Sh = cmd->add_option("--Sh,--S_h", a->Sh, "smallest far-field stress magnitude S_h/E <= S_H, compression positive");
+  auto* p0 = cmd->add_option("--p0", a->p0, "in-situ pore pressure p0/E, compression positive (with --SH, --Sh)")
+                 ->capture_default_str();
+  SH->needs(Sh);
+  Sh->needs(SH);
+  p0->needs(SH);
+  cmd->callback([a, SH] {
     // Named as the user typed them; every row is validated before any is printed.
     require_open(a->d.material.nu, "nu", 0.0, 0.5);
     require_open(a->d.R_i, "Ri", 0.0, 1.0);
     require_positive(a->d.tensile_strength, "Tu");
+    if (SH->count() > 0) {
+      // One row per b and formula: the wall pressure at which the effective hoop stress first reaches
+      // T_u, and its angle from S_H.
+      const FarFieldStress far{a->SH, a->Sh, 0.0};
+      std::vector<std::pair<std::string, std::vector<double>>> rows;
+      for (double b : a->b) {
+        const BreakdownParameters m{.T_u = a->d.tensile_strength, .p0 = a->p0, .b = b, .nu = a->d.material.nu};
+        for (const auto& [name, bd] : {std::pair{"hubbert_willis", hubbert_willis_breakdown(far, m)},
+                                       std::pair{"haimson_fairhurst", haimson_fairhurst_breakdown(far, m)},
+                                       std::pair{"annulus_jacketed", annulus_jacketed_breakdown(far, m, a->d.R_i)}})
+          rows.push_back({name, {b, bd.p_w, degrees(bd.theta)}});
+      }
+      print_named_table("formula", {"b", "p_b", "theta_deg"}, rows);
+      return;
+    }
     std::vector<std::vector<double>> rows;
     for (double b : a->b) {
       require_closed(b, "b", 0.0, 1.0);
@@ -295,7 +292,6 @@ void add_analytic_command(CLI::App& app, int& /*exit_code*/) {
   add_sneddon(cmd);
   add_lame(cmd);
   add_insitu(cmd);
-  add_breakdown_insitu(cmd);
   add_breakdown(cmd);
 }
 

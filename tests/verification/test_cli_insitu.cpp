@@ -1,4 +1,4 @@
-// hmlattice analytic insitu and breakdown-insitu as a user types them: printed values against the
+// hmlattice analytic insitu and breakdown --SH/--Sh as a user types them: printed values against the
 // library, and bad input refused with one line, exit code 2 and nothing printed.
 #include <catch2/catch.hpp>
 
@@ -27,16 +27,22 @@ TEST_CASE("hmlattice analytic insitu prints the library values with r outer and 
   CHECK(count_lines(r.out) == 5);
 }
 
-TEST_CASE("hmlattice analytic breakdown-insitu prints one row per formula", "[verification][cli]") {
+TEST_CASE("hmlattice analytic breakdown --SH --Sh prints one row per b and formula", "[verification][cli]") {
   TempDir dir("cli-breakdown-insitu");
-  const auto r = run_hmlattice("analytic breakdown-insitu --SH 3e-3 --Sh 2e-3", dir.path);
+  const auto r = run_hmlattice("analytic breakdown --b 1,0.5 --SH 3e-3 --Sh 2e-3", dir.path);
   REQUIRE(r.exit_code == 0);
-  // Hubbert-Willis by hand: 3 S_h - S_H + T_u = 6e-3 - 3e-3 + 2e-4 = 3.2e-3.
+  // Hubbert-Willis by hand at b = 1: 3 S_h - S_H + T_u = 6e-3 - 3e-3 + 2e-4 = 3.2e-3 (p0 = 0: b drops out).
   const hm::analytic::FarFieldStress far{3e-3, 2e-3, 0.0};
-  const hm::analytic::BreakdownParameters m;
-  CHECK(r.out == "formula,p_b,theta_deg\nhubbert_willis,0.0032,0\n"
-                 "haimson_fairhurst," + csv_number(hm::analytic::haimson_fairhurst_breakdown(far, m).p_w) + ",0\n"
-                 "annulus_jacketed," + csv_number(hm::analytic::annulus_jacketed_breakdown(far, m, 0.138).p_w) + ",0\n");
+  hm::analytic::BreakdownParameters m;
+  std::string expected = "formula,b,p_b,theta_deg\n";
+  for (double b : {1.0, 0.5}) {
+    m.b = b;
+    expected += "hubbert_willis," + csv_number(b) + ",0.0032,0\n"
+                "haimson_fairhurst," + csv_number(b) + "," + csv_number(hm::analytic::haimson_fairhurst_breakdown(far, m).p_w) +
+                ",0\nannulus_jacketed," + csv_number(b) + "," +
+                csv_number(hm::analytic::annulus_jacketed_breakdown(far, m, 0.138).p_w) + ",0\n";
+  }
+  CHECK(r.out == expected);
 }
 
 TEST_CASE("Bad in-situ input is refused with one line and nothing printed", "[verification][cli]") {
@@ -51,8 +57,10 @@ TEST_CASE("Bad in-situ input is refused with one line and nothing printed", "[ve
   };
   refused("analytic insitu --SH 1e-3 --Sh 2e-3 --r 0.5 --theta 0", "S_h = 0.002, allowed: 0 <= S_h <= S_H (0.001)");
   refused("analytic insitu --SH 3e-3 --Sh 1e-3 --r 0.5,0.1 --theta 0", "r = 0.1, allowed: 0.138 <= r <= 1");
-  refused("analytic breakdown-insitu --SH 3e-3 --Sh 2e-3 --b 1.5", "b = 1.5, allowed: 0 <= b <= 1");
-  refused("analytic breakdown-insitu --SH 1e308 --Sh 1e308",
+  refused("analytic breakdown --SH 3e-3 --Sh 2e-3 --b 1.5", "b = 1.5, allowed: 0 <= b <= 1");
+  refused("analytic breakdown --b 1 --SH 1e308 --Sh 1e308",
           "p_b = inf for formula = hubbert_willis: the inputs overflow double precision");
+  refused("analytic breakdown --b 1 --SH 3e-3", "--SH requires --Sh");
+  refused("analytic breakdown --b 1 --SH 1e-3 --Sh 2e-3", "S_h = 0.002, allowed: 0 <= S_h <= S_H (0.001)");
   CHECK(dir.is_empty());
 }
