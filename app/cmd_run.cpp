@@ -198,7 +198,7 @@ void run_case(const RunArgs& a, int& exit_code, const std::string& command_line)
               << ", p_h = " << core::format_value(recorder->breakdown().p_first) << " (step " << step << ")\n";
   else if (c.stop_at_first_break)
     std::cout << "No beam broke by t_end = " << core::format_value(c.stepping.t_end) << "\n";
-  std::cout << "Results: " << out->target().string() << (c.fracture_enabled ? "/{series,radial,breaks,breakdown,fractures,fracture_summary}.csv, " : "/{series,radial}.csv, ") << (c.output.vtk ? "vtk/lattice.pvd, " : "")
+  std::cout << "Results: " << out->target().string() << (c.fracture_enabled ? "/{series,radial,breaks,breakdown,fractures,fracture_summary,fracture_pressure}.csv, " : "/{series,radial}.csv, ") << (c.output.vtk ? "vtk/lattice.pvd, " : "")
             << "config.toml\n";
 }
 

@@ -1,5 +1,7 @@
 #include "hm/case/run_output.hpp"
 
+#include "hm/case/fracture_pressure.hpp"
+
 #include "hm/core/file_output.hpp"
 #include "hm/core/input_error.hpp"
 #include "hm/lattice2d/io/radial_average.hpp"
@@ -50,6 +52,8 @@ const std::vector<std::string> series_columns = {"t", "dt", "p_h", "injected", "
                                                  "balance_error", "n_broken", "iterations", "pressure_residual",
                                                  "displacement_residual"};
 const std::vector<std::string> radial_columns = {"t", "r", "r_mean", "n_triangles", "u_r", "p"};
+const std::vector<std::string> fracture_pressure_columns = {"t", "mean_all", "mean_away", "min_away", "n_all", "n_away",
+                                                            "negative_area_fraction"};
 
 // The fracture statistics when the log held its first n events: broken beams never heal and only the
 // break loop breaks them (logging each), so those events' beams are the broken ones at that time.
@@ -77,6 +81,8 @@ RunRecorder::RunRecorder(const std::filesystem::path& dir, const RunCase& c)
   if (fracture_) {
     breaks_file_ = core::open_for_writing(dir / "breaks.csv");
     lt::write_break_log_header(breaks_file_, "time");
+    pressure_file_ = core::open_for_writing(dir / "fracture_pressure.csv");
+    pressure_ = std::make_unique<CsvWriter>(pressure_file_, fracture_pressure_columns, core::NonFinite::write);
   }
 }
 
@@ -89,7 +95,7 @@ RunRecorder::RunRecorder(const std::filesystem::path& dir, const RunCase& c, con
       statistics_options_{c.output.fracture_link} {
   std::vector<std::int64_t> sizes;
   r.get("recorder.file_sizes", sizes);
-  if (sizes.size() != 3) throw InputError(r.source() + ": at 'recorder.file_sizes': 3 values expected");
+  if (sizes.size() != 4) throw InputError(r.source() + ": at 'recorder.file_sizes': 4 values expected");
   std::vector<double> b;
   r.get("recorder.breakdown", b);
   if (b.size() != 9) throw InputError(r.source() + ": at 'recorder.breakdown': 9 values expected");
@@ -128,7 +134,12 @@ RunRecorder::RunRecorder(const std::filesystem::path& dir, const RunCase& c, con
   series_ = std::make_unique<CsvWriter>(series_file_, series_columns, core::NonFinite::write, core::CsvHeader::already_written);
   radial_ = std::make_unique<CsvWriter>(radial_file_, radial_columns, core::NonFinite::write, core::CsvHeader::already_written);
   if (output_.vtk) vtk_ = std::make_unique<lt::VtkSeries>(dir / "vtk", "lattice", lt::VtkFormat::binary, std::move(written));
-  if (fracture_) breaks_file_ = core::open_for_appending(dir / "breaks.csv", static_cast<std::uintmax_t>(sizes[2]));
+  if (fracture_) {
+    breaks_file_ = core::open_for_appending(dir / "breaks.csv", static_cast<std::uintmax_t>(sizes[2]));
+    pressure_file_ = core::open_for_appending(dir / "fracture_pressure.csv", static_cast<std::uintmax_t>(sizes[3]));
+    pressure_ = std::make_unique<CsvWriter>(pressure_file_, fracture_pressure_columns, core::NonFinite::write,
+                                            core::CsvHeader::already_written);
+  }
 }
 
 void RunRecorder::save_state(core::StateWriter& w) {
@@ -136,7 +147,8 @@ void RunRecorder::save_state(core::StateWriter& w) {
     f.flush();
     return f.is_open() ? static_cast<std::int64_t>(f.tellp()) : std::int64_t{0};
   };
-  w.put("recorder.file_sizes", std::vector<std::int64_t>{size_of(series_file_), size_of(radial_file_), size_of(breaks_file_)});
+  w.put("recorder.file_sizes", std::vector<std::int64_t>{size_of(series_file_), size_of(radial_file_),
+                                                         size_of(breaks_file_), size_of(pressure_file_)});
   const Breakdown& b = breakdown_;
   w.put("recorder.breakdown", std::vector<double>{b.t_first, b.p_before, b.p_first, b.x_first, b.y_first, b.t_peak,
                                                   b.p_peak, static_cast<double>(b.n_broken), last_p_h_});
@@ -196,6 +208,10 @@ void RunRecorder::record(const lt::CoupledModel& model, const lt::CoupledStepSum
     fractures_.push_back(
         fracture_snapshot(model.lattice(), model.break_log(), model.break_log().size(), model.time(), statistics_options_));
     fracture_log_sizes_.push_back(model.break_log().size());
+    const FracturePressure fp = fracture_pressure(model);
+    pressure_->row({model.time(), fp.mean_all, fp.mean_away, fp.min_away, static_cast<double>(fp.n_all),
+                    static_cast<double>(fp.n_away), fp.negative_area_fraction});
+    pressure_file_.flush();
   }
   if (vtk_) {
     lt::LatticeSnapshot snapshot;
@@ -216,6 +232,7 @@ void RunRecorder::finish() {
   core::close_checked(radial_file_, dir_ / "radial.csv");
   if (!fracture_) return;
   core::close_checked(breaks_file_, dir_ / "breaks.csv");
+  core::close_checked(pressure_file_, dir_ / "fracture_pressure.csv");
   lt::write_fracture_table(dir_ / "fractures.csv", fractures_);
   lt::write_fracture_summary(dir_ / "fracture_summary.csv", fractures_);
   core::write_file_atomically(dir_ / "breakdown.csv", [&](std::ostream& file) {

@@ -135,34 +135,6 @@ RunOutcome describe(const RunCase& c, const std::string& label) {
 
 }  // namespace
 
-FracturePressure fracture_pressure(const lt::CoupledModel& m) {
-  const lt::Lattice& l = m.lattice();
-  const auto& states = m.mechanics().states();
-  const Eigen::VectorXd& area = m.current_dual().triangle_area;
-  const Eigen::VectorXd& p = m.pressure();
-  double a_all = 0.0, pa_all = 0.0, a_away = 0.0, pa_away = 0.0, a_neg = 0.0;
-  FracturePressure f;
-  for (int s = 0; s < l.n_triangles(); ++s) {
-    bool cracked = false, wall = false;
-    for (int e : l.triangle_beams[static_cast<std::size_t>(s)]) {
-      cracked = cracked || states[static_cast<std::size_t>(e)] != lt::BeamState::intact;
-      wall = wall || l.beam_boundary[static_cast<std::size_t>(e)] == lt::BoundaryTag::inner;
-    }
-    if (!cracked) continue;
-    ++f.n_all;
-    a_all += area[s];
-    pa_all += area[s] * p[s];
-    if (wall) continue;
-    ++f.n_away;
-    a_away += area[s];
-    pa_away += area[s] * p[s];
-    if (p[s] < 0.0) a_neg += area[s];
-    f.min_away = std::isnan(f.min_away) ? p[s] : std::min(f.min_away, p[s]);
-  }
-  if (f.n_all > 0) f.mean_all = pa_all / a_all;
-  if (f.n_away > 0) f.mean_away = pa_away / a_away, f.negative_area_fraction = a_neg / a_away;
-  return f;
-}
 
 /// The 1D reference of a case: fdm1d (Appendix A, no fracture, flux-boundary borehole) with the
 /// calibrated lattice's nu and the case's E/M, plane-strain volumetric strain (as benchmarks_lattice2d_vs_fdm1d.cpp),
@@ -270,6 +242,17 @@ RunOutcome read_run(const RunCase& c, const std::string& label, const fs::path& 
     }
     o.snaps.push_back(snap);
   }
+  // The pressure in the fractures at the same output times (RunRecorder's fracture_pressure.csv; a
+  // folder written before the recorder wrote it has none, and its metrics stay out of the report).
+  if (!fs::exists(dir / "fracture_pressure.csv")) return o;
+  const CsvColumns pressure(dir / "fracture_pressure.csv");
+  for (Snapshot& snap : o.snaps)
+    for (std::size_t k = 0; k < pressure.n_rows(); ++k) {
+      if (pressure["t"][k] != snap.t) continue;
+      snap.fp = {pressure["mean_all"][k], pressure["mean_away"][k], pressure["min_away"][k],
+                 static_cast<int>(pressure["n_all"][k]), static_cast<int>(pressure["n_away"][k]),
+                 pressure["negative_area_fraction"][k]};
+    }
   return o;
 }
 
@@ -294,14 +277,13 @@ RunOutcome run_case(const RunCase& c, const std::string& label, const fs::path& 
                     std::ostream* progress) {
   // The run writes its folder as `hmlattice run` does; its numbers are then read from there (read_run),
   // as from a folder a workflow made, so that both give the same. The observer keeps what the files
-  // do not hold: the pressure in the fractures, the timing split, and every beam's never-heal check.
+  // do not hold: the timing split and every beam's never-heal check.
   const auto model = cases::make_coupled_model(c);
   const fs::path dir = root / label;
   fs::create_directories(dir);
   RunRecorder recorder(dir, c);
   std::vector<bool> was_broken(static_cast<std::size_t>(model->lattice().n_beams()), false);
   int n_healed = 0;
-  std::vector<FracturePressure> pressures;  // at the output times t > 0, in order
   std::optional<ProgressReporter> reporter;
   if (progress) reporter.emplace(*progress, label, 60.0);
   const auto run = model->run(c.stepping, [&](const lt::CoupledModel& m, const lt::CoupledStepSummary& s, bool out) {
@@ -313,7 +295,6 @@ RunOutcome run_case(const RunCase& c, const std::string& label, const fs::path& 
       if (was_broken[e] && !broken) ++n_healed;
       was_broken[e] = was_broken[e] || broken;
     }
-    if (out && m.time() > 0.0) pressures.push_back(fracture_pressure(m));
   });
   if (reporter)
     reporter->finish(run.is_ok() ? std::to_string(run.n_steps) + " steps, " + std::to_string(run.total_iterations) +
@@ -330,7 +311,6 @@ RunOutcome run_case(const RunCase& c, const std::string& label, const fs::path& 
   });
   RunOutcome o = read_run(c, label, dir, ref);
   o.n_healed = std::max(o.n_healed, n_healed);
-  for (std::size_t k = 0; k < o.snaps.size() && k < pressures.size(); ++k) o.snaps[k].fp = pressures[k];
   o.n_halvings = run.n_step_halvings;
   o.seconds = run.step_seconds;
   o.mechanics = run.mechanics_seconds;

@@ -13,6 +13,7 @@
 #include "hm/fdm1d/fdm1d.hpp"
 #include "hm/lattice2d/coupled/coupled_model.hpp"
 #include "hm/lattice2d/fracture/fracture_statistics.hpp"
+#include "hm/case/fracture_pressure.hpp"
 #include "hm/case/run_case.hpp"
 
 namespace hm::verification::borehole_fracture {
@@ -24,18 +25,7 @@ inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 /// is far above the 1D one whatever the borehole node (docs/lattice_vs_fdm1d.md).
 inline constexpr double kWindow = 1e-3;
 
-/// Mean pressure in the fractures at one time (our definition, docs/borehole_fracture.md): the
-/// area-weighted mean over the "fracture triangles", those with a broken beam among their three beams
-/// (the fluid cells that hold the open volume). `away` excludes the triangles that have a borehole-wall
-/// beam: their pressure is tied to p_h through the wall segment (flow_network.hpp), so they show the
-/// borehole, not the fracture.
-struct FracturePressure {
-  double mean_all = kNaN, mean_away = kNaN, min_away = kNaN;
-  int n_all = 0, n_away = 0;
-  double negative_area_fraction = kNaN;  // of the `away` triangles' area with p < 0
-};
-
-FracturePressure fracture_pressure(const hm::lattice2d::CoupledModel& m);
+using cases::FracturePressure;
 
 /// The state at one output time.
 struct Snapshot {

@@ -81,8 +81,8 @@ class RunRecorder {
   std::vector<hm::lattice2d::BreakEvent> breaks_;
   std::vector<hm::lattice2d::FractureSnapshot> fractures_;
   std::vector<std::size_t> fracture_log_sizes_;  // break-log length at each snapshot
-  std::ofstream series_file_, radial_file_, breaks_file_;
-  std::unique_ptr<core::CsvWriter> series_, radial_;
+  std::ofstream series_file_, radial_file_, breaks_file_, pressure_file_;
+  std::unique_ptr<core::CsvWriter> series_, radial_, pressure_;
   std::unique_ptr<hm::lattice2d::VtkSeries> vtk_;
 };
 
