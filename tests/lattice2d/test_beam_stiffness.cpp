@@ -99,6 +99,19 @@ TEST_CASE("Element stiffness: rigid-body null space, rank 3 intact, rank 1 in co
   CHECK(beam_element_stiffness(L, theta, p, BeamState::open).isZero(0.0));
 }
 
+TEST_CASE("Eq. 8's contact rule: overlap closes a broken beam, separation opens it, with hysteresis", "[lattice2d]") {
+  const double tol = 1e-10;
+  // A just-broken beam: contact if shortened at all, else open.
+  CHECK(contact_state(BeamState::intact, -1e-12, 0.0) == BeamState::contact);
+  CHECK(contact_state(BeamState::intact, 0.0, 0.0) == BeamState::open);
+  CHECK(contact_state(BeamState::intact, 1e-12, 0.0) == BeamState::open);
+  // The active set: a switch only beyond +-tol, else the current state stays.
+  CHECK(contact_state(BeamState::open, -2 * tol, tol) == BeamState::contact);
+  CHECK(contact_state(BeamState::open, -0.5 * tol, tol) == BeamState::open);
+  CHECK(contact_state(BeamState::contact, 0.5 * tol, tol) == BeamState::contact);
+  CHECK(contact_state(BeamState::contact, 2 * tol, tol) == BeamState::open);
+}
+
 TEST_CASE("The assembled stiffness is symmetric and rigid-body motions give zero force", "[lattice2d]") {
   for (auto shape : {DomainShape::disk, DomainShape::annulus}) {
     LatticeSpec spec;

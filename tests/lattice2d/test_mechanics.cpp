@@ -90,40 +90,6 @@ TEST_CASE("Mechanics inputs: defaults valid, bad boundary conditions rejected na
   CHECK_THROWS_WITH(m.break_beam(l.n_beams()), Catch::Contains("beam = " + std::to_string(l.n_beams())));
 }
 
-TEST_CASE("Beam forces are minus the element stiffness times the element displacements", "[lattice2d]") {
-  const Lattice l = annulus(600);
-  BeamParameters p;
-  p.aspect = 0.8;
-  std::vector<BeamState> states(static_cast<std::size_t>(l.n_beams()), BeamState::intact);
-  for (std::size_t e = 0; e < states.size(); e += 3) states[e] = e % 2 ? BeamState::contact : BeamState::open;
-  const Eigen::VectorXd u = Eigen::VectorXd::Random(3 * l.n_particles());
-  const auto forces = connection_forces(l, p, states, u);
-  double worst = 0.0;
-  for (int e = 0; e < l.n_beams(); ++e) {
-    const auto [i, j] = l.beams[static_cast<std::size_t>(e)];
-    Eigen::Matrix<double, 6, 1> ue;
-    ue << u.segment<3>(3 * i), u.segment<3>(3 * j);
-    const Eigen::Matrix<double, 6, 1> f = -beam_element_stiffness(l.length[e], l.angle[e], p, states[static_cast<std::size_t>(e)]) * ue;
-    const BeamForce& F = forces[static_cast<std::size_t>(e)];
-    Eigen::Matrix<double, 6, 1> g;
-    g << F.force_on_i, F.moment_i, -F.force_on_i, F.moment_j;
-    worst = std::max(worst, (f - g).cwiseAbs().maxCoeff());
-    if (states[static_cast<std::size_t>(e)] == BeamState::open) CHECK(g.isZero(0.0));
-  }
-  CHECK(worst < 1e-13);  // round-off: O(1) displacements and stiffnesses, two evaluation orders
-  // The stress code's own force routine (particle_stress.hpp) agrees where the pair is in contact
-  // (it zeroes separated contacts, Eq. 8) and for intact and open beams everywhere.
-  const BeamForces other = compute_beam_forces(l, p, u, states);
-  double diff = 0.0;
-  for (int e = 0; e < l.n_beams(); ++e) {
-    const BeamForce& F = forces[static_cast<std::size_t>(e)];
-    if (states[static_cast<std::size_t>(e)] == BeamState::contact && F.normal > 0.0) continue;
-    diff = std::max({diff, (other.force.col(e) - F.force_on_i).cwiseAbs().maxCoeff(),
-                     std::abs(other.moment(0, e) - F.moment_i), std::abs(other.moment(1, e) - F.moment_j)});
-  }
-  CHECK(diff < 1e-13);  // round-off, as above
-}
-
 TEST_CASE("Rigid-body motions carry no force", "[lattice2d]") {
   const Lattice l = annulus();
   const std::vector<BeamState> intact(static_cast<std::size_t>(l.n_beams()), BeamState::intact);

@@ -10,6 +10,8 @@
 
 #include "hm/core/input_error.hpp"
 
+#include "fracture/failure_scan.hpp"
+
 namespace hm::lattice2d {
 
 namespace {
@@ -43,168 +45,6 @@ double side(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vec
   const Eigen::Vector2d u = b - a, v = c - a;
   return u.x() * v.y() - u.y() * v.x();
 }
-
-// The break loop's failure check of the current solution (Section 2.1): connection forces -> particle
-// stresses -> beam stresses with the crack-tip factor -> Eq. 11 on the intact beams -> the one beam most
-// over its threshold. Operation for operation the arithmetic of compute_particle_stress,
-// compute_beam_stress and select_beam_to_break (FailureCriterion), so the same bits and the same break
-// sequence, but run once per re-solve of a loop that may break thousands of beams, hence:
-//  - three tight passes over buffers kept for the whole loop (no per-iteration allocation of the
-//    per-particle and per-beam arrays);
-//  - stresses only of the intact beams (the candidates), without the principal angle;
-//  - the reference and the judged (stress_scale x) checks in the same pass;
-//  - the crack-tip set kept up to date by counts per triangle, touched only around a newly broken beam.
-class FailureScan {
- public:
-  FailureScan(const Lattice& lattice, const DualGraph& dual, const CrackTipOptions& crack_tip,
-              const std::vector<BeamState>& states)
-      : lattice_(lattice),
-        dual_(dual),
-        crack_tip_(crack_tip),
-        raw_(4, lattice.n_particles()),
-        particle_(3, lattice.n_particles()),
-        triangle_broken_(lattice.triangle_beams.size(), 0),
-        tip_triangles_(static_cast<std::size_t>(lattice.n_beams()), 0) {
-    assert(dual.particle_area.size() == lattice.n_particles() && "dual graph of another lattice");
-    assert(static_cast<int>(states.size()) == lattice.n_beams() && "one state per beam");
-    for (std::size_t t = 0; t < triangle_broken_.size(); ++t) {
-      for (int e : lattice.triangle_beams[t]) triangle_broken_[t] += states[static_cast<std::size_t>(e)] != BeamState::intact;
-      if (triangle_broken_[t] == 1)
-        for (int e : lattice.triangle_beams[t]) ++tip_triangles_[static_cast<std::size_t>(e)];
-    }
-  }
-
-  // Beam `beam` went from intact to broken: its triangles' broken counts change, and with them which
-  // beams lie in a triangle of exactly one broken beam (find_crack_tip_beams).
-  void beam_broken(int beam) {
-    for (int t : lattice_.beam_triangles[static_cast<std::size_t>(beam)]) {
-      if (t < 0) continue;
-      const int before = triangle_broken_[static_cast<std::size_t>(t)]++;
-      for (int e : lattice_.triangle_beams[static_cast<std::size_t>(t)]) {
-        if (before == 1) --tip_triangles_[static_cast<std::size_t>(e)];
-        if (before == 0) ++tip_triangles_[static_cast<std::size_t>(e)];
-      }
-    }
-  }
-
-  struct Result {
-    BreakCandidate judged;             // select_beam_to_break at stress_scale x the stresses
-    double max_reference_ratio = 0.0;  // its max_ratio at the reference stresses (stress_scale = 1)
-    double sigma_1 = 0.0, sigma_3 = 0.0, crack_tip_factor = 1.0;  // of judged.beam, judged scale
-  };
-
-  Result run(const std::vector<BeamForce>& forces, const BeamStrengths& strengths, const std::vector<BeamState>& states,
-             double stress_scale) {
-    const int n_beams = lattice_.n_beams(), n_particles = lattice_.n_particles();
-    // 1. Raw virial sums S_i = sum_j F_ij (x) L_ij (compute_particle_stress).
-    raw_.setZero();
-    for (int e = 0; e < n_beams; ++e) {
-      const Eigen::Vector2d& F = forces[static_cast<std::size_t>(e)].force_on_i;
-      const Eigen::Vector2d L = lattice_.length[e] * lattice_.direction.col(e);
-      const Eigen::Vector4d outer(F.x() * L.x(), F.x() * L.y(), F.y() * L.x(), F.y() * L.y());
-      const auto [i, j] = lattice_.beams[static_cast<std::size_t>(e)];
-      raw_.col(i) += outer;
-      raw_.col(j) += outer;
-    }
-    // 2. Symmetrised particle stresses (xx, yy, xy).
-    for (int i = 0; i < n_particles; ++i) {
-      const double scale = 0.5 / dual_.particle_area[i];
-      const Eigen::Vector4d s = scale * raw_.col(i);
-      particle_.col(i) << s[0], s[3], 0.5 * (s[1] + s[2]);
-    }
-    // 3. Beam stresses of the intact beams, principal stresses, failure ratios, the candidate: two
-    // fixed halves of the beams on the threads, combined in order (the lower half wins a tie, as the
-    // lowest index does in one pass), so the same bits on any number of threads.
-    std::array<Result, kChunks> part;
-    std::array<bool, kChunks> any_intact{};
-#pragma omp parallel for schedule(static) if (n_beams >= kParallelBeams)
-    for (int c = 0; c < kChunks; ++c)
-      scan_beams(c * n_beams / kChunks, (c + 1) * n_beams / kChunks, strengths, states, stress_scale,
-                 part[static_cast<std::size_t>(c)], any_intact[static_cast<std::size_t>(c)]);
-    Result out;
-    bool any = false;
-    for (std::size_t c = 0; c < part.size(); ++c) {
-      if (!any_intact[c]) continue;
-      const Result& r = part[c];
-      if (!any || r.max_reference_ratio > out.max_reference_ratio) out.max_reference_ratio = r.max_reference_ratio;
-      if (!any || r.judged.max_ratio > out.judged.max_ratio) out.judged.max_ratio = r.judged.max_ratio;
-      any = true;
-      if (r.judged.found() && (!out.judged.found() || r.judged.ratio > out.judged.ratio)) {
-        const double max_ratio = out.judged.max_ratio;
-        out.judged = r.judged;
-        out.judged.max_ratio = max_ratio;
-        out.sigma_1 = r.sigma_1;
-        out.sigma_3 = r.sigma_3;
-        out.crack_tip_factor = r.crack_tip_factor;
-      }
-    }
-    return out;
-  }
-
- private:
-  static constexpr int kChunks = 2;
-  // Below this many beams (N ~ 7000) one thread: waking the second costs more than it saves.
-  static constexpr int kParallelBeams = 20000;
-
-  // Step 3 of run() over beams [first, last).
-  void scan_beams(int first, int last, const BeamStrengths& strengths, const std::vector<BeamState>& states,
-                  double stress_scale, Result& out, bool& any_intact) const {
-    const FailureCriterion criterion(strengths.friction);
-    BreakCandidate& best = out.judged;
-    for (int e = first; e < last; ++e) {
-      if (states[static_cast<std::size_t>(e)] != BeamState::intact) continue;
-      const double factor =
-          crack_tip_.enabled && tip_triangles_[static_cast<std::size_t>(e)] > 0 ? crack_tip_.factor(lattice_.length[e]) : 1.0;
-      const double w = factor * 0.5;
-      const auto [i, j] = lattice_.beams[static_cast<std::size_t>(e)];
-      const double sxx = w * (particle_(0, i) + particle_(0, j)), syy = w * (particle_(1, i) + particle_(1, j)),
-                   sxy = w * (particle_(2, i) + particle_(2, j));
-      const PrincipalPair principal = principal_pair(sxx, syy, sxy);
-      const double s1 = principal.sigma_1, s3 = principal.sigma_3;
-      const double T = strengths.tensile[e], C = strengths.compressive[e];
-      const auto reference = criterion.check(s1, s3, T, C);
-      const auto judged = stress_scale == 1.0 ? reference : criterion.check(s1 * stress_scale, s3 * stress_scale, T, C);
-      assert(!std::isnan(judged.ratio) && "failure ratio is NaN: non-finite stress");
-      if (!any_intact || reference.ratio > out.max_reference_ratio) out.max_reference_ratio = reference.ratio;
-      if (!any_intact || judged.ratio > best.max_ratio) best.max_ratio = judged.ratio;
-      any_intact = true;
-      // Strictly greater: on equal ratios the lowest index, visited first, stays.
-      if (judged.ratio >= 1.0 && (!best.found() || judged.ratio > best.ratio)) {
-        best.beam = e;
-        best.ratio = judged.ratio;
-        best.mode = judged.mode;
-        out.sigma_1 = stress_scale == 1.0 ? s1 : s1 * stress_scale;
-        out.sigma_3 = stress_scale == 1.0 ? s3 : s3 * stress_scale;
-        out.crack_tip_factor = factor;
-      }
-    }
-  }
-
-  const Lattice& lattice_;
-  const DualGraph& dual_;
-  CrackTipOptions crack_tip_;
-  Eigen::Matrix4Xd raw_;                // virial sums per particle (xx, xy, yx, yy)
-  Eigen::Matrix3Xd particle_;           // particle stresses (xx, yy, xy)
-  std::vector<int> triangle_broken_;    // broken beams per triangle
-  std::vector<int> tip_triangles_;      // per beam: its triangles with exactly one broken beam
-};
-
-#ifndef NDEBUG
-// Debug builds: the scan against the public path it stands for, bit for bit.
-bool scan_matches_public_path(const BeamMechanics& mechanics, const DualGraph& dual, const BeamStrengths& strengths,
-                              const CrackTipOptions& crack_tip, double stress_scale, const FailureScan::Result& r) {
-  const BeamStress reference = current_beam_stress(mechanics, dual, crack_tip, 1.0);
-  const BeamStress judged = stress_scale == 1.0 ? reference : scaled(reference, stress_scale);
-  const BreakCandidate a = select_beam_to_break(reference, strengths, mechanics.states());
-  const BreakCandidate b = select_beam_to_break(judged, strengths, mechanics.states());
-  const bool same = a.max_ratio == r.max_reference_ratio && b.beam == r.judged.beam && b.ratio == r.judged.ratio &&
-                    b.mode == r.judged.mode && b.max_ratio == r.judged.max_ratio;
-  if (!same || !b.found()) return same;
-  const int e = b.beam;
-  return judged.sigma_1[e] == r.sigma_1 && judged.sigma_3[e] == r.sigma_3 &&
-         judged.crack_tip_factor[e] == r.crack_tip_factor;
-}
-#endif
 
 }  // namespace
 
@@ -243,17 +83,10 @@ BeamStress current_beam_stress(const BeamMechanics& mechanics, const DualGraph& 
                                double stress_scale) {
   const Lattice& lattice = mechanics.lattice();
   assert(dual.particle_area.size() == lattice.n_particles() && "dual graph of another lattice");
-  // The mechanics' own connection forces (each beam in its local frame) rather than compute_beam_forces,
-  // which forms a 6 x 6 element matrix per beam: the same F_ij and moments (tested in test_mechanics),
-  // and the O(N) stress evaluation after every break is the break loop's main cost besides the re-solve.
-  const std::vector<BeamForce> connection = mechanics.beam_forces();
-  BeamForces forces{Eigen::Matrix2Xd(2, lattice.n_beams()), Eigen::Matrix2Xd(2, lattice.n_beams())};
-  for (int e = 0; e < lattice.n_beams(); ++e) {
-    const BeamForce& f = connection[static_cast<std::size_t>(e)];
-    forces.force.col(e) = f.force_on_i;
-    forces.moment.col(e) = Eigen::Vector2d(f.moment_i, f.moment_j);
-  }
-  BeamStress stress = compute_beam_stress(lattice, compute_particle_stress(lattice, dual, forces), mechanics.states(), crack_tip);
+  // The break loop's own path (FailureScan): connection forces, then the particle stresses of them.
+  ParticleStress particle;
+  compute_particle_stress(lattice, dual, mechanics.beam_forces(), particle);
+  BeamStress stress = compute_beam_stress(lattice, particle, mechanics.states(), crack_tip);
   return stress_scale == 1.0 ? stress : scaled(std::move(stress), stress_scale);
 }
 
@@ -287,7 +120,6 @@ BreakLoopSummary break_until_stable(BeamMechanics& mechanics, const DualGraph& d
     // = select_beam_to_break(current_beam_stress(mechanics, dual, crack_tip, stress_scale), ...), faster.
     mechanics.beam_forces(forces);
     const FailureScan::Result checked = scan.run(forces, strengths, mechanics.states(), stress_scale);
-    assert(scan_matches_public_path(mechanics, dual, strengths, options.crack_tip, stress_scale, checked));
     const BreakCandidate& candidate = checked.judged;
     summary.max_reference_ratio = std::max(0.0, checked.max_reference_ratio);
     summary.max_ratio = std::max(0.0, candidate.max_ratio);

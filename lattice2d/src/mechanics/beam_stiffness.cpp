@@ -69,57 +69,92 @@ double BeamParameters::rotational_stiffness() const {
 
 double BeamParameters::gamma() const { return aspect * aspect * (1.0 + beam_poisson) / 6.0; }
 
-Matrix6d beam_element_stiffness(double length, double angle, const BeamParameters& p, BeamState state) {
-  Matrix6d local = Matrix6d::Zero();  // (u_n,i, u_s,i, omega_i, u_n,j, u_s,j, omega_j)
-  if (state != BeamState::open) {
-    const double k_n = p.normal_stiffness;
-    local(0, 0) = local(3, 3) = k_n;
-    local(0, 3) = local(3, 0) = -k_n;
-  }
-  if (state == BeamState::intact) {
-    const double k_w = p.rotational_stiffness(), g = p.gamma(), L = length;
-    Eigen::Matrix2d D;
-    D << g + 1.0 / 3.0, 1.0 / 6.0 - g, 1.0 / 6.0 - g, g + 1.0 / 3.0;
-    D *= 2.0 * k_w * L * L;
-    // theta_i = omega_i - (u_s,j - u_s,i)/L, theta_j = omega_j - (u_s,j - u_s,i)/L.
-    Eigen::Matrix<double, 2, 6> B;
-    B << 0, 1 / L, 1, 0, -1 / L, 0,  //
-        0, 1 / L, 0, 0, -1 / L, 1;
-    local += B.transpose() * D * B;
-  }
-  const double c = std::cos(angle), s = std::sin(angle);
+BeamOperator::BeamOperator(double c, double s, double length, const BeamParameters& p, BeamState state)
+    : c_(c),
+      s_(s),
+      length_(length),
+      normal_(state == BeamState::open ? 0.0 : p.normal_stiffness),
+      bending_(state == BeamState::intact ? 2.0 * p.rotational_stiffness() * length * length : 0.0),
+      diagonal_(p.gamma() + 1.0 / 3.0),
+      off_diagonal_(1.0 / 6.0 - p.gamma()),
+      state_(state) {}
+
+BeamOperator::BeamOperator(const Lattice& lattice, int beam, const BeamParameters& p, BeamState state)
+    : BeamOperator(lattice.direction(0, beam), lattice.direction(1, beam), lattice.length[beam], p, state) {}
+
+Matrix6d BeamOperator::rotation() const {
   Eigen::Matrix3d R;  // global (x, y, omega) -> local (n, s, omega)
-  R << c, s, 0, -s, c, 0, 0, 0, 1;
+  R << c_, s_, 0, -s_, c_, 0, 0, 0, 1;
   Matrix6d T = Matrix6d::Zero();
   T.topLeftCorner<3, 3>() = R;
   T.bottomRightCorner<3, 3>() = R;
+  return T;
+}
+
+Eigen::Matrix<double, 3, 6> BeamOperator::strain_matrix() const {
+  // Local (u_n,i, u_s,i, omega_i, u_n,j, u_s,j, omega_j); theta = omega - (u_s,j - u_s,i) / L.
+  const double L = length_;
+  Eigen::Matrix<double, 3, 6> B;
+  B << -1, 0, 0, 1, 0, 0,  //
+      0, 1 / L, 1, 0, -1 / L, 0,  //
+      0, 1 / L, 0, 0, -1 / L, 1;
+  return B;
+}
+
+Eigen::Matrix3d BeamOperator::constitutive() const {
+  Eigen::Matrix3d D = Eigen::Matrix3d::Zero();
+  D(0, 0) = normal_;
+  Eigen::Matrix2d Db;
+  Db << diagonal_, off_diagonal_, off_diagonal_, diagonal_;
+  D.bottomRightCorner<2, 2>() = Db * bending_;
+  return D;
+}
+
+Eigen::Matrix3d BeamOperator::constitutive_factor() const {
+  Eigen::Matrix3d C = Eigen::Matrix3d::Zero();
+  C(0, 0) = std::sqrt(normal_);
+  if (bending_ > 0.0) C.bottomRightCorner<2, 2>() = constitutive().bottomRightCorner<2, 2>().llt().matrixL();
+  return C;
+}
+
+Matrix6d BeamOperator::stiffness() const {
+  const Eigen::Matrix<double, 3, 6> B = strain_matrix();
+  const Matrix6d T = rotation();
+  const Matrix6d local = B.transpose() * constitutive() * B;
   return T.transpose() * local * T;
 }
 
+Matrix63d BeamOperator::factor() const {
+  return rotation().transpose() * strain_matrix().transpose() * constitutive_factor();
+}
+
+BeamState contact_state(BeamState current, double elongation, double tolerance) {
+  if (elongation < -tolerance) return BeamState::contact;
+  if (elongation > tolerance || current == BeamState::intact) return BeamState::open;
+  return current;
+}
+
+BeamForce beam_force(const Lattice& lattice, int beam, const BeamParameters& parameters, BeamState state,
+                     const Eigen::VectorXd& u) {
+  BeamForce F;
+  if (state == BeamState::open) return F;
+  // The force the beam exerts on its particles is minus its internal force K_e u_e.
+  const Vector6d f = -BeamOperator(lattice, beam, parameters, state).internal_force(element_displacements(lattice, beam, u));
+  F.force_on_i = f.head<2>();
+  const Eigen::Vector2d n = lattice.direction.col(beam), s(-n.y(), n.x());
+  F.normal = F.force_on_i.dot(n);
+  F.shear = F.force_on_i.dot(s);
+  F.moment_i = f[2];
+  F.moment_j = f[5];
+  return F;
+}
+
+Matrix6d beam_element_stiffness(double length, double angle, const BeamParameters& p, BeamState state) {
+  return BeamOperator(std::cos(angle), std::sin(angle), length, p, state).stiffness();
+}
+
 Matrix63d beam_element_factor(double length, double angle, const BeamParameters& p, BeamState state) {
-  Matrix63d V = Matrix63d::Zero();
-  const double c = std::cos(angle), s = std::sin(angle);
-  if (state != BeamState::open) {
-    const double r = std::sqrt(p.normal_stiffness);
-    V.col(0) << -r * c, -r * s, 0.0, r * c, r * s, 0.0;
-  }
-  if (state == BeamState::intact) {
-    const double k_w = p.rotational_stiffness(), g = p.gamma(), L = length;
-    Eigen::Matrix2d D;
-    D << g + 1.0 / 3.0, 1.0 / 6.0 - g, 1.0 / 6.0 - g, g + 1.0 / 3.0;
-    D *= 2.0 * k_w * L * L;
-    const Eigen::Matrix2d C = D.llt().matrixL();
-    Eigen::Matrix<double, 2, 6> B;  // as in beam_element_stiffness, local (n, s, omega) components
-    B << 0, 1 / L, 1, 0, -1 / L, 0,  //
-        0, 1 / L, 0, 0, -1 / L, 1;
-    Eigen::Matrix3d R;  // global (x, y, omega) -> local (n, s, omega)
-    R << c, s, 0, -s, c, 0, 0, 0, 1;
-    Matrix6d T = Matrix6d::Zero();
-    T.topLeftCorner<3, 3>() = R;
-    T.bottomRightCorner<3, 3>() = R;
-    V.rightCols<2>() = T.transpose() * B.transpose() * C;
-  }
-  return V;
+  return BeamOperator(std::cos(angle), std::sin(angle), length, p, state).factor();
 }
 
 Eigen::SparseMatrix<double> assemble_stiffness(const Lattice& lattice, const BeamParameters& parameters,

@@ -114,32 +114,6 @@ Eigen::Vector3d rigid_motion(const Lattice& lattice, const Eigen::Matrix<double,
 
 namespace {
 
-// Internal force K_e u_e of one beam in global components (x_i, y_i, w_i, x_j, y_j, w_j), evaluated in
-// the beam's local frame from n_ij (no 6 x 6 products, no trigonometry): the same numbers as
-// beam_element_stiffness(...) * u_e up to round-off, about ten times cheaper.
-// `p` is this beam's own parameters (beam_parameters_for: its k_n under stiffness_scaling).
-Eigen::Matrix<double, 6, 1> internal_force(const Lattice& l, const BeamParameters& p, BeamState state, int e,
-                                           const Eigen::VectorXd& u) {
-  Eigen::Matrix<double, 6, 1> f = Eigen::Matrix<double, 6, 1>::Zero();
-  if (state == BeamState::open) return f;
-  const auto [i, j] = l.beams[static_cast<std::size_t>(e)];
-  const double c = l.direction(0, e), s = l.direction(1, e), L = l.length[e];
-  const double uxi = u[dof_index(i, 0)], uyi = u[dof_index(i, 1)], uxj = u[dof_index(j, 0)], uyj = u[dof_index(j, 1)];
-  const double elongation = c * (uxj - uxi) + s * (uyj - uyi);
-  double fn = -p.normal_stiffness * elongation;  // local n-component on i; -fn on j
-  double fs = 0.0, mi = 0.0, mj = 0.0;            // local s-component on i (-fs on j), moments
-  if (state == BeamState::intact) {
-    const double phi = (-s * (uxj - uxi) + c * (uyj - uyi)) / L;  // chord rotation
-    const double ti = u[dof_index(i, 2)] - phi, tj = u[dof_index(j, 2)] - phi;
-    const double k = 2.0 * p.rotational_stiffness() * L * L, g = p.gamma();
-    mi = k * ((g + 1.0 / 3.0) * ti + (1.0 / 6.0 - g) * tj);
-    mj = k * ((1.0 / 6.0 - g) * ti + (g + 1.0 / 3.0) * tj);
-    fs = (mi + mj) / L;
-  }
-  f << c * fn - s * fs, s * fn + c * fs, mi, -(c * fn - s * fs), -(s * fn + c * fs), mj;
-  return f;
-}
-
 // connection_forces into `forces` (resized; every entry overwritten), with beam e's parameters from
 // parameters_of(e).
 template <class ParametersOf>
@@ -150,22 +124,8 @@ void fill_connection_forces(const Lattice& lattice, const ParametersOf& paramete
   forces.resize(static_cast<std::size_t>(lattice.n_beams()));
   // Beams independent: on the threads for a large lattice (N ~ 7000 and up), the same bits.
 #pragma omp parallel for schedule(static) if (lattice.n_beams() >= 20000)
-  for (int e = 0; e < lattice.n_beams(); ++e) {
-    const BeamState state = states[static_cast<std::size_t>(e)];
-    BeamForce& F = forces[static_cast<std::size_t>(e)];
-    if (state == BeamState::open) {
-      F = BeamForce{};
-      continue;
-    }
-    // The force the beam exerts on its particles is minus its internal force K_e u_e.
-    const Eigen::Matrix<double, 6, 1> f = -internal_force(lattice, parameters_of(e), state, e, u);
-    F.force_on_i = f.head<2>();
-    const Eigen::Vector2d n = lattice.direction.col(e), s(-n.y(), n.x());
-    F.normal = F.force_on_i.dot(n);
-    F.shear = F.force_on_i.dot(s);
-    F.moment_i = f[2];
-    F.moment_j = f[5];
-  }
+  for (int e = 0; e < lattice.n_beams(); ++e)
+    forces[static_cast<std::size_t>(e)] = beam_force(lattice, e, parameters_of(e), states[static_cast<std::size_t>(e)], u);
 }
 
 }  // namespace
@@ -417,7 +377,7 @@ BeamState BeamMechanics::break_beam(int beam) {
   if (states_[static_cast<std::size_t>(beam)] != BeamState::intact) return states_[static_cast<std::size_t>(beam)];
   const auto [i, j] = lattice_.beams[static_cast<std::size_t>(beam)];
   const Eigen::Vector2d du(raw_[dof_index(j, 0)] - raw_[dof_index(i, 0)], raw_[dof_index(j, 1)] - raw_[dof_index(i, 1)]);
-  const BeamState to = du.dot(lattice_.direction.col(beam)) < 0.0 ? BeamState::contact : BeamState::open;
+  const BeamState to = contact_state(BeamState::intact, du.dot(lattice_.direction.col(beam)), 0.0);
   change_state(beam, to);
   if (broken_spring_ == BrokenBeamSpring::drop && springs_.size() > 0 && springs_[beam] > 0.0)
     remove_normal_spring(beam);
@@ -637,12 +597,9 @@ MechanicsSummary BeamMechanics::solve(bool equilibrium_check) {
       if (detached_[static_cast<std::size_t>(i)] || detached_[static_cast<std::size_t>(j)]) continue;
       const Eigen::Vector2d du(raw_[dof_index(j, 0)] - raw_[dof_index(i, 0)], raw_[dof_index(j, 1)] - raw_[dof_index(i, 1)]);
       const double elongation = du.dot(lattice_.direction.col(e));
-      const BeamState s = states_[static_cast<std::size_t>(e)];
-      if (s == BeamState::open && elongation < -tol) {
-        change_state(e, BeamState::contact);
-        ++changes;
-      } else if (s == BeamState::contact && elongation > tol) {
-        change_state(e, BeamState::open);
+      const BeamState s = states_[static_cast<std::size_t>(e)], to = contact_state(s, elongation, tol);
+      if (to != s) {
+        change_state(e, to);
         ++changes;
       }
     }
@@ -695,7 +652,7 @@ Eigen::VectorXd BeamMechanics::reactions() const {
     const BeamState s = states_[static_cast<std::size_t>(e)];
     if (s == BeamState::open) continue;
     const auto d = beam_dofs(lattice_, e);
-    const Eigen::Matrix<double, 6, 1> f = internal_force(lattice_, beam_parameters(e), s, e, raw_);
+    const Vector6d f = BeamOperator(lattice_, e, beam_parameters(e), s).internal_force(element_displacements(lattice_, e, raw_));
     for (int a = 0; a < 6; ++a) r[d[static_cast<std::size_t>(a)]] += f[a];
   }
   for (int e = 0; e < springs_.size(); ++e) {

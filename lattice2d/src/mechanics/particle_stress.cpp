@@ -26,51 +26,60 @@ BeamForces compute_beam_forces(const Lattice& lattice, const BeamParameters& par
   const int n_beams = lattice.n_beams();
   BeamForces out{Eigen::Matrix2Xd::Zero(2, n_beams), Eigen::Matrix2Xd::Zero(2, n_beams)};
   for (int e = 0; e < n_beams; ++e) {
-    const BeamState state = state_of(states, e);
-    if (state == BeamState::open) continue;
-    const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
-    Eigen::Matrix<double, 6, 1> ue;
-    ue << displacement.segment<3>(dof_index(i, 0)), displacement.segment<3>(dof_index(j, 0));
-    if (state == BeamState::contact) {
-      // Eq. 8: k_n (L - L_eq) H(L_eq - L) n with the linearised stretch (u_j - u_i).n.
-      const Eigen::Vector2d n = lattice.direction.col(e);
-      const double stretch = (ue.segment<2>(3) - ue.segment<2>(0)).dot(n);
-      if (stretch < 0.0)
-        out.force.col(e) = beam_parameters_for(lattice, parameters, e).normal_stiffness * stretch * n;
-      continue;
-    }
-    // Internal force = -K_e u_e: the same matrix as the assembly, so forces and K u = f agree exactly.
-    const Eigen::Matrix<double, 6, 1> f =
-        -beam_element_stiffness(lattice.length[e], lattice.angle[e], beam_parameters_for(lattice, parameters, e), state) * ue;
-    out.force.col(e) = f.segment<2>(0);
-    out.moment.col(e) << f[2], f[5];
+    const BeamForce f = beam_force(lattice, e, beam_parameters_for(lattice, parameters, e), state_of(states, e), displacement);
+    out.force.col(e) = f.force_on_i;
+    out.moment.col(e) << f.moment_i, f.moment_j;
   }
   return out;
 }
 
-ParticleStress compute_particle_stress(const Lattice& lattice, const DualGraph& dual, const BeamForces& forces) {
+namespace {
+
+// sigma_i = sym(1/2 V_i^-1 sum_j F_ij (x) L_ij) with F_ij = force_of(e), into out (resized). The raw sums
+// S_i (xx, xy, yx, yy) are accumulated in place, in out.stress rows (xx, yy, xy) and out.skew (yx), so a
+// caller that keeps `out` across calls (the break loop) allocates nothing.
+template <class ForceOf>
+void virial_stress(const Lattice& lattice, const DualGraph& dual, const ForceOf& force_of, ParticleStress& out) {
   const int n = lattice.n_particles();
   assert(dual.particle_area.size() == n && "dual graph of another lattice");
-  assert(forces.force.cols() == lattice.n_beams() && "forces of another lattice");
-  // Raw sums S_i = sum_j F_ij (x) L_ij, row-major (xx, xy, yx, yy). Both ends of a beam add the same
-  // outer product: F_ji (x) L_ji = (-F_ij) (x) (-L_ij).
-  Eigen::Matrix4Xd raw = Eigen::Matrix4Xd::Zero(4, n);
+  out.stress.setZero(3, n);
+  out.skew.setZero(n);
+  // Both ends of a beam add the same outer product: F_ji (x) L_ji = (-F_ij) (x) (-L_ij).
   for (int e = 0; e < lattice.n_beams(); ++e) {
-    const Eigen::Vector2d F = forces.force.col(e);
+    const Eigen::Vector2d& F = force_of(e);
     const Eigen::Vector2d L = lattice.length[e] * lattice.direction.col(e);
-    const Eigen::Vector4d outer(F.x() * L.x(), F.x() * L.y(), F.y() * L.x(), F.y() * L.y());
+    const Eigen::Vector3d xx_yy_xy(F.x() * L.x(), F.y() * L.y(), F.x() * L.y());
+    const double yx = F.y() * L.x();
     const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
-    raw.col(i) += outer;
-    raw.col(j) += outer;
+    out.stress.col(i) += xx_yy_xy;
+    out.stress.col(j) += xx_yy_xy;
+    out.skew[i] += yx;
+    out.skew[j] += yx;
   }
-  ParticleStress out{Eigen::Matrix3Xd(3, n), Eigen::VectorXd(n)};
   for (int i = 0; i < n; ++i) {
     const double scale = 0.5 / dual.particle_area[i];
-    const Eigen::Vector4d s = scale * raw.col(i);
-    out.stress.col(i) << s[0], s[3], 0.5 * (s[1] + s[2]);
-    out.skew[i] = 0.5 * (s[1] - s[2]);
+    const double xy = scale * out.stress(2, i), yx = scale * out.skew[i];
+    out.stress(0, i) *= scale;
+    out.stress(1, i) *= scale;
+    out.stress(2, i) = 0.5 * (xy + yx);
+    out.skew[i] = 0.5 * (xy - yx);
   }
+}
+
+}  // namespace
+
+ParticleStress compute_particle_stress(const Lattice& lattice, const DualGraph& dual, const BeamForces& forces) {
+  assert(forces.force.cols() == lattice.n_beams() && "forces of another lattice");
+  ParticleStress out;
+  virial_stress(lattice, dual, [&](int e) { return forces.force.col(e); }, out);
   return out;
+}
+
+void compute_particle_stress(const Lattice& lattice, const DualGraph& dual, const std::vector<BeamForce>& forces,
+                             ParticleStress& out) {
+  assert(static_cast<int>(forces.size()) == lattice.n_beams() && "forces of another lattice");
+  virial_stress(lattice, dual, [&](int e) -> const Eigen::Vector2d& { return forces[static_cast<std::size_t>(e)].force_on_i; },
+                out);
 }
 
 void CrackTipOptions::validate() const { hm::core::require_positive(material_length, "material_length"); }
@@ -103,9 +112,7 @@ BeamStress compute_beam_stress(const Lattice& lattice, const ParticleStress& par
         out.crack_tip_factor[e] = options.factor(lattice.length[e]);
   }
   for (int e = 0; e < n_beams; ++e) {
-    const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
-    out.stress.col(e) =
-        out.crack_tip_factor[e] * 0.5 * (particle_stress.stress.col(i) + particle_stress.stress.col(j));
+    out.stress.col(e) = beam_stress(lattice, particle_stress, e, out.crack_tip_factor[e]);
     const PrincipalPair p = principal_pair(out.stress(0, e), out.stress(1, e), out.stress(2, e));
     out.sigma_1[e] = p.sigma_1;
     out.sigma_3[e] = p.sigma_3;

@@ -80,8 +80,8 @@ struct BreakLoopSummary {
 };
 
 /// Beam stresses (with the crack-tip factor) of `mechanics`' current solution, times stress_scale:
-/// mechanics.beam_forces() (equal to compute_beam_forces, tested, without its 6 x 6 per beam) ->
-/// compute_particle_stress (V_i from `dual`) -> compute_beam_stress.
+/// mechanics.beam_forces() (bit for bit compute_beam_forces' forces) -> compute_particle_stress (V_i from
+/// `dual`) -> compute_beam_stress: the functions the break loop's failure check uses.
 /// Only beam forces enter the particle stress (as in Section 2.1): external forces (crack-face or
 /// pore pressure) are loads, not stresses. Precondition: dual built from mechanics.lattice().
 BeamStress current_beam_stress(const BeamMechanics& mechanics, const DualGraph& dual,
@@ -96,7 +96,8 @@ BeamStress current_beam_stress(const BeamMechanics& mechanics, const DualGraph& 
 /// Cost per iteration (re-solve + check): the re-solves use BeamMechanics::solve(false) (no
 /// equilibrium residual; nothing here reads it), and the check is select_beam_to_break(
 /// current_beam_stress(...)) computed bit for bit the same in one pass over buffers kept for the loop,
-/// with the crack-tip set updated around each broken beam (asserted against the public path in debug).
+/// with the crack-tip set updated around each broken beam (tests/lattice2d/test_fast_path.cpp checks it
+/// against the public path at every break, in the Release build).
 /// Use stress_scale = 1 when the mechanics holds the actual load (time-driven runs), = lambda under
 /// the load-factor convention of run_load_stepping. Throws hm::InputError for invalid options, a
 /// negative or non-finite stress_scale, or strengths not sized one per beam.

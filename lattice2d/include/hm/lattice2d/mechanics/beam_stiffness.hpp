@@ -105,20 +105,124 @@ double beam_stiffness_factor(const Lattice& lattice, const BeamParameters& param
 BeamParameters beam_parameters_for(const Lattice& lattice, const BeamParameters& parameters, int beam);
 
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
+using Matrix63d = Eigen::Matrix<double, 6, 3>;
+using Vector6d = Eigen::Matrix<double, 6, 1>;
+
+/// The one definition of a connection's linear mechanics (Eqs. 3-10), from which its element
+/// stiffness, the factor columns and its internal force all come. With element displacements u_e in
+/// global components (x_i, y_i, omega_i, x_j, y_j, omega_j), T = diag(R, R) turns them into local
+/// (n, s, omega) components (n = n_ij = (c, s), R the rotation onto it), B maps those onto the
+/// generalised strains q = (elongation (u_j - u_i).n, theta_i, theta_j) (theta = omega - chord
+/// rotation, Fig. 2) and D = diag(k_n, D_b) onto the resultants (N, m_i, m_j) (axial force, tension
+/// positive, and end moments; D_b the bending matrix of the file comment), so that
+///   K_e = T^T B^T D B T,   K_e = V V^T with V = T^T B^T C, C C^T = D,   f_int = K_e u_e.
+/// The state enters only through D: contact keeps k_n (Eqs. 9-10), open keeps nothing. Eq. 8's
+/// Heaviside is not applied here: it chooses the state (contact_state), and a force always belongs
+/// to the matrix of its state, so that the particle sums of the forces are exactly the -K u the
+/// mechanics solved.
+/// The matrix forms are for assembly, factor updates and tests; strains / resultants / nodal_forces
+/// apply the same B, D and T^T B^T without forming them (no 6 x 6 products, no trigonometry), the
+/// form of the per-solve loops over every beam. Both agree to round-off (tests/lattice2d/
+/// test_fast_path.cpp). Limits: geometrically linear, like the file.
+class BeamOperator {
+ public:
+  /// Beam with unit direction (c, s) = n_ij, length L and its own constants `parameters`
+  /// (beam_parameters_for: k_n under stiffness_scaling) in state `state`.
+  BeamOperator(double c, double s, double length, const BeamParameters& parameters, BeamState state);
+  /// Beam `beam` of `lattice` (n_ij = lattice.direction, L = lattice.length).
+  BeamOperator(const Lattice& lattice, int beam, const BeamParameters& parameters, BeamState state);
+
+  BeamState state() const { return state_; }
+
+  /// q = B T u_e = (elongation, theta_i, theta_j).
+  Eigen::Vector3d strains(const Vector6d& u_e) const {
+    const double dx = u_e[3] - u_e[0], dy = u_e[4] - u_e[1];
+    const double phi = (-s_ * dx + c_ * dy) / length_;  // chord rotation
+    return {c_ * dx + s_ * dy, u_e[2] - phi, u_e[5] - phi};
+  }
+  /// (N, m_i, m_j) = D q.
+  Eigen::Vector3d resultants(const Eigen::Vector3d& q) const {
+    return {normal_ * q[0], bending_ * (diagonal_ * q[1] + off_diagonal_ * q[2]),
+            bending_ * (off_diagonal_ * q[1] + diagonal_ * q[2])};
+  }
+  /// T^T B^T r: the nodal forces and moments of resultants r = (N, m_i, m_j).
+  Vector6d nodal_forces(const Eigen::Vector3d& r) const {
+    const double fn = -r[0], fs = (r[1] + r[2]) / length_;  // local (n, s) force on i; minus on j
+    Vector6d f;
+    f << c_ * fn - s_ * fs, s_ * fn + c_ * fs, r[1], -(c_ * fn - s_ * fs), -(s_ * fn + c_ * fs), r[2];
+    return f;
+  }
+  /// f_int = K_e u_e (the force the beam exerts on its particles is -f_int).
+  Vector6d internal_force(const Vector6d& u_e) const {
+    if (state_ == BeamState::open) return Vector6d::Zero();
+    return nodal_forces(resultants(strains(u_e)));
+  }
+
+  /// T (6 x 6): global (x, y, omega) -> local (n, s, omega) at both ends.
+  Matrix6d rotation() const;
+  /// B (3 x 6) in local components.
+  Eigen::Matrix<double, 3, 6> strain_matrix() const;
+  /// D (3 x 3).
+  Eigen::Matrix3d constitutive() const;
+  /// C with C C^T = D: sqrt(k_n) and the Cholesky factor of D_b (SPD: eigenvalues k_w L^2 and
+  /// 2 k_w L^2 (2 gamma + 1/6)), zero where D is.
+  Eigen::Matrix3d constitutive_factor() const;
+  /// K_e = T^T B^T D B T.
+  Matrix6d stiffness() const;
+  /// V = T^T B^T C.
+  Matrix63d factor() const;
+
+ private:
+  double c_, s_, length_;
+  double normal_;                  // k_n, 0 when open
+  double bending_;                 // 2 k_w L^2, 0 unless intact
+  double diagonal_, off_diagonal_;  // D_b / bending_: gamma + 1/3 and 1/6 - gamma
+  BeamState state_;
+};
+
+/// The state Eq. 8's Heaviside gives a broken connection of elongation (u_j - u_i).n: contact when
+/// the particles overlap by more than `tolerance` (elongation < -tolerance), open when they separate
+/// by more than it, else `current` (a hysteresis of +-tolerance against round-off flip-flopping; a
+/// just-broken beam, current = intact, takes tolerance 0). The one place the contact rule lives:
+/// forces follow the state (BeamOperator).
+BeamState contact_state(BeamState current, double elongation, double tolerance);
+
+/// u_e of beam `beam`: (x_i, y_i, omega_i, x_j, y_j, omega_j) of u (dof = 3 particle + component).
+inline Vector6d element_displacements(const Lattice& lattice, int beam, const Eigen::VectorXd& u) {
+  const auto [i, j] = lattice.beams[static_cast<std::size_t>(beam)];
+  Vector6d u_e;
+  u_e << u.segment<3>(3 * i), u.segment<3>(3 * j);
+  return u_e;
+}
+
+/// The force a beam or contact exerts on its particle i (Eqs. 3, 4, 8), and its components.
+/// On particle j it exerts -force_on_i and moment_j. For the particle stress of Section 2.1,
+/// sigma_i = 1/2 V_i^-1 sum_j F_ij (x) L_ij with F_ij = force_on_i and L_ij = x_j - x_i (for particle j
+/// use -force_on_i and -L_ij: the same outer product). Tension positive.
+struct BeamForce {
+  Eigen::Vector2d force_on_i = Eigen::Vector2d::Zero();  ///< F_ij, global components
+  double normal = 0.0;    ///< F_ij . n_ij = k_n (u_j - u_i).n_ij: > 0 in tension, <= 0 for a contact
+  double shear = 0.0;     ///< F_ij . s_ij, s_ij = n_ij rotated by +90 degrees
+  double moment_i = 0.0;  ///< moment on particle i (Eq. 4, counter-clockwise positive)
+  double moment_j = 0.0;  ///< moment on particle j
+};
+
+/// Beam `beam`'s BeamForce at displacements u: -BeamOperator(...).internal_force(u_e) and its
+/// normal and shear components. `parameters` are the beam's own (beam_parameters_for).
+BeamForce beam_force(const Lattice& lattice, int beam, const BeamParameters& parameters, BeamState state,
+                     const Eigen::VectorXd& u);
 
 /// Element stiffness of one connection of length L at angle theta (Fig. 2) in global components,
-/// ordered (x_i, y_i, omega_i, x_j, y_j, omega_j). Symmetric, positive semi-definite with the three
-/// rigid-body motions in its null space (intact), or rank one (contact), or zero (open).
+/// ordered (x_i, y_i, omega_i, x_j, y_j, omega_j): BeamOperator(cos theta, sin theta, ...).stiffness().
+/// Symmetric, positive semi-definite with the three rigid-body motions in its null space (intact),
+/// or rank one (contact), or zero (open).
 Matrix6d beam_element_stiffness(double length, double angle, const BeamParameters& parameters,
                                 BeamState state = BeamState::intact);
 
-using Matrix63d = Eigen::Matrix<double, 6, 3>;
-
 /// A factor V of the element stiffness, K_e = V V^T (beam_element_stiffness(length, angle, parameters,
-/// state)), used for rank-<=3 updates/downdates of a factorised global matrix when a beam changes state.
-/// Column 0 is the normal spring, sqrt(k_n) b with b.u_e = (u_j - u_i).n_ij the elongation (zero when
-/// open); columns 1 and 2 are the bending part B^T C with D = C C^T (Cholesky of the 2 x 2 bending
-/// matrix, SPD: eigenvalues k_w L^2 and 2 k_w L^2 (2 gamma + 1/6)), zero unless intact.
+/// state)), used for rank-<=3 updates/downdates of a factorised global matrix when a beam changes state:
+/// BeamOperator(...).factor(). Column 0 is the normal spring, sqrt(k_n) b with b.u_e = (u_j - u_i).n_ij
+/// the elongation (zero when open); columns 1 and 2 are the bending part, zero unless intact.
 /// So intact -> contact removes columns 1-2 (rank 2), contact -> open column 0 (rank 1).
 Matrix63d beam_element_factor(double length, double angle, const BeamParameters& parameters,
                               BeamState state = BeamState::intact);

@@ -91,24 +91,13 @@ struct MechanicsOptions {
   void validate() const;
 };
 
-/// The force a beam or contact exerts on its particle i (Eqs. 3, 4, 8), and its components.
-/// On particle j it exerts -force_on_i and moment_j. For the particle stress of Section 2.1,
-/// sigma_i = 1/2 V_i^-1 sum_j F_ij (x) L_ij with F_ij = force_on_i and L_ij = x_j - x_i (for particle j
-/// use -force_on_i and -L_ij: the same outer product). Tension positive.
-struct BeamForce {
-  Eigen::Vector2d force_on_i = Eigen::Vector2d::Zero();  ///< F_ij, global components
-  double normal = 0.0;    ///< F_ij . n_ij = k_n (u_j - u_i).n_ij: > 0 in tension, <= 0 for a contact
-  double shear = 0.0;     ///< F_ij . s_ij, s_ij = n_ij rotated by +90 degrees
-  double moment_i = 0.0;  ///< moment on particle i (Eq. 4, counter-clockwise positive)
-  double moment_j = 0.0;  ///< moment on particle j
-};
-
 /// Forces of every beam for displacements u (3 n_particles, dof = 3 i + component) and the given beam
-/// states: intact beams by Eqs. 3-4 (linearised), contacts by Eq. 9-10's normal spring, open beams zero.
-/// Evaluated in each beam's local frame; equal to -K_e u_e to round-off (tested), so the particle sums
-/// are exactly -K u. particle_stress.hpp's compute_beam_forces(lattice, parameters, u, states) gives the
-/// same F_ij and moments in its BeamForces layout (tested against this one); this one adds the normal and
-/// shear components. Limits: like the stiffness, geometrically linear.
+/// states: beam_force (BeamOperator's internal force) of each, i.e. intact beams by Eqs. 3-4
+/// (linearised), contacts by Eq. 9-10's normal spring, open beams zero; equal to -K_e u_e to round-off
+/// (tests/lattice2d/test_fast_path.cpp), so the particle sums are -K u. particle_stress.hpp's
+/// compute_beam_forces(lattice, parameters, u, states) gives the same F_ij and moments, bit for bit, in
+/// its BeamForces layout; this one adds the normal and shear components. Limits: like the stiffness,
+/// geometrically linear.
 std::vector<BeamForce> connection_forces(const Lattice& lattice, const BeamParameters& parameters,
                                            const std::vector<BeamState>& states, const Eigen::VectorXd& u);
 

@@ -30,11 +30,14 @@ struct BeamForces {
   Eigen::Matrix2Xd moment;
 };
 
-/// Forces from displacements u (size 3 n, dof = 3 i + component) and states (empty = all intact):
-///  - intact: minus the rows of beam_element_stiffness times the element displacements (the linearised
-///    Eqs. 3-7), so equilibrium of the assembled K u = f means zero net force and moment per free particle;
-///  - contact: the normal spring of Eqs. 9-10, compressive only (Eq. 8's Heaviside): zero if the pair
-///    has separated, which a converged contact active set never leaves behind;
+/// Forces from displacements u (size 3 n, dof = 3 i + component) and states (empty = all intact), each
+/// beam's beam_force (beam_stiffness.hpp: minus BeamOperator's internal force K_e u_e, the matrix its
+/// state assembles), bit for bit connection_forces' F_ij and moments:
+///  - intact: the linearised Eqs. 3-7, so equilibrium of the assembled K u = f means zero net force
+///    and moment per free particle;
+///  - contact: the normal spring of Eqs. 9-10. Eq. 8's Heaviside is the state's (contact_state), not
+///    the force's: pass states that belong to u, as BeamMechanics' active set leaves them (a contact
+///    then separates by at most its contact_tolerance); a contact given a separating u pulls;
 ///  - open: zero.
 /// Validates `parameters` (throws hm::InputError).
 BeamForces compute_beam_forces(const Lattice& lattice, const BeamParameters& parameters,
@@ -59,6 +62,18 @@ struct ParticleStress {
 /// continuum stress.
 ParticleStress compute_particle_stress(const Lattice& lattice, const DualGraph& dual,
                                        const BeamForces& forces);
+/// The same from connection_forces' layout (F_ij = force_on_i) into `out`, whose storage is reused:
+/// the form of the break loop, which evaluates it after every broken beam.
+void compute_particle_stress(const Lattice& lattice, const DualGraph& dual, const std::vector<BeamForce>& forces,
+                             ParticleStress& out);
+
+/// Beam `beam`'s stress (sigma_xx, sigma_yy, sigma_xy) for the failure check (Section 2.1): "the mean
+/// value of the stress in the particles that it connects", times its crack-tip factor (1 elsewhere).
+inline Eigen::Vector3d beam_stress(const Lattice& lattice, const ParticleStress& particle_stress, int beam,
+                                   double crack_tip_factor) {
+  const auto [i, j] = lattice.beams[static_cast<std::size_t>(beam)];
+  return crack_tip_factor * 0.5 * (particle_stress.stress.col(i) + particle_stress.stress.col(j));
+}
 
 /// Crack-tip factor of Fig. 2: the stress of an intact beam in a triangle of 2 intact + 1 broken
 /// beams is multiplied by (L_ij / (2 L_m))^(1/2).
