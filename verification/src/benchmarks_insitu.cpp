@@ -331,8 +331,8 @@ BenchmarkResult insitu_injection(const BenchmarkContext& ctx) {
 
   // Breakdown against the rate under the isotropic field: the lattice's first break, the 1D model's
   // first wall failure from the same rest state, and the closed forms (rate-free limits).
-  Table by_rate{"Isotropic field S_H = S_h = 2e-4: breakdown against the injection rate (lattice seed 1, run to its "
-                    "first break; 1D: Appendix A from the same rest state, first wall failure)",
+  Table by_rate{"Isotropic field S_H = S_h = 2e-4: breakdown against the injection rate (lattice N = 3000, seed 1, "
+                    "run to its first break; 1D: Appendix A from the same rest state, first wall failure)",
                 {"Q", "lattice p_h before / at first break", "1D p_h at wall failure", "lattice / 1D",
                  "Haimson-Fairhurst", "Hubbert-Willis"},
                 {}};
