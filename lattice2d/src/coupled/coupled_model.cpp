@@ -119,8 +119,6 @@ Eigen::VectorXd CoupledModel::unknown_volumes(const DualGraph& dual) const {
   return v;
 }
 
-// One time step (Fig. 5): predict the guess, then passes of mechanics (with the break loop) and flow
-// until the guess stops changing, then accept the step or restore t^n.
 CoupledStepSummary CoupledModel::settle() {
   CoupledStepSummary summary;
   summary.time = time();
@@ -161,6 +159,8 @@ CoupledStepSummary CoupledModel::settle() {
   return summary;
 }
 
+// One time step (Fig. 5): predict the guess, then passes of mechanics (with the break loop) and flow
+// until the guess stops changing, then accept the step or restore t^n.
 CoupledStepSummary CoupledModel::step(double dt) {
   if (!(dt > 0.0 && std::isfinite(dt)))
     throw hm::InputError("dt = " + hm::core::format_value(dt) + ", allowed: > 0, finite");
