@@ -24,6 +24,7 @@
 #include "commands.hpp"
 #include "hm/case/checkpoint.hpp"
 #include "hm/case/coupled_model_of_case.hpp"
+#include "hm/core/peak_memory.hpp"
 #include "hm/core/file_output.hpp"
 #include "hm/core/input_error.hpp"
 #include "hm/core/interrupt.hpp"
@@ -156,11 +157,11 @@ void run_case(const RunArgs& a, int& exit_code, const std::string& command_line)
                 "(= factor downdates), %lld mechanical solves, %lld contact switches, %lld mechanical "
                 "refactorisations (%lld after failed updates), max volume-balance error %.2e; set-up %.1f s, "
                 "mechanics solves %.1f s, stresses and failure checks %.1f s, downdates %.1f s, geometry %.1f s, "
-                "flow %.1f s",
+                "flow %.1f s; peak memory %.0f MB",
                 run.n_steps, run.n_step_halvings, run.total_iterations, model->n_broken(), run.n_mechanics_solves,
                 run.n_contact_changes, run.n_mechanics_factorizations, run.n_mechanics_update_failures,
                 run.max_balance_error, setup_seconds, run.mechanics_seconds, run.stress_seconds, run.break_seconds,
-                run.geometry_seconds, run.flow_seconds);
+                run.geometry_seconds, run.flow_seconds, core::peak_memory_bytes() / 1e6);
   progress.finish(summary);
   if (run.n_mechanics_update_failures > 0)  // each cost a refactorisation: say what CHOLMOD reported (docs/borehole_fracture.md)
     std::cout << "last failed update: " << model->mechanics().solver().report().last_update_failure << "\n";

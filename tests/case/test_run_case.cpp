@@ -120,6 +120,13 @@ TEST_CASE("hmlattice run writes series, radial profiles, VTK and a resolved conf
   // Header plus t = 0 plus two steps; three outputs (0, 5e-6, 1e-5) of five shells plus a header.
   CHECK(count_lines(hm::test::slurp(dir.path / "run1" / "series.csv")) == 4);
   CHECK(count_lines(hm::test::slurp(dir.path / "run1" / "radial.csv")) == 16);
+  // The summary states the peak memory: at least the lattice and its factor, a few MB at N = 600,
+  // and far below 1 GB.
+  const auto at = first.out.find("peak memory ");
+  REQUIRE(at != std::string::npos);
+  const double mb = std::stod(first.out.substr(at + 12));
+  CHECK(mb > 1.0);
+  CHECK(mb < 1000.0);
   const auto second = run_hmlattice("run run1/config.toml --out run2", dir.path);
   REQUIRE(second.exit_code == 0);
   CHECK(hm::test::slurp(dir.path / "run1" / "radial.csv") == hm::test::slurp(dir.path / "run2" / "radial.csv"));
