@@ -12,7 +12,8 @@ fdm1d folder, or a folder of them: each run is drawn against the one with its b)
 
 Prints, per run, how many of its output times have a 1D profile to compare with. The curves are drawn
 as Fig. 13's (hmplot.draw_displacement_vs_1d): solid with markers the lattice's shell means of u_r,
-dashed fdm1d's nodal u_r at the same time, each labelled unbroken or fractured at that time.
+dashed fdm1d's nodal u_r at the same time, each labelled unbroken or fractured at that time. Without
+--fdm1d, a benchmark's data folder (runs.csv) names each run's 1D folder.
 """
 import os
 
@@ -37,12 +38,16 @@ def main():
         check)
     runs = hmplot.runs_to_draw(args.data)
     by_b = hmplot.fdm1d_folders(args.fdm1d)
+    # A benchmark's data folder (runs.csv) names each run's 1D reference.
+    indexed = hmplot.indexed_folders(args.data, "fdm1d")
     fig, axes = plt.subplots(1, len(runs), figsize=(5.2 * len(runs), 3.9), squeeze=False)
     for col, (label, folder) in enumerate(runs):
         b = hmplot.run_physics(folder, "b")
         title = f"b = {b:g}" if b is not None else label
         # One 1D folder given for one run is its reference whatever its b; otherwise match by b.
         folder_1d = next(iter(by_b.values())) if len(by_b) == 1 and len(runs) == 1 else by_b.get(b)
+        if not args.fdm1d:
+            folder_1d = indexed.get(label)
         t_first = hmplot.read_csv(os.path.join(folder, "breakdown.csv"))["t_first_break"][0]
         ax = axes[0][col]
         n_times, n_compared = hmplot.draw_displacement_vs_1d(ax, folder, folder_1d, t_first)

@@ -205,6 +205,16 @@ def runs_to_draw(data):
     return sorted(runs, key=lambda run: run_physics(run[1], "b") or 0.0)
 
 
+def indexed_folders(data, column):
+    """{run label: folder} from the `column` of a benchmark data folder's runs.csv (runs with a value
+    there); {} without runs.csv."""
+    index = os.path.join(data, "runs.csv")
+    if not os.path.exists(index):
+        return {}
+    with open(index, newline="") as f:
+        return {r["run"]: os.path.join(data, r[column]) for r in csv.DictReader(f) if r.get(column)}
+
+
 def runs_problem(data):
     """None if `data` holds runs to draw (see runs_to_draw), else the one-line reason (for arguments' check)."""
     if not os.path.isdir(data):
@@ -370,10 +380,13 @@ def draw_displacement_vs_1d(ax, folder, folder_1d, t_first):
 
 def sweep_problem(data, key):
     """None if `data` is a sweep folder over `key` (results.csv from `hmlattice sweep collect`, run folders
-    in runs/), else the one-line reason (for arguments' check)."""
+    in runs/) or a benchmark data folder (runs.csv naming run folders with their n_particles), else the
+    one-line reason (for arguments' check)."""
+    if os.path.isfile(os.path.join(data, "runs.csv")):
+        return None
     path = os.path.join(data, "results.csv")
     if not os.path.isfile(path):
-        return f"--data = '{data}' has no results.csv (hmlattice sweep collect)"
+        return f"--data = '{data}' has no results.csv (hmlattice sweep collect) and no runs.csv (a benchmark's)"
     with open(path, newline="") as f:
         header = next(csv.reader(f), [])
     if key not in header:
@@ -383,7 +396,14 @@ def sweep_problem(data, key):
 
 def sweep_runs(data, key):
     """[(value of key, run folder)] of a sweep folder's complete runs in order of the value, and the number
-    of combinations left out (incomplete or missing runs)."""
+    of combinations left out (incomplete or missing runs). For a benchmark data folder (runs.csv): its
+    runs with `figure` = 1, by the runs.csv column named as the key after its dot (n_particles)."""
+    index = os.path.join(data, "runs.csv")
+    if os.path.isfile(index):
+        with open(index, newline="") as f:
+            rows = [r for r in csv.DictReader(f) if r["figure"] == "1"]
+        column = key.split(".")[-1]
+        return sorted((float(r[column]), os.path.join(data, r["run"])) for r in rows), 0
     with open(os.path.join(data, "results.csv"), newline="") as f:
         rows = list(csv.DictReader(f))
     done = [r for r in rows if r["status"] == "complete"]

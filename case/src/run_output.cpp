@@ -53,7 +53,8 @@ const std::vector<std::string> series_columns = {"t", "dt", "p_h", "injected", "
                                                  "displacement_residual"};
 const std::vector<std::string> radial_columns = {"t", "r", "r_mean", "n_triangles", "u_r", "p"};
 const std::vector<std::string> fracture_pressure_columns = {"t", "mean_all", "mean_away", "min_away", "n_all", "n_away",
-                                                            "negative_area_fraction"};
+                                                            "negative_area_fraction", "p_min", "p_max",
+                                                            "borehole_backflow", "outer_inflow", "mouth_inflow"};
 
 // The fracture statistics when the log held its first n events: broken beams never heal and only the
 // break loop breaks them (logging each), so those events' beams are the broken ones at that time.
@@ -210,7 +211,8 @@ void RunRecorder::record(const lt::CoupledModel& model, const lt::CoupledStepSum
     fracture_log_sizes_.push_back(model.break_log().size());
     const FracturePressure fp = fracture_pressure(model);
     pressure_->row({model.time(), fp.mean_all, fp.mean_away, fp.min_away, static_cast<double>(fp.n_all),
-                    static_cast<double>(fp.n_away), fp.negative_area_fraction});
+                    static_cast<double>(fp.n_away), fp.negative_area_fraction, fp.p_min, fp.p_max,
+                    fp.borehole_backflow, fp.outer_inflow, fp.mouth_inflow});
     pressure_file_.flush();
   }
   if (vtk_) {

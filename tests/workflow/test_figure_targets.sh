@@ -51,14 +51,19 @@ for tier in quick paper; do
   echo "$tier tier: 12 runs and 6 figures planned for $targets"
 done
 
-# 3. The verify target's plan (the quick tier's: the fig12 benchmark's six runs).
+# 3. The verify target's plan: every run of case files the quick tier's benchmarks make (as
+# `hmlattice verify --write-cases` lists them), each one run job.
+"$hm" verify --tier quick --write-cases "$work/planned" > /dev/null || fail "hmlattice verify --write-cases"
+n_planned=$(tail -n +2 "$work/planned/index.csv" | wc -l)
+[ "$n_planned" -ge 6 ] || fail "verify --write-cases: $n_planned runs, the fig12 benchmark alone has 6"
 smk quick "$work/out/verify_quick/cases" > "$work/plan.log" 2>&1 || { cat "$work/plan.log"; fail "planning verify's runs"; }
-[ "$(tail -n +2 "$work/out/verify_quick/cases/index.csv" | wc -l)" -eq 6 ] || fail "verify_quick/cases: not 6 runs"
+[ "$(tail -n +2 "$work/out/verify_quick/cases/index.csv" | wc -l)" -eq "$n_planned" ] ||
+  fail "verify_quick/cases: not $n_planned runs"
 smk quick -n -p verify > "$work/verify.log" 2>&1 || { cat "$work/verify.log"; fail "dry run of verify"; }
-[ "$(grep -cE '^rule run:' "$work/verify.log")" -eq 6 ] || { cat "$work/verify.log"; fail "verify: not 6 run jobs"; }
+[ "$(grep -cE '^rule run:' "$work/verify.log")" -eq "$n_planned" ] || { cat "$work/verify.log"; fail "verify: not $n_planned run jobs"; }
 grep -q "verify --tier quick --runs $work/out/verify_quick/runs --out $work/out/verify_quick/report " "$work/verify.log" ||
   { cat "$work/verify.log"; fail "verify: no report with --runs"; }
-echo "verify: 6 runs and the report with --runs planned"
+echo "verify: $n_planned runs and the report with --runs planned"
 
 # 4. A bad tier.
 rc=0

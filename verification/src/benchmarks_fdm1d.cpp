@@ -277,7 +277,7 @@ void add_fdm1d_benchmarks(std::vector<Benchmark>& into) {
                   "paper's values.",
                   Tier::quick, section32});
   into.push_back({"fdm1d.fig10_11", "1D model: Figs. 10 and 11", "The case `cases/fig10_fdm1d_b0.5.toml` as "
-                  "`hmlattice fdm1d` runs it, drawn as the paper's Figs. 10 and 11.", Tier::quick, fig10_11});
+                  "`hmlattice fdm1d` runs it, drawn as the paper's Figs. 10 and 11.", Tier::quick, fig10_11, {}, {"10", "11"}});
 }
 
 }  // namespace hm::verification

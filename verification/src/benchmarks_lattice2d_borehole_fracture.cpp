@@ -44,6 +44,10 @@ namespace fs = std::filesystem;
 std::string twin_label(const std::string& name) { return name + "_flux_borehole"; }
 std::string eq16_label(const std::string& name) { return name + "_eq16_node"; }
 
+const std::string kFig12Paper = "Section 3.3, Fig. 12: 3 radial fractures for b = 0.2, 7 for b = 0.8, all at r = 1 "
+                                "at the last time; no secondary fractures at this low Q";
+const std::string kFig12Fluid = "negative pressure in and along the fractures (Section 3.3)";
+
 // --- quick tier ---------------------------------------------------------------------------------
 
 const std::vector<std::string> kQuickCases = {"fig12_b0.2_quick", "fig12_b0.8_quick"};
@@ -66,7 +70,8 @@ BenchmarkResult fig12_quick(const BenchmarkContext& ctx) {
   const fs::path root = ctx.data_dir / "fig12_quick";
   fs::create_directories(root);
   RunSource source(root, ctx.runs_dir, ctx.progress);
-  Table snaps = snapshot_table(), breakdown = breakdown_table(), timing = timing_table(), node = borehole_node_table();
+  Table snaps = snapshot_table(kFig12Paper), fluid = fluid_table(kFig12Fluid), breakdown = breakdown_table(),
+        timing = timing_table(), node = borehole_node_table();
   std::vector<RunOutcome> runs;  // per case: the case, then the same case with Eq. 16's borehole node
   for (const std::string& name : kQuickCases) {
     const RunCase c = quick_case(name);
@@ -79,18 +84,19 @@ BenchmarkResult fig12_quick(const BenchmarkContext& ctx) {
   }
   write_index(root, runs, {true, false, true, false}, source);
   for (const auto& o : runs) {
-    add_snapshot_rows(o, snaps);
+    add_snapshot_rows(o, snaps, paper_reading("fig12", o.b));
+    add_fluid_rows(o, fluid);
     add_breakdown_row(o, breakdown);
     add_timing_row(o, timing);
     add_gating_metrics(o, res.metrics);
-    add_paper_metrics(o, res.metrics);
+    add_paper_metrics(o, res.metrics, paper_reading("fig12", o.b));
   }
   for (std::size_t k = 0; k + 1 < runs.size(); k += 2) {
-    add_borehole_node_row({&runs[k]}, node);
-    add_borehole_node_row({&runs[k + 1]}, node);
+    add_borehole_node_row({&runs[k]}, node, paper_reading("fig12", runs[k].b));
+    add_borehole_node_row({&runs[k + 1]}, node, paper_reading("fig12", runs[k].b));
     add_borehole_node_metrics({&runs[k]}, {&runs[k + 1]}, res.metrics);
   }
-  res.tables = {snaps, breakdown, node, timing};
+  res.tables = {snaps, fluid, breakdown, node, timing};
   res.figures = figures("fig12_quick", "quick tier, N = 3000");
   res.notes.push_back(notes_common());
   res.notes.push_back(notes_borehole_node());
@@ -113,12 +119,7 @@ RunCase paper_case(const std::string& b) {
 }
 
 /// The case at the scatter's resolution with `seed` for the lattice and the strengths.
-RunCase scatter_case(RunCase c, unsigned long long seed) {
-  c.lattice.n_particles = kScatterN;
-  c.lattice.seed = seed;
-  c.strength.seed = seed;
-  return c;
-}
+RunCase scatter_case(const RunCase& c, unsigned long long seed) { return with_lattice(c, kScatterN, seed); }
 
 std::string scatter_label(const std::string& b, unsigned long long seed) {
   return "fig12_b" + b + "_N" + std::to_string(kScatterN) + "_seed" + std::to_string(seed);
@@ -146,15 +147,9 @@ BenchmarkResult fig12_paper(const BenchmarkContext& ctx) {
   const fs::path root = ctx.data_dir / "fig12_paper";
   fs::create_directories(root);
   RunSource source(root, ctx.runs_dir, ctx.progress);
-  Table snaps = snapshot_table(), breakdown = breakdown_table(), timing = timing_table(), node = borehole_node_table();
-  Table scatter{"Seed scatter at N = " + std::to_string(kScatterN) + " (seeds 1, 2, 3 of the lattice and the strengths): "
-                "mean ± sample standard deviation over the three runs",
-                {"b", "t*", "n_broken", "radial (clusters)", "arms", "radial at r = 1", "secondary", "secondary >= 0.05",
-                 "p in fractures (no wall tri.)", "p_h"},
-                {}};
-  Table scatter_bd{"Seed scatter at N = " + std::to_string(kScatterN) + ": breakdown, mean ± sd over seeds 1, 2, 3",
-                   {"b", "t* first break", "p_h at first break", "t* peak", "p_h peak"},
-                   {}};
+  Table snaps = snapshot_table(kFig12Paper), fluid = fluid_table(kFig12Fluid), breakdown = breakdown_table(),
+        timing = timing_table(), node = borehole_node_table();
+  Table scatter = scatter_table(kScatterN), scatter_bd = scatter_breakdown_table(kScatterN);
   std::vector<RunOutcome> runs;
   std::vector<bool> in_figure;
   for (const std::string& b : kPaperB) {
@@ -172,31 +167,10 @@ BenchmarkResult fig12_paper(const BenchmarkContext& ctx) {
     }
     std::vector<const RunOutcome*> flux_group, eq16_group;
     for (std::size_t k = 0; k < seeds.size(); ++k) flux_group.push_back(&seeds[k]), eq16_group.push_back(&eq16_seeds[k]);
-    add_borehole_node_row(flux_group, node);
-    add_borehole_node_row(eq16_group, node);
+    add_borehole_node_row(flux_group, node, paper_reading("fig12", c.physics.parameters.material.b));
+    add_borehole_node_row(eq16_group, node, paper_reading("fig12", c.physics.parameters.material.b));
     add_borehole_node_metrics(flux_group, eq16_group, res.metrics);
-    // Mean ± sd per output time (the runs share the output times; a failed run is left out).
-    std::vector<const RunOutcome*> ok;
-    for (const auto& s : seeds)
-      if (s.ok) ok.push_back(&s);
-    if (!ok.empty()) {
-      for (std::size_t k = 0; k < ok.front()->snaps.size(); ++k) {
-        std::vector<double> nb, nr, na, no, ns, nz, fp, ph;
-        for (const RunOutcome* s : ok) {
-          if (k >= s->snaps.size()) continue;
-          const Snapshot& q = s->snaps[k];
-          nb.push_back(q.stats.n_broken), nr.push_back(q.stats.n_radial), na.push_back(q.stats.n_arms);
-          no.push_back(q.stats.n_radial_reaching_outer), ns.push_back(q.stats.n_secondary);
-          nz.push_back(q.stats.n_secondary_sizable);
-          fp.push_back(q.fp.mean_away), ph.push_back(q.p_h);
-        }
-        scatter.rows.push_back({b, format_number(ok.front()->snaps[k].t), mean_sd(nb), mean_sd(nr), mean_sd(na), mean_sd(no),
-                                mean_sd(ns), mean_sd(nz), mean_sd(fp), mean_sd(ph)});
-      }
-      std::vector<double> tf, pf, tp, pp;
-      for (const RunOutcome* s : ok) tf.push_back(s->t_first), pf.push_back(s->p_first), tp.push_back(s->t_peak), pp.push_back(s->p_peak);
-      scatter_bd.rows.push_back({b, mean_sd(tf), mean_sd(pf), mean_sd(tp), mean_sd(pp)});
-    }
+    add_scatter_rows(b, seeds, scatter, scatter_bd);
     for (auto* group : {&seeds, &eq16_seeds})
       for (auto& s : *group) {
         runs.push_back(std::move(s));
@@ -205,13 +179,14 @@ BenchmarkResult fig12_paper(const BenchmarkContext& ctx) {
   }
   write_index(root, runs, in_figure, source);
   for (const auto& o : runs) {
-    add_snapshot_rows(o, snaps);
+    add_snapshot_rows(o, snaps, paper_reading("fig12", o.b));
+    add_fluid_rows(o, fluid);
     add_breakdown_row(o, breakdown);
     add_timing_row(o, timing);
     add_gating_metrics(o, res.metrics);
-    add_paper_metrics(o, res.metrics);
+    add_paper_metrics(o, res.metrics, paper_reading("fig12", o.b));
   }
-  res.tables = {snaps, scatter, breakdown, scatter_bd, node, timing};
+  res.tables = {snaps, fluid, scatter, breakdown, scatter_bd, node, timing};
   res.figures = figures("fig12_paper", "paper tier, N = 1e5");
   res.notes.push_back(notes_common());
   res.notes.push_back(notes_borehole_node());
@@ -233,7 +208,8 @@ void add_lattice2d_borehole_fracture_benchmarks(std::vector<Benchmark>& into) {
                                  "before the first break against fdm1d; each case again with Eq. 16's borehole node.",
                   .tier = Tier::quick,
                   .run = fig12_quick,
-                  .planned_runs = fig12_quick_runs});
+                  .planned_runs = fig12_quick_runs,
+                  .paper_figures = {"12", "13"}});
   into.push_back({.id = "lattice2d.fig12",
                   .title = "Fracture from a pressurised borehole, b = 0.2 and 0.8, N = 1e5 and a seed scatter at "
                            "N = 2e4 (Figs. 12-13)",
@@ -242,7 +218,8 @@ void add_lattice2d_borehole_fracture_benchmarks(std::vector<Benchmark>& into) {
                                  "node): as the quick benchmark, plus mean ± sd over the seeds and each run's wall time.",
                   .tier = Tier::paper,
                   .run = fig12_paper,
-                  .planned_runs = fig12_paper_runs});
+                  .planned_runs = fig12_paper_runs,
+                  .paper_figures = {"12", "13"}});
 }
 
 }  // namespace hm::verification

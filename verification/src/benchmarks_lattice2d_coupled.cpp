@@ -390,19 +390,22 @@ void add_lattice2d_coupled_benchmarks(std::vector<Benchmark>& into) {
                                  "iterated to 1e-6; radially averaged u_r and p at t* = 3e-4 against "
                                  "analytic/rudnicki.hpp on r* in [0.01, 0.05]; fluid-volume balance per step.",
                   .tier = Tier::quick,
-                  .run = rudnicki_quick});
+                  .run = rudnicki_quick,
+                  .paper_figures = {"7"}});
   into.push_back({.id = "lattice2d.rudnicki",
                   .title = "Coupled lattice: Rudnicki's line source, two resolutions, free and fixed (Fig. 7)",
                   .description = "As the quick benchmark at N = 1e4 and 3e4, free and fixed outer boundary; at N = 3e4 "
                                  "also the undrained split with one pass per step and the drained split.",
                   .tier = Tier::paper,
-                  .run = rudnicki_paper});
+                  .run = rudnicki_paper,
+                  .paper_figures = {"7"}});
   into.push_back({.id = "lattice2d.psi_study",
                   .title = "Coupled lattice: the undrained split's Psi against iterations and time (Fig. 8)",
                   .description = "The Fig. 7 run with Psi = 0 (drained), 1, 1.3, 2, 10: coupling passes and wall time "
                                  "to t* = 3e-4, and the shell pressure against the pass number in one step.",
                   .tier = Tier::paper,
-                  .run = psi_study});
+                  .run = psi_study,
+                  .paper_figures = {"8"}});
 }
 
 }  // namespace hm::verification

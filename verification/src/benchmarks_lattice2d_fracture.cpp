@@ -557,7 +557,7 @@ void add_lattice2d_fracture_benchmarks(std::vector<Benchmark>& into) {
   into.push_back({"lattice2d.sneddon", "Lattice: Sneddon's pressurised crack (Appendix C, Fig. C2)",
                   "A straight crack of broken beams in the dry disk, pressurised on its faces (forces p d_st along each "
                   "broken beam); the aperture profile against Eq. C1 with the calibrated E, nu (cross-checked by E' measured on the lattice).",
-                  Tier::quick, sneddon});
+                  Tier::quick, sneddon, {}, {"C2"}});
   into.push_back({"lattice2d.uniaxial_tension", "Lattice: uniaxial tension to failure",
                   "A square pulled by prescribed displacements with the break loop at each load: peak mean stress "
                   "against T_u and a crack across the load direction.",

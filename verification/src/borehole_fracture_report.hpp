@@ -7,12 +7,9 @@
 
 #include "borehole_fracture_runs.hpp"
 #include "hm/verification/benchmark.hpp"
+#include "paper_readings.hpp"
 
 namespace hm::verification::borehole_fracture {
-
-/// The paper's counts of radial fractures (Section 3.3: "3 nearly equidistant fractures for b = 0.2,
-/// and 7 fractures for b = 0.8").
-int paper_fracture_count(double b);
 
 /// "b = 0.2, N = 3000, seed 1" (", Eq. 16 node" for that variant): how a run is named in every table.
 std::string run_name(const RunOutcome& o);
@@ -20,8 +17,16 @@ std::string run_name(const RunOutcome& o);
 /// "m ± s" (sample standard deviation) of several values; the value itself for one.
 std::string mean_sd(const std::vector<double>& x);
 
-Table snapshot_table();
-void add_snapshot_rows(const RunOutcome& o, Table& t);
+/// The fracture counts per output time; `paper` says what the paper's figure shows.
+Table snapshot_table(const std::string& paper);
+void add_snapshot_rows(const RunOutcome& o, Table& t, const PaperReading& paper);
+/// The fluid per output time: p_h, the pressure range and in the fractures, backflows.
+Table fluid_table(const std::string& paper);
+void add_fluid_rows(const RunOutcome& o, Table& t);
+/// Mean ± sd over the seed runs of one case: per output time, and of the breakdown (a failed run is left out).
+Table scatter_table(long long n_particles);
+Table scatter_breakdown_table(long long n_particles);
+void add_scatter_rows(const std::string& b, const std::vector<RunOutcome>& seeds, Table& scatter, Table& breakdown);
 Table breakdown_table();
 void add_breakdown_row(const RunOutcome& o, Table& t);
 Table timing_table();
@@ -31,15 +36,15 @@ void add_timing_row(const RunOutcome& o, Table& t);
 /// seeds) the first break, whether the case is unbroken at Fig. 13's first time, the damage and the
 /// counts at the last time, beside the paper's.
 Table borehole_node_table();
-void add_borehole_node_row(const std::vector<const RunOutcome*>& group, Table& t);
+void add_borehole_node_row(const std::vector<const RunOutcome*>& group, Table& t, const PaperReading& paper);
 /// Shown beside the paper, never gating: how far the Eq. 16 node moves the first break and the counts.
 void add_borehole_node_metrics(const std::vector<const RunOutcome*>& flux, const std::vector<const RunOutcome*>& eq16,
                                std::vector<Metric>& m);
 
 /// What must hold for every run (gating), and the 1D comparison before the first break (not gating).
 void add_gating_metrics(const RunOutcome& o, std::vector<Metric>& m);
-/// The paper's reading of Fig. 12, shown beside ours (never gating).
-void add_paper_metrics(const RunOutcome& o, std::vector<Metric>& m);
+/// The paper's reading of the run's figure, shown beside ours (never gating).
+void add_paper_metrics(const RunOutcome& o, std::vector<Metric>& m, const PaperReading& paper);
 
 /// runs.csv: which folder is which (text columns; read by the figure scripts with csv.DictReader).
 /// `source` says where each run's folder is (RunSource::folder).

@@ -125,6 +125,7 @@ RunOutcome describe(const RunCase& c, const std::string& label) {
   RunOutcome o;
   o.label = label;
   o.b = c.physics.parameters.material.b;
+  o.Q = c.physics.parameters.Q;
   o.n_particles = c.lattice.n_particles;
   o.seed = c.lattice.seed;
   o.R_i = c.physics.parameters.R_i;
@@ -235,12 +236,21 @@ RunOutcome read_run(const RunCase& c, const std::string& label, const fs::path& 
     snap.stats.n_tensile = count("n_tensile");
     snap.stats.n_shear = count("n_shear");
     snap.stats.max_radial_extent = summary["max_radial_extent"][k];
-    if (snap.stats.n_broken == 0) {
-      const RadialComparison u = u_r_against_1d(radial_u_r_at(radial, snap.t), edges, ref, snap.t);
-      snap.u_pre = u.max_error;
-      snap.u_ratio_mean = u.mean_ratio;
-    }
+    snap.u_r = radial_u_r_at(radial, snap.t);
+    const RadialComparison u = u_r_against_1d(snap.u_r, edges, ref, snap.t);
+    snap.u_ratio_mean = u.mean_ratio;
+    if (snap.stats.n_broken == 0) snap.u_pre = u.max_error;
     o.snaps.push_back(snap);
+  }
+  // Where the sizable secondary fractures are (fractures.csv): touching the outer boundary, or inside.
+  if (fs::exists(dir / "fractures.csv")) {
+    const CsvColumns fractures(dir / "fractures.csv");
+    const double sizable = lt::FractureStatisticsOptions{}.sizable_extent;
+    for (std::size_t k = 0; k < fractures.n_rows(); ++k) {
+      if (fractures["connected_to_borehole"][k] != 0.0 || fractures["extent"][k] < sizable) continue;
+      for (Snapshot& snap : o.snaps)
+        if (snap.t == fractures["t"][k]) ++(fractures["reaches_outer"][k] != 0.0 ? snap.secondary_at_outer : snap.secondary_inside);
+    }
   }
   // The pressure in the fractures at the same output times (RunRecorder's fracture_pressure.csv; a
   // folder written before the recorder wrote it has none, and its metrics stay out of the report).
@@ -251,7 +261,8 @@ RunOutcome read_run(const RunCase& c, const std::string& label, const fs::path& 
       if (pressure["t"][k] != snap.t) continue;
       snap.fp = {pressure["mean_all"][k], pressure["mean_away"][k], pressure["min_away"][k],
                  static_cast<int>(pressure["n_all"][k]), static_cast<int>(pressure["n_away"][k]),
-                 pressure["negative_area_fraction"][k]};
+                 pressure["negative_area_fraction"][k], pressure["p_min"][k], pressure["p_max"][k],
+                 pressure["borehole_backflow"][k], pressure["outer_inflow"][k], pressure["mouth_inflow"][k]};
     }
   return o;
 }
@@ -307,7 +318,7 @@ RunOutcome run_case(const RunCase& c, const std::string& label, const fs::path& 
   }
   recorder.finish();
   core::write_file_atomically(dir / "config.toml", [&](std::ostream& out) {
-    out << run_case_to_toml(c, to_toml(make_provenance("hmlattice verify (lattice2d.fig12 benchmark), run " + label)));
+    out << run_case_to_toml(c, to_toml(make_provenance("hmlattice verify, run " + label)));
   });
   RunOutcome o = read_run(c, label, dir, ref);
   o.n_healed = std::max(o.n_healed, n_healed);
@@ -345,7 +356,7 @@ TwinOutcome run_flux_twin(const RunCase& c, const std::string& label, const fs::
   if (!run.is_ok()) return TwinOutcome{.ok = false, .t_end = tc.stepping.t_end};
   recorder.finish();
   core::write_file_atomically(dir / "config.toml", [&](std::ostream& out) {
-    out << run_case_to_toml(tc, to_toml(make_provenance("hmlattice verify (lattice2d.fig12 benchmark), run " + label)));
+    out << run_case_to_toml(tc, to_toml(make_provenance("hmlattice verify, run " + label)));
   });
   return read_twin(tc, dir, ref);
 }
@@ -381,8 +392,14 @@ std::string RunSource::note() const {
   for (const auto& l : read_) labels += (labels.empty() ? "" : ", ") + l;
   return "Runs read from `--runs " + runs_dir_.string() + "` (made by `hmlattice run`, e.g. through the workflow; "
          "checked to be complete and of the benchmark's case): " + (labels.empty() ? "none" : labels) +
-         "; the others were run here. A read run's files hold no pressure in the fractures (shown as nan, its "
-         "metrics left out) and no timing split (nan).";
+         "; the others were run here. A read run's files hold no timing split (nan).";
+}
+
+RunCase with_lattice(RunCase c, long long n_particles, unsigned long long seed) {
+  c.lattice.n_particles = n_particles;
+  c.lattice.seed = seed;
+  c.strength.seed = seed;
+  return c;
 }
 
 RunCase with_eq16_borehole_node(RunCase c) {

@@ -33,7 +33,10 @@ struct Snapshot {
   hm::lattice2d::FractureStatistics stats;
   FracturePressure fp;
   double u_pre = kNaN;        // before the first break only: max over shells |u_r/u_r,1D - 1| (information)
-  double u_ratio_mean = kNaN;  // ... and the mean over shells of u_r/u_r,1D
+  double u_ratio_mean = kNaN;  // the mean over shells of u_r/u_r,1D (1D without fracture)
+  std::vector<double> u_r;     // the shells' u_r (radial.csv)
+  // Secondary fractures at least sizable_extent long: touching the outer boundary, or inside the domain.
+  int secondary_at_outer = 0, secondary_inside = 0;
 };
 
 /// The same case without fracture, with fdm1d's flux-boundary borehole (borehole_storage = none,
@@ -50,7 +53,7 @@ struct TwinOutcome {
 /// One 2D run and what it showed.
 struct RunOutcome {
   std::string label;  // the data folder
-  double b = 0.0;
+  double b = 0.0, Q = 0.0;
   long long n_particles = 0;
   unsigned long long seed = 0;
   double R_i = 0.0;
@@ -127,6 +130,9 @@ class RunSource {
   std::ostream* progress_;
   std::vector<std::string> read_;
 };
+
+/// `c` on a lattice of n_particles with `seed` for the lattice and the strengths (a seed scatter).
+cases::RunCase with_lattice(cases::RunCase c, long long n_particles, unsigned long long seed);
 
 /// `c` with the paper's Eq. 16 borehole node (storage (E/M) V_h dp_h and b dV_h, errata E15) instead of
 /// the cases' flux boundary.

@@ -12,6 +12,7 @@ const std::vector<Benchmark>& all_benchmarks() {
     add_lattice2d_coupled_benchmarks(all);
     add_lattice2d_vs_fdm1d_benchmarks(all);
     add_lattice2d_borehole_fracture_benchmarks(all);
+    add_lattice2d_paper_figure_benchmarks(all);
     add_insitu_benchmarks(all);
     return all;
   }();

@@ -1,10 +1,12 @@
 #include "report_writer.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
 #include "hm/core/file_output.hpp"
+#include "paper_readings.hpp"
 
 namespace hm::verification {
 
@@ -66,6 +68,32 @@ void write_table(std::ostream& md, const Table& t) {
   md << "\n";
 }
 
+// Every result figure of the paper, the benchmarks of each tier that draw it (declared with the
+// benchmark, Benchmark::paper_figures), and where it is in this report.
+void write_paper_figures(std::ostream& md, const std::vector<BenchmarkOutcome>& outcomes) {
+  const auto drawing = [](const std::string& number, Tier tier) {
+    std::string ids;
+    for (const Benchmark& b : all_benchmarks())
+      if (b.tier == tier && std::find(b.paper_figures.begin(), b.paper_figures.end(), number) != b.paper_figures.end())
+        ids += (ids.empty() ? "`" : ", `") + b.id + "`";
+    return ids.empty() ? std::string("-") : ids;
+  };
+  md << "## The paper's result figures\n\nWhich benchmark regenerates each of the paper's result figures "
+        "(`hmlattice verify --tier T --filter ID`), and where it is drawn in this report.\n\n"
+        "| figure | what it shows | quick tier | paper tier adds | in this report |\n|---|---|---|---|---|\n";
+  for (const PaperFigure& f : paper_result_figures()) {
+    std::string here;
+    for (const auto& o : outcomes) {
+      const auto& figs = o.benchmark->paper_figures;
+      if (std::find(figs.begin(), figs.end(), f.number) != figs.end() && o.error.empty())
+        here += (here.empty() ? "" : ", ") + ("[" + o.benchmark->id + "](#" + o.benchmark->id + ")");
+    }
+    md << "| " << f.number << " | " << cell(f.subject) << " | " << drawing(f.number, Tier::quick) << " | "
+       << drawing(f.number, Tier::paper) << " | " << (here.empty() ? "-" : here) << " |\n";
+  }
+  md << "\n";
+}
+
 int failed_gating(const BenchmarkOutcome& o) {
   int n = 0;
   for (const auto& m : o.result.metrics) n += (m.gating && !m.passes());
@@ -91,6 +119,7 @@ void write_report_markdown(const fs::path& file, const std::vector<BenchmarkOutc
          << " | " << failed << " | " << format_number(o.seconds) << " |\n";
     }
     md << "\n";
+    write_paper_figures(md, outcomes);
     for (const auto& o : outcomes) {
       const Benchmark& b = *o.benchmark;
       md << "<a id=\"" << b.id << "\"></a>\n## " << b.title << "\n\n`" << b.id << "`. " << b.description << "\n\n";

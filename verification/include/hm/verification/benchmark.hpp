@@ -95,7 +95,17 @@ struct Benchmark {
   /// The runs of case files it makes (empty for a benchmark that runs nothing of the kind): what
   /// `hmlattice verify --write-cases` writes for a workflow engine, and what `--runs` may read back.
   std::function<std::vector<PlannedRun>()> planned_runs = {};
+  /// The paper's result figures it draws ("7", "15", "C2"): the report's list of every figure and the
+  /// benchmarks that regenerate it.
+  std::vector<std::string> paper_figures = {};
 };
+
+/// One of the paper's result figures: its number ("7", "C2") and what it shows.
+struct PaperFigure {
+  std::string number, subject;
+};
+/// The paper's 14 result figures, in its order (Benchmark::paper_figures names them by number).
+const std::vector<PaperFigure>& paper_result_figures();
 
 /// Every registered benchmark, in report order. Each module's benchmarks are added by one
 /// function (add_analytic_benchmarks, ...), listed in registry.cpp: adding one is a few lines.
@@ -108,6 +118,7 @@ void add_lattice2d_fracture_benchmarks(std::vector<Benchmark>& into);
 void add_lattice2d_coupled_benchmarks(std::vector<Benchmark>& into);
 void add_lattice2d_vs_fdm1d_benchmarks(std::vector<Benchmark>& into);
 void add_lattice2d_borehole_fracture_benchmarks(std::vector<Benchmark>& into);
+void add_lattice2d_paper_figure_benchmarks(std::vector<Benchmark>& into);
 void add_insitu_benchmarks(std::vector<Benchmark>& into);
 
 }  // namespace hm::verification

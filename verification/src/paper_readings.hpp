@@ -1,0 +1,31 @@
+#pragma once
+// What the paper says of its fracture figures (Sections 3.3-3.6, the captions of Figs. 12-20), one
+// reading per figure and Biot coefficient, for the tables that show our runs beside it. These are the
+// paper's words turned into numbers where it gives numbers; nothing here is a tolerance.
+#include <string>
+
+namespace hm::verification {
+
+struct PaperReading {
+  static constexpr int all = -1, not_stated = -2;
+  std::string figure;            ///< "Fig. 12"
+  int fractures = not_stated;    ///< radial fractures at the last snapshot
+  int reaching_outer = not_stated;  ///< how many of them reach r = 1 then: a count, all or not_stated
+  enum class Secondary { not_stated, none, at_outer_boundary, between_primaries } secondary = Secondary::not_stated;
+  enum class FracturePressureSign { not_stated, negative_at_every_time, negative_at_last_time } pressure =
+      FracturePressureSign::not_stated;
+  bool backflow_into_borehole = false;  ///< "fluid flows back into the borehole"
+  bool backflow_into_domain = false;    ///< "a backflow of fluid into the domain" (through r = 1)
+  bool borehole_pressure_drops = false; ///< p_h falls below its peak once fractures drain it
+  std::string quote;                    ///< the paper's words, shortened
+
+  /// "3, all at r = 1": the count and where the fractures end.
+  std::string fractures_text() const;
+  std::string secondary_text() const;
+};
+
+/// Fig. 12 (Q = 0.01, iota = 1), Fig. 14 (iota = 1e3), Fig. 16 (Q = 1, iota = 1e3), Fig. 17 (Q = 1,
+/// iota = 1e6) for b = 0.2 or 0.8, and Fig. 19 (b = 0.5) at `n_particles` (2 fractures at 684, 4 above).
+PaperReading paper_reading(const std::string& figure_id, double b, long long n_particles = 0);
+
+}  // namespace hm::verification
