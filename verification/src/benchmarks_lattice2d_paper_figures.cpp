@@ -240,8 +240,9 @@ std::vector<unsigned long long> refinement_seeds(long long n, Tier tier, bool co
   return scatter ? kSeeds : std::vector<unsigned long long>{1};
 }
 
-std::string refinement_label(long long n, unsigned long long seed) {
-  return "fig19_N" + std::to_string(n) + "_seed" + std::to_string(seed);
+/// Unique over both tiers (the quick and the paper sweep share their coarsest lattice).
+std::string refinement_label(long long n, unsigned long long seed, Tier tier) {
+  return std::string(tier == Tier::quick ? "fig19_quick" : "fig19") + "_N" + std::to_string(n) + "_seed" + std::to_string(seed);
 }
 
 /// What the sweep plans, without the expansion's files (for --write-cases): the same RunCases.
@@ -252,7 +253,7 @@ std::vector<PlannedRun> planned_refinement(Tier tier) {
   std::vector<PlannedRun> runs;
   for (const RunCase& c : cases)
     for (unsigned long long seed : refinement_seeds(c.lattice.n_particles, tier, &c == &cases.front()))
-      runs.push_back({refinement_label(c.lattice.n_particles, seed), with_lattice(c, c.lattice.n_particles, seed)});
+      runs.push_back({refinement_label(c.lattice.n_particles, seed, tier), with_lattice(c, c.lattice.n_particles, seed)});
   return runs;
 }
 
@@ -304,7 +305,7 @@ BenchmarkResult run_refinement(const BenchmarkContext& ctx) {
   for (const RunCase& c : resolutions) {
     const long long n = c.lattice.n_particles;
     for (unsigned long long seed : refinement_seeds(n, ctx.tier, &c == &resolutions.front())) {
-      runs.push_back(source.run(with_lattice(c, n, seed), refinement_label(n, seed), ref));
+      runs.push_back(source.run(with_lattice(c, n, seed), refinement_label(n, seed, ctx.tier), ref));
       in_figure.push_back(seed == 1);
     }
   }
@@ -368,7 +369,7 @@ BenchmarkResult run_refinement(const BenchmarkContext& ctx) {
   if (const std::string read = source.note(); !read.empty()) res.notes.push_back(read);
   res.notes.push_back("The resolutions are the sweep case's (" + refinement_sweep(ctx.tier).filename().string() +
                       "; the paper gives only 684 and 170 158, the four between are a geometric series). Data: " +
-                      subdir + "/fig19_N<N>_seed<s>/ as `hmlattice run` writes it, runs.csv.");
+                      subdir + "/fig19[_quick]_N<N>_seed<s>/ as `hmlattice run` writes it, runs.csv.");
   return res;
 }
 
