@@ -1,5 +1,6 @@
 #include "hm/lattice2d/mechanics/far_field.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "hm/core/input_error.hpp"
@@ -24,6 +25,29 @@ void add_far_field_loads(const analytic::FarFieldStress& far, double p0, double 
   if (!(b >= 0.0 && b <= 1.0)) throw hm::InputError("b = " + core::format_value(b) + ", allowed: 0 <= b <= 1");
   conditions.outer_stress += far_field_tensor(far) + b * p0 * Eigen::Matrix2d::Identity();
   if (domain == DomainShape::annulus) conditions.inner_pressure += (1.0 - b) * p0;
+}
+
+Eigen::VectorXd annulus_displacement(const Lattice& lattice, const analytic::InSituAnnulus& exact, double youngs_modulus) {
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(3 * lattice.n_particles());
+  for (int i = 0; i < lattice.n_particles(); ++i) {
+    const Eigen::Vector2d x = lattice.points.col(i);
+    const double r = std::clamp(x.norm(), exact.inner_radius(), 1.0), theta = std::atan2(x.y(), x.x());
+    const analytic::PolarState s = exact.state(r, theta);
+    const Eigen::Vector2d er = x / x.norm(), et(-er.y(), er.x());
+    u.segment<2>(dof_index(i, 0)) = (s.u_r * er + s.u_theta * et) / youngs_modulus;
+  }
+  return without_rigid_motion(lattice, u);
+}
+
+DisplacementError displacement_error(const Lattice& lattice, const Eigen::VectorXd& u, const Eigen::VectorXd& u_ref) {
+  double sum = 0.0, largest = 0.0, scale = 0.0;
+  for (int i = 0; i < lattice.n_particles(); ++i) {
+    const double d = (u.segment<2>(dof_index(i, 0)) - u_ref.segment<2>(dof_index(i, 0))).norm();
+    sum += d * d;
+    largest = std::max(largest, d);
+    scale = std::max(scale, u_ref.segment<2>(dof_index(i, 0)).norm());
+  }
+  return {std::sqrt(sum / lattice.n_particles()) / scale, largest / scale};
 }
 
 }  // namespace hm::lattice2d

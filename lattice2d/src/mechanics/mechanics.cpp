@@ -112,6 +112,14 @@ Eigen::Vector3d rigid_motion(const Lattice& lattice, const Eigen::Matrix<double,
 
 }  // namespace
 
+Eigen::VectorXd without_rigid_motion(const Lattice& lattice, Eigen::VectorXd u) {
+  std::vector<int> all(static_cast<std::size_t>(lattice.n_particles()));
+  for (int p = 0; p < lattice.n_particles(); ++p) all[static_cast<std::size_t>(p)] = p;
+  const auto fit = rigid_fit(lattice, u, all);
+  for (int p = 0; p < lattice.n_particles(); ++p) u.segment<3>(dof_index(p, 0)) -= rigid_motion(lattice, fit, p);
+  return u;
+}
+
 namespace {
 
 // connection_forces into `forces` (resized; every entry overwritten), with beam e's parameters from

@@ -119,6 +119,11 @@ struct MechanicsSummary {
   bool is_converged() const { return info == Eigen::Success && contact_converged; }
 };
 
+/// u (3 entries per particle) minus the least-squares rigid motion of all the particles'
+/// translations: the gauge in which BeamMechanics reports a pure-traction solve, for putting a closed
+/// form in the same gauge.
+Eigen::VectorXd without_rigid_motion(const Lattice& lattice, Eigen::VectorXd u);
+
 /// The dry lattice's mechanics: assembles and factorises once, then solve() / break_beam() / solve().
 ///
 /// Rules (docs/lattice.md):
