@@ -85,6 +85,12 @@ const std::vector<PaperFigure>& paper_result_figures() {
   return figures;
 }
 
+DisplacementReading fig15_reading(double b) {
+  // Both panels: "no fractures, DEM data fit 1D FDM data" at t* = 2.3e-3 and 4.5e-3; then b = 0.2 "the
+  // displacement increases at most radial positions", b = 0.8 "the displacement is reduced at all".
+  return {.last_unbroken_t = 4.5e-3, .above_after = b < 0.5};
+}
+
 std::string PaperReading::fractures_text() const {
   if (fractures == not_stated) return "not stated";
   std::string s = std::to_string(fractures);
