@@ -49,8 +49,13 @@ GridStudy run_grid_study(const analytic::DimensionlessParameters& d, const GridS
     const std::size_t k = s.levels.size();
     return std::abs(s.levels[k - 1].p_b / s.levels[k - 2].p_b - 1.0);
   };
-  // A level without failure has p_b NaN and never counts as settled.
-  while (!(change() < plan.settled) && s.levels.back().n_r * 4 <= plan.n_r_max)
+  // Settled: p_b moved by less than plan.settled, or the wall failed on neither of the last two grids
+  // (below q_min: nothing to converge). One failing and one not is unsettled.
+  const auto settled = [&] {
+    const std::size_t k = s.levels.size();
+    return change() < plan.settled || (!s.levels[k - 1].failed && !s.levels[k - 2].failed);
+  };
+  while (!settled() && s.levels.back().n_r * 4 <= plan.n_r_max)
     s.levels.push_back(run_grid(d, s.levels.back().n_r * 4));
   s.last_change = change();
   const std::size_t k = s.levels.size();

@@ -30,7 +30,8 @@ struct GridRun {
 struct GridStudyPlan {
   std::vector<int> start = {400, 1600, 6400};  // always run: three levels give an observed order
   int n_r_max = 102400;                         // refine by 4 up to this while p_b still moves
-  double settled = 1e-3;  // stop when the last refinement moved p_b by less than this (relative)
+  double settled = 1e-3;  // stop when the last refinement moved p_b by less than this (relative), or
+                          // when the wall failed on neither of the last two grids
 };
 
 /// A grid study of p_b at one (b, Q).
