@@ -51,14 +51,15 @@ for tier in quick paper; do
   echo "$tier tier: 12 runs and 6 figures planned for $targets"
 done
 
-# 3. The verify target's plan (the quick tier's: the fig12 benchmark's six runs).
+# 3. The verify target's plan (the quick tier's: the fig12 benchmark's six runs and the fig18 benchmark's
+#    21: 3 b x 3 Q x 2 seeds and 3 with the flux-boundary node).
 smk quick "$work/out/verify_quick/cases" > "$work/plan.log" 2>&1 || { cat "$work/plan.log"; fail "planning verify's runs"; }
-[ "$(tail -n +2 "$work/out/verify_quick/cases/index.csv" | wc -l)" -eq 6 ] || fail "verify_quick/cases: not 6 runs"
+[ "$(tail -n +2 "$work/out/verify_quick/cases/index.csv" | wc -l)" -eq 27 ] || fail "verify_quick/cases: not 27 runs"
 smk quick -n -p verify > "$work/verify.log" 2>&1 || { cat "$work/verify.log"; fail "dry run of verify"; }
-[ "$(grep -cE '^rule run:' "$work/verify.log")" -eq 6 ] || { cat "$work/verify.log"; fail "verify: not 6 run jobs"; }
+[ "$(grep -cE '^rule run:' "$work/verify.log")" -eq 27 ] || { cat "$work/verify.log"; fail "verify: not 27 run jobs"; }
 grep -q "verify --tier quick --runs $work/out/verify_quick/runs --out $work/out/verify_quick/report " "$work/verify.log" ||
   { cat "$work/verify.log"; fail "verify: no report with --runs"; }
-echo "verify: 6 runs and the report with --runs planned"
+echo "verify: 27 runs and the report with --runs planned"
 
 # 4. A bad tier.
 rc=0
