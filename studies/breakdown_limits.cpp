@@ -12,7 +12,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 
 #include "hm/analytic/breakdown_limits.hpp"
 #include "hm/analytic/physical_parameters.hpp"
@@ -24,14 +23,6 @@ namespace {
 using hm::analytic::DimensionlessParameters;
 using hm::fdm1d::Fdm1dNumerics;
 
-// Time at which the borehole pressure of a flux-loaded half space, p_h = 2 q sqrt(t/(pi S)) with
-// q = Q/(2 pi R_i), reaches p: the wall-layer time scale of a fast injection.
-double half_space_time(const DimensionlessParameters& d, double p) {
-  const double q = d.Q / (2.0 * std::numbers::pi * d.R_i);
-  const double half = p / (2.0 * q);
-  return std::numbers::pi * hm::analytic::storage_coefficient(d.material) * half * half;
-}
-
 struct Breakdown {
   hm::fdm1d::WallFailure failure;
   long steps = 0;
@@ -40,14 +31,8 @@ struct Breakdown {
 
 // Runs until the wall fails (or t_end) and interpolates the failure.
 Breakdown breakdown_of(const DimensionlessParameters& d, const Fdm1dNumerics& n) {
-  bool failed = false;
   const auto start = std::chrono::steady_clock::now();
-  const auto res = hm::fdm1d::run_fdm1d(
-      d, n, {},
-      [&](const hm::fdm1d::Fdm1dResult& so_far) {
-        failed = hm::fdm1d::wall_failure_check(so_far.borehole.back(), d).ratio >= 1.0;
-      },
-      [&] { return failed; });
+  const auto res = hm::fdm1d::run_to_wall_failure(d, n);
   return {hm::fdm1d::first_wall_failure(res, d), res.summary.n_steps,
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
 }
@@ -106,7 +91,7 @@ int main() {
       DimensionlessParameters d = base;
       d.Q = Q;
       // Steps from a thousandth of the wall-layer time; a fast run fails within a few of them.
-      const double t_layer = half_space_time(d, lim.p_b_fast);
+      const double t_layer = hm::fdm1d::half_space_time_to_pressure(d, lim.p_b_fast);
       Fdm1dNumerics n = growing_steps(400, std::min(1e-4, 1e-3 * t_layer));
       n.t_end = std::min(300.0, 1e3 * t_layer);
       const Breakdown coarse = breakdown_of(d, n);
@@ -121,7 +106,7 @@ int main() {
     for (const double Q : {1.0, 10.0}) {
       DimensionlessParameters d = base;
       d.Q = Q;
-      const double t_b = half_space_time(d, lim.p_b_fast);
+      const double t_b = hm::fdm1d::half_space_time_to_pressure(d, lim.p_b_fast);
       std::printf("(c) Q = %g (t_b ~ %.3e, layer sqrt(t_b/S) ~ %.3e):\n", Q, t_b,
                   std::sqrt(t_b / hm::analytic::storage_coefficient(d.material)));
       for (const int n_r : {1000, 3000, 10000, 30000, 100000}) {
@@ -139,7 +124,7 @@ int main() {
     {
       DimensionlessParameters d = base;
       d.Q = 1.0;
-      const double t_b = half_space_time(d, lim.p_b_fast);
+      const double t_b = hm::fdm1d::half_space_time_to_pressure(d, lim.p_b_fast);
       for (const double per : {400.0, 800.0, 1600.0}) {
         Fdm1dNumerics n = growing_steps(30000, t_b / per);
         n.dt_growth = 1.0;

@@ -1,5 +1,7 @@
 #include "hm/fdm1d/wall_failure.hpp"
 
+#include <numbers>
+
 namespace hm::fdm1d {
 
 namespace an = hm::analytic;
@@ -28,6 +30,20 @@ WallFailure first_wall_failure(const Fdm1dResult& result, const an::Dimensionles
     before = c.ratio;
   }
   return f;
+}
+
+Fdm1dResult run_to_wall_failure(const an::DimensionlessParameters& params, const Fdm1dNumerics& numerics) {
+  bool failed = false;
+  return run_fdm1d(
+      params, numerics, {},
+      [&](const Fdm1dResult& so_far) { failed = wall_failure_check(so_far.borehole.back(), params).ratio >= 1.0; },
+      [&] { return failed; });
+}
+
+double half_space_time_to_pressure(const an::DimensionlessParameters& params, double p) {
+  const double q = params.Q / (2.0 * std::numbers::pi * params.R_i);
+  const double half = p / (2.0 * q);
+  return std::numbers::pi * an::storage_coefficient(params.material) * half * half;
 }
 
 }  // namespace hm::fdm1d

@@ -8,7 +8,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <vector>
 
 #include "hm/analytic/breakdown_limits.hpp"
@@ -40,22 +39,9 @@ Fdm1dNumerics to_steady(int n_r) {
 
 /// Runs until the wall meets the criteria (or t_end) and returns where it did.
 hm::fdm1d::WallFailure breakdown_of(const DimensionlessParameters& d, const Fdm1dNumerics& n) {
-  bool failed = false;
-  const Fdm1dResult res = hm::fdm1d::run_fdm1d(
-      d, n, {},
-      [&](const Fdm1dResult& so_far) {
-        failed = hm::fdm1d::wall_failure_check(so_far.borehole.back(), d).ratio >= 1.0;
-      },
-      [&] { return failed; });
+  const Fdm1dResult res = hm::fdm1d::run_to_wall_failure(d, n);
   REQUIRE((res.summary.is_success() || res.summary.status == hm::fdm1d::Fdm1dSummary::Status::interrupted));
   return hm::fdm1d::first_wall_failure(res, d);
-}
-
-/// Time at which a flux-loaded half space (p_h = 2 q sqrt(t/(pi S)), q = Q/(2 pi R_i)) reaches p: the
-/// time scale of a fast injection's failure; its layer is sqrt(t/S) thick.
-double half_space_time(const DimensionlessParameters& d, double p) {
-  const double half = p / (2.0 * d.Q / (2.0 * std::numbers::pi * d.R_i));
-  return std::numbers::pi * hm::analytic::storage_coefficient(d.material) * half * half;
 }
 
 /// Area mean of p over the annulus, (2/(1 - R_i^2)) int p r dr, by the trapezoid rule (second order).
@@ -144,7 +130,7 @@ TEST_CASE("Fast injection breaks the 1D wall at p_b_fast, at second order in dr 
   // it moves p_b by 1e-6 (first order: its share of the error is ~2e-6; study, table (d)).
   const DimensionlessParameters d = borehole(0.5, 1.0);
   const double p_b_fast = hm::analytic::fast_breakdown_pressure(d);
-  const double t_b = half_space_time(d, p_b_fast);
+  const double t_b = hm::fdm1d::half_space_time_to_pressure(d, p_b_fast);
   std::vector<double> errors;
   for (const int n_r : {10000, 30000, 100000}) {
     Fdm1dNumerics n = to_steady(n_r);

@@ -2,6 +2,7 @@
 // benchmark that throws as an error, and leaves no output folder behind when it is interrupted.
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -132,4 +133,21 @@ TEST_CASE("Figures of the same file name from two benchmarks go to separate fold
   CHECK_THAT(md, Catch::Contains("](figures/demo.paper/same.png)"));
   CHECK(std::filesystem::is_directory(options.out_dir / "figures" / "demo.quick"));
   CHECK(std::filesystem::is_directory(options.out_dir / "figures" / "demo.paper"));
+}
+
+TEST_CASE("Every result figure of the paper is drawn by a registered benchmark, each declared figure is the paper's",
+          "[verification][harness]") {
+  std::set<std::string> declared, papers;
+  for (const PaperFigure& f : paper_result_figures()) papers.insert(f.number);
+  CHECK(papers.size() == 14);  // Figs. 7, 8, 10-20 and C2
+  for (const Benchmark& b : all_benchmarks())
+    for (const std::string& f : b.paper_figures) {
+      INFO(b.id << " declares Fig. " << f);
+      CHECK(papers.count(f) == 1);
+      declared.insert(f);
+    }
+  for (const std::string& f : papers) {
+    INFO("Fig. " << f);
+    CHECK(declared.count(f) == 1);
+  }
 }

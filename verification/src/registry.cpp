@@ -14,6 +14,7 @@ const std::vector<Benchmark>& all_benchmarks() {
     add_lattice2d_borehole_fracture_benchmarks(all);
     add_lattice2d_paper_figure_benchmarks(all);
     add_insitu_benchmarks(all);
+    add_breakdown_benchmarks(all);
     return all;
   }();
   return registry;

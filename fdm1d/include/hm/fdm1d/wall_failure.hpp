@@ -29,4 +29,14 @@ struct WallFailure {
 /// to t and p_h; the steps' own error is first order (fdm1d.hpp).
 WallFailure first_wall_failure(const Fdm1dResult& result, const hm::analytic::DimensionlessParameters& params);
 
+/// Runs the 1D model from rest until its wall first meets the criteria (the step whose ratio is >= 1 is
+/// the last; status interrupted), or to numerics.t_end (status success, the wall never failed): the
+/// breakdown pressure needs nothing after the failure. Pass the result to first_wall_failure.
+Fdm1dResult run_to_wall_failure(const hm::analytic::DimensionlessParameters& params, const Fdm1dNumerics& numerics);
+
+/// The time at which the borehole pressure of a flux-loaded half space, p_h = 2 q sqrt(t/(pi S)) with
+/// q = Q/(2 pi R_i) and S = storage_coefficient, reaches p: the time scale of a fast injection's wall
+/// failure (docs/breakdown.md section 4); the pressurised layer at the wall is then sqrt(t/S) thick.
+double half_space_time_to_pressure(const hm::analytic::DimensionlessParameters& params, double p);
+
 }  // namespace hm::fdm1d

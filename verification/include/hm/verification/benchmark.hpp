@@ -120,5 +120,6 @@ void add_lattice2d_vs_fdm1d_benchmarks(std::vector<Benchmark>& into);
 void add_lattice2d_borehole_fracture_benchmarks(std::vector<Benchmark>& into);
 void add_lattice2d_paper_figure_benchmarks(std::vector<Benchmark>& into);
 void add_insitu_benchmarks(std::vector<Benchmark>& into);
+void add_breakdown_benchmarks(std::vector<Benchmark>& into);
 
 }  // namespace hm::verification
