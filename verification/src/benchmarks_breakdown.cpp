@@ -25,7 +25,6 @@
 #include "breakdown_1d.hpp"
 #include "borehole_fracture_report.hpp"
 #include "borehole_fracture_runs.hpp"
-#include "first_break_runs.hpp"
 #include "hm/analytic/biot_modulus.hpp"
 #include "hm/analytic/breakdown_limits.hpp"
 #include "hm/case/run_case.hpp"
@@ -248,7 +247,7 @@ BenchmarkResult run_fig18(const Plan& p, const BenchmarkContext& ctx) {
   BenchmarkResult res;
   const fs::path root = ctx.data_dir / p.id;
   fs::create_directories(root);
-  breakdown::FirstBreakRuns source(root, ctx.runs_dir, ctx.progress);
+  borehole_fracture::RunSource source(root, ctx.runs_dir, ctx.progress);
   const RunCase base = sweep_base_case();
 
   std::ofstream lattice_out = core::open_for_writing(root / "lattice.csv");

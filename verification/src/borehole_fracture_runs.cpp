@@ -297,8 +297,11 @@ RunOutcome run_case(const RunCase& c, const std::string& label, const fs::path& 
   int n_healed = 0;
   std::optional<ProgressReporter> reporter;
   if (progress) reporter.emplace(*progress, label, 60.0);
+  // As `hmlattice run` does with [fracture] stop_at_first_break: the step that breaks the first beam is
+  // recorded as an output time's and is the last; the run is complete then (or at t_end, unbroken).
+  const auto first_break_end = [&](const lt::CoupledModel& m) { return c.stop_at_first_break && m.n_broken() > 0; };
   const auto run = model->run(c.stepping, [&](const lt::CoupledModel& m, const lt::CoupledStepSummary& s, bool out) {
-    recorder.record(m, s, out);
+    recorder.record(m, s, out || first_break_end(m));
     if (reporter) reporter->update(m.time(), c.stepping.t_end, "broken " + std::to_string(m.n_broken()));
     const auto& states = m.mechanics().states();
     for (std::size_t e = 0; e < states.size(); ++e) {
@@ -306,12 +309,13 @@ RunOutcome run_case(const RunCase& c, const std::string& label, const fs::path& 
       if (was_broken[e] && !broken) ++n_healed;
       was_broken[e] = was_broken[e] || broken;
     }
-  });
+  }, [&] { return first_break_end(*model); });
+  const bool complete = run.is_ok() || first_break_end(*model);
   if (reporter)
-    reporter->finish(run.is_ok() ? std::to_string(run.n_steps) + " steps, " + std::to_string(run.total_iterations) +
-                                       " passes, " + std::to_string(model->n_broken()) + " broken"
-                                 : "failed: " + run.message);
-  if (!run.is_ok()) {  // the folder stays, with the series up to the failure, for a look
+    reporter->finish(complete ? std::to_string(run.n_steps) + " steps, " + std::to_string(run.total_iterations) +
+                                    " passes, " + std::to_string(model->n_broken()) + " broken"
+                              : "failed: " + run.message);
+  if (!complete) {  // the folder stays, with the series up to the failure, for a look
     RunOutcome o = describe(c, label);
     o.message = run.message;
     return o;
