@@ -143,13 +143,6 @@ std::string label(const Plan& p, double b, double Q, long long N, unsigned long 
 
 /// The 1D model's parameters for a lattice case: the calibrated lattice's nu, plane strain (as
 /// borehole_fracture::run_reference).
-an::DimensionlessParameters one_d_parameters(const RunCase& c) {
-  an::DimensionlessParameters d = c.physics.parameters;
-  d.material.nu = lt::calibrated_continuum(c.stiffness_scaling).poisson_ratio;
-  d.material.vol_strain = an::VolStrain::plane_strain;
-  return d;
-}
-
 /// n_r of a uniform 1D grid whose spacing is the lattice's mean beam length.
 int lattice_spacing_n_r(const RunCase& c) {
   const Eigen::VectorXd length = lt::generate_lattice(c.lattice).length;
@@ -293,7 +286,7 @@ BenchmarkResult run_fig18(const Plan& p, const BenchmarkContext& ctx) {
   std::vector<GridStudy> studies;
   for (double b : p.b)
     for (double Q : p.Q) {
-      an::DimensionlessParameters d = one_d_parameters(lattice_case(base, b, Q, p.N.front(), 1, false));
+      an::DimensionlessParameters d = borehole_fracture::reference_parameters(lattice_case(base, b, Q, p.N.front(), 1, false));
       studies.push_back(breakdown::run_grid_study(d, p.grid));
       if (!ctx.progress) continue;
       *ctx.progress << p.id << " 1D b = " << fmt(b) << ", Q = " << fmt(Q) << ":";
@@ -306,7 +299,7 @@ BenchmarkResult run_fig18(const Plan& p, const BenchmarkContext& ctx) {
   std::size_t next_study = 0;
   for (double b : p.b) {
     const RunCase b_case = lattice_case(base, b, p.Q.front(), p.N.front(), 1, false);
-    const an::DimensionlessParameters d_b = one_d_parameters(b_case);
+    const an::DimensionlessParameters d_b = borehole_fracture::reference_parameters(b_case);
     const an::BreakdownLimits lim = an::breakdown_limits(d_b);
     limits_csv.row({b, lim.q_min, lim.p_b_slow, lim.p_b_fast, lim.p_b_jacketed, d_b.tensile_strength});
     add_q_min_metrics(d_b, lim, res.metrics);

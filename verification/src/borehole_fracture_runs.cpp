@@ -140,10 +140,15 @@ RunOutcome describe(const RunCase& c, const std::string& label) {
 /// The 1D reference of a case: fdm1d (Appendix A, no fracture, flux-boundary borehole) with the
 /// calibrated lattice's nu and the case's E/M, plane-strain volumetric strain (as benchmarks_lattice2d_vs_fdm1d.cpp),
 /// on the case's dt sequence and output times.
-fdm1d::Fdm1dResult run_reference(const RunCase& c) {
+analytic::DimensionlessParameters reference_parameters(const RunCase& c) {
   analytic::DimensionlessParameters p = c.physics.parameters;
   p.material.nu = lt::calibrated_continuum(c.stiffness_scaling).poisson_ratio;
   p.material.vol_strain = analytic::VolStrain::plane_strain;
+  return p;
+}
+
+fdm1d::Fdm1dResult run_reference(const RunCase& c) {
+  const analytic::DimensionlessParameters p = reference_parameters(c);
   fdm1d::Fdm1dNumerics n;
   n.n_r = 400;  // steady state within ~0.2% of Appendix B; far finer than the lattice
   n.dt_initial = c.stepping.dt_initial;
@@ -166,10 +171,7 @@ fdm1d::Fdm1dResult write_reference(const RunCase& c, const fs::path& root) {
   const fdm1d::Fdm1dResult ref = run_reference(c);
   const fs::path d = root / ("fdm1d_b" + fmt(c.physics.parameters.material.b));
   fs::create_directories(d);
-  analytic::DimensionlessParameters p = c.physics.parameters;
-  p.material.nu = lt::calibrated_continuum(c.stiffness_scaling).poisson_ratio;
-  p.material.vol_strain = analytic::VolStrain::plane_strain;
-  write_fdm1d_results(d, ref, p);
+  write_fdm1d_results(d, ref, reference_parameters(c));
   return ref;
 }
 

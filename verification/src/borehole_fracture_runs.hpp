@@ -78,6 +78,10 @@ struct RunOutcome {
   std::string eq16_label;  // the folder of the same case with Eq. 16's borehole node; empty: none
 };
 
+/// The 1D model's parameters for case `c`: its physics with the calibrated lattice's nu and
+/// plane-strain volumetric strain (the lattice is a plane-strain continuum).
+analytic::DimensionlessParameters reference_parameters(const cases::RunCase& c);
+
 /// The 1D model on case `c`'s material (the calibrated lattice's nu, plane strain), dt sequence and
 /// output times, from the case's rest state when its in-situ stress is isotropic (fdm1d::RestState).
 fdm1d::Fdm1dResult run_reference(const cases::RunCase& c);
