@@ -120,9 +120,28 @@ def _prepare_out(out):
         stamp = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
         _write_atomically(os.path.join(out, MARKER), lambda path: _write_text(path, (
             f"{MARKER_FIRST_LINE}: written by the command below; `--overwrite` may replace this folder.\n"
-            f'command_line = {command}\nversion = "figures"\nutc_time = "{stamp}"\n')))
+            f'command_line = {command}\nversion = "figures"\nutc_time = "{stamp}"\nfiles = [\n]\n')))
     except OSError as e:
         _fail_writing(e.filename or out, e)
+
+
+def _list_in_marker(out, names):
+    """Add `names` (files just written into `out`) to the `files` list of out's marker, so that
+    hmlattice's --overwrite knows them as the toolkit's. A marker without a list (an older version's)
+    is left as it is: --overwrite refuses its folder anyway."""
+    marker = os.path.join(out, MARKER)
+    with open(marker, errors="replace") as f:
+        text = f.read()
+    try:
+        listed = tomllib.loads(text).get("files")
+    except tomllib.TOMLDecodeError:
+        return
+    if listed is None:
+        return
+    files = sorted(set(listed) | set(names))
+    head = text.split("\nfiles = [")[0].rstrip("\n") + "\n"
+    body = "files = [\n" + "".join(f"  {json.dumps(name)},\n" for name in files) + "]\n"
+    _write_atomically(marker, lambda path: _write_text(path, head + body))
 
 
 def _write_text(path, text):
@@ -421,4 +440,8 @@ def save(fig, out, name):
             _write_atomically(path, lambda partial: fig.savefig(partial, format=ext))
         except OSError as e:
             _fail_writing(path, e)
+    try:
+        _list_in_marker(out, [f"{name}.png", f"{name}.pdf"])
+    except OSError as e:
+        _fail_writing(os.path.join(out, MARKER), e)
     plt.close(fig)

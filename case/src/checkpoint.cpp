@@ -46,6 +46,14 @@ void write_checkpoint(const std::filesystem::path& dir, const std::string& case_
 core::StateReader read_checkpoint(const std::filesystem::path& dir, const std::string& case_text,
                                   hm::lattice2d::CoupledModel& model) {
   const std::filesystem::path path = dir / checkpoint_file_name;
+  // Only a regular file: a pipe or a link to a device would be read forever (or block).
+  std::error_code ec;
+  const std::filesystem::file_type type = std::filesystem::status(path, ec).type();
+  if (type != std::filesystem::file_type::regular && type != std::filesystem::file_type::not_found)
+    throw InputError("'" + path.string() + "' is not a regular file (" +
+                     (type == std::filesystem::file_type::directory ? std::string("a folder")
+                                                                    : std::string("a device, pipe or socket")) +
+                     "); allowed: the checkpoint file the run wrote");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError("'" + path.string() + "' cannot be read: the run wrote no checkpoint before it stopped");
   std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

@@ -19,6 +19,17 @@ double injection_pressure(const lt::CoupledModel& model) {
   return flow.has_borehole() ? flow.borehole_pressure() : flow.pressure()[flow.source_triangle()];
 }
 
+Eigen::VectorXd crack_openings(const lt::CoupledModel& model) {
+  const std::vector<lt::BeamState>& states = model.mechanics().states();
+  std::vector<int> broken;
+  for (std::size_t e = 0; e < states.size(); ++e)
+    if (states[e] != lt::BeamState::intact) broken.push_back(static_cast<int>(e));
+  Eigen::VectorXd opening = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(states.size()));
+  for (const lt::CrackOpening& o : lt::crack_opening(model.lattice(), model.displacement(), broken))
+    opening[o.beam] = o.normal_opening;
+  return opening;
+}
+
 RadialFields radial_fields(const lt::CoupledModel& model, const std::vector<double>& edges) {
   const lt::Lattice& l = model.lattice();
   const lt::DualGraph& dual = model.reference_dual();
@@ -221,6 +232,9 @@ void RunRecorder::record(const lt::CoupledModel& model, const lt::CoupledStepSum
     snapshot.displacement = model.displacement();
     snapshot.pressure = model.pressure().head(model.lattice().n_triangles());
     snapshot.beam_states = model.mechanics().states();
+    snapshot.particle_stress = model.particle_stress().stress;
+    if (fracture_) snapshot.beam_fields.push_back({"failure_ratio", model.failure_ratio()});
+    snapshot.beam_fields.push_back({"crack_opening", crack_openings(model)});
     vtk_->write(model.lattice(), model.current_dual(), snapshot);
   }
 }

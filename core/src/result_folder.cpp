@@ -14,6 +14,8 @@
 #include <stdexcept>
 #include <system_error>
 
+#include <toml.hpp>
+
 #include "hm/core/file_output.hpp"
 #include "hm/core/input_error.hpp"
 #include "hm/core/toml_text.hpp"
@@ -129,7 +131,56 @@ void report_orphaned_staging(const fs::path& parent) {
   }
 }
 
+// Every file, link and other non-folder entry under `folder`, as '/'-separated relative paths in
+// sorted order, the marker at the top left out (it is the list's own file).
+std::vector<std::string> entries_under(const fs::path& folder) {
+  std::vector<std::string> out;
+  std::error_code ec;
+  for (fs::recursive_directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+    if (it->is_directory(ec) && !it->is_symlink(ec)) continue;
+    const std::string relative = it->path().lexically_relative(folder).generic_string();
+    if (relative != result_marker_name) out.push_back(relative);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// The marker's `files` list (what the toolkit wrote into the folder); false if the marker has none,
+// as markers written before the toolkit listed its files, or cannot be read as TOML.
+bool listed_files(const fs::path& marker, std::vector<std::string>& files) {
+  try {
+    const toml::value v = toml::parse(marker.string());
+    if (!v.contains("files")) return false;
+    files = toml::find<std::vector<std::string>>(v, "files");
+    return true;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
 }  // namespace
+
+std::vector<std::string> files_not_written_by_toolkit(const fs::path& folder) {
+  std::vector<std::string> listed;
+  const bool has_list = listed_files(folder / result_marker_name, listed);
+  std::sort(listed.begin(), listed.end());
+  std::vector<std::string> foreign;
+  std::error_code ec;
+  for (fs::recursive_directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string relative = it->path().lexically_relative(folder).generic_string();
+    if (it->is_directory(ec) && !it->is_symlink(ec)) {
+      // A result folder inside (figures added to a run folder's subfolder) answers by its own list.
+      if (!is_result_folder(it->path())) continue;
+      it.disable_recursion_pending();
+      for (const std::string& f : files_not_written_by_toolkit(it->path())) foreign.push_back(relative + "/" + f);
+      continue;
+    }
+    if (relative == result_marker_name) continue;
+    if (!has_list || !std::binary_search(listed.begin(), listed.end(), relative)) foreign.push_back(relative);
+  }
+  std::sort(foreign.begin(), foreign.end());
+  return foreign;
+}
 
 bool is_result_folder(const fs::path& folder) {
   const fs::path marker = folder / result_marker_name;
@@ -171,6 +222,18 @@ ResultTarget inspect_result_target(const fs::path& target, const std::string& op
       if (!overwrite)
         refuse(option, shown, "holds an earlier hmlattice result",
                "add --overwrite to replace it, or choose another folder");
+      // --overwrite replaces what the toolkit wrote, never a file put in there since.
+      std::vector<std::string> ignored;
+      if (!listed_files(where / result_marker_name, ignored))
+        refuse(option, shown, "holds an earlier hmlattice result whose marker lists no files (an older version's)",
+               "allowed: a folder whose every file hmlattice wrote; remove it yourself, or choose another folder");
+      if (const std::vector<std::string> foreign = files_not_written_by_toolkit(where); !foreign.empty()) {
+        std::string names;
+        for (std::size_t k = 0; k < foreign.size() && k < 3; ++k) names += (k ? ", " : "") + quoted(fs::path(foreign[k]));
+        if (foreign.size() > 3) names += " and " + std::to_string(foreign.size() - 3) + " more";
+        refuse(option, shown, "holds files hmlattice did not write (" + names + "), which --overwrite would remove",
+               "allowed: move them out first, or choose another folder");
+      }
       return ResultTarget::earlier_result;
     }
     case fs::file_type::regular: refuse(option, shown, "is a file");
@@ -212,6 +275,8 @@ ResultFolder::ResultFolder(const fs::path& target, const std::string& option, bo
 }
 
 void ResultFolder::write_marker(const std::string& state) const {
+  // Listed before the marker's own temporary file appears beside them.
+  const std::vector<std::string> files = state == "running" ? std::vector<std::string>() : entries_under(staging_);
   write_file_atomically(staging_ / result_marker_name, [&](std::ostream& out) {
     out << marker_first_line << ": written by the command below; `--overwrite` may replace this folder.\n"
         << "command_line = " << toml_string(command_line_) << "\n"
@@ -222,6 +287,11 @@ void ResultFolder::write_marker(const std::string& state) const {
           << "target = " << toml_string(target_.string()) << "\n";
     else if (!state.empty())
       out << "complete = false\nstopped = " << toml_string(state) << "\n";
+    if (state != "running") {  // the folder's content is final: list it, for --overwrite's check
+      out << "files = [\n";
+      for (const std::string& f : files) out << "  " << toml_string(f) << ",\n";
+      out << "]\n";
+    }
   });
 }
 

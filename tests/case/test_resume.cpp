@@ -100,6 +100,20 @@ TEST_CASE("A checkpoint is refused, the folder untouched, when its case was edit
   CHECK(r.exit_code == 2);
   CHECK(count_lines(r.err) == 1);
   CHECK_THAT(r.err, Catch::Contains("checksum"));
+  // A checkpoint.bin that is not a regular file: a pipe (no writer: reading would block forever), a
+  // link to an endless device, a folder. Each is refused at once, naming the file.
+  for (const std::string& make : {std::string("mkfifo part/checkpoint.bin"),
+                                  std::string("ln -s /dev/zero part/checkpoint.bin"),
+                                  std::string("mkdir part/checkpoint.bin")}) {
+    INFO(make);
+    REQUIRE(std::system(("cd '" + dir.path.string() + "' && rm -rf part/checkpoint.bin && " + make).c_str()) == 0);
+    r = run_hmlattice("run --resume part", dir.path);  // a pipe without a writer would block the read
+    CHECK(r.exit_code == 2);
+    CHECK(count_lines(r.err) == 1);
+    CHECK_THAT(r.err, Catch::Contains("checkpoint.bin") && Catch::Contains("not a regular file"));
+  }
+  std::filesystem::remove_all(folder / "checkpoint.bin");
+  std::ofstream(folder / "checkpoint.bin", std::ios::binary) << checkpoint;
   // Nothing was changed by the refused attempts.
   CHECK(slurp(folder / "series.csv") == series);
   CHECK(slurp(folder / ".hmlattice") == marker);

@@ -168,6 +168,22 @@ TEST_CASE("A coupled run that does not converge exits 1 with the reason and keep
   CHECK(count_lines(hm::test::slurp(dir.path / "run" / "series.csv")) == 2);  // header and t = 0
 }
 
+TEST_CASE("A spring feedback so large that the mechanics is singular fails as a numerical failure, never a crash",
+          "[verification][cli]") {
+  // Psi = 2^63 - 1 made CHOLMOD's factorisation fail, leaving its factor supernodal; the snapshot a step
+  // takes before its first pass then read it as simplicial and crashed (SIGSEGV). Now: exit 1, one
+  // line, the folder kept and marked incomplete.
+  TempDir dir("cli-run-huge-psi");
+  dir.write("case.toml", hm::test::edited(hm::test::slurp(std::filesystem::path(HM_SOURCE_DIR) / "cases/fig12_b0.2_quick.toml"),
+                                          {{"psi = 1.3", "psi = 9223372036854775807"}, {"vtk = true", "vtk = false"}}));
+  const auto r = run_hmlattice("run case.toml --out run", dir.path);
+  INFO("stderr: " << r.err);
+  CHECK(r.exit_code == 1);
+  CHECK(count_lines(r.err) == 1);
+  CHECK_THAT(r.err, Catch::Contains("numerical failure") && Catch::Contains("not positive definite"));
+  CHECK_THAT(hm::test::slurp(dir.path / "run" / "status.toml"), Catch::Contains("complete = false"));
+}
+
 TEST_CASE("A 2D case in SI units gives the same dimensionless results as its dimensionless twin", "[verification][cli]") {
   // PorePy's scaled-vs-unscaled check through `hmlattice run`: Table 1 with k = 1e-14 m^2 and
   // q = 1e-2 m^2/s is Q = mu q/(k E) = 0.1; E/M comes from Eq. 22 in both (b = 0.5, nu = 0.25).

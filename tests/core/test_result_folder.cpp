@@ -9,6 +9,7 @@
 #include <fstream>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "folder_snapshot.hpp"
 #include "hm/core/input_error.hpp"
@@ -100,7 +101,9 @@ TEST_CASE("An earlier result is refused without --overwrite and replaced with it
   Sandbox box;
   const fs::path target = box.root / "res";
   write_result(target, "old");
-  box.write("res/figure.png", "drawn later into the result folder");
+  // Figures drawn later into a folder of their own inside it (the figure scripts give it its marker).
+  box.write("res/figures/.hmlattice", "# hmlattice result folder: figures\nfiles = [\"figure.png\"]\n");
+  box.write("res/figures/figure.png", "drawn later into the result folder");
   const auto before = folder_snapshot(box.root);
   CHECK(refusal(target) == "--out = '" + target.string() +
                                "' holds an earlier hmlattice result; add --overwrite to replace it, or choose another folder");
@@ -108,8 +111,34 @@ TEST_CASE("An earlier result is refused without --overwrite and replaced with it
   CHECK(folder_snapshot(box.root) == before);
   write_result(target, "new", true);
   CHECK(read(target / "result.csv") == "new");
-  CHECK_FALSE(fs::exists(target / "figure.png"));        // the earlier result went as a whole
+  CHECK_FALSE(fs::exists(target / "figures"));           // the earlier result went as a whole
   CHECK(folder_snapshot(box.root).size() == 3);          // res, marker, result: nothing set aside is left
+}
+
+TEST_CASE("An earlier result holding a file the toolkit did not write is refused by --overwrite, naming it", "[core]") {
+  Sandbox box;
+  const fs::path target = box.root / "res";
+  write_result(target, "old");
+  CHECK(read(target / ".hmlattice").find("files = [\n  \"result.csv\",\n]\n") != std::string::npos);
+  CHECK(hm::core::files_not_written_by_toolkit(target).empty());
+  box.write("res/my_notes.txt", "what I saw in this run");
+  box.write("res/figures/.hmlattice", "# hmlattice result folder: figures\nfiles = [\"a.png\"]\n");
+  box.write("res/figures/a.png", "a figure");
+  box.write("res/figures/b_edited.png", "the user's edit of it");
+  CHECK(hm::core::files_not_written_by_toolkit(target) ==
+        std::vector<std::string>{"figures/b_edited.png", "my_notes.txt"});
+  const auto before = folder_snapshot(box.root);
+  const std::string why = refusal(target, true);
+  CHECK(why == "--out = '" + target.string() + "' holds files hmlattice did not write ('figures/b_edited.png', "
+                                               "'my_notes.txt'), which --overwrite would remove; allowed: move them "
+                                               "out first, or choose another folder");
+  CHECK_THROWS_AS(write_result(target, "new", true), hm::InputError);
+  CHECK(folder_snapshot(box.root) == before);  // nothing removed, nothing staged beside it
+
+  // A marker that lists nothing (an older version's) cannot vouch for any file: refused as well.
+  box.write("old/.hmlattice", "# hmlattice result folder: written by the command below\n");
+  box.write("old/result.csv", "1");
+  CHECK(refusal(box.root / "old", true).find("whose marker lists no files") != std::string::npos);
 }
 
 TEST_CASE("A run that fails while replacing leaves the earlier result intact", "[core]") {

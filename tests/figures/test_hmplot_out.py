@@ -8,6 +8,7 @@ import signal
 import subprocess
 import sys
 import tempfile
+import tomllib
 import unittest
 
 FIGURES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "figures")
@@ -77,6 +78,20 @@ class FigureOut(unittest.TestCase):
         self.assertEqual(self.draw("run").returncode, 0)
         self.assertEqual(sorted(os.listdir(os.path.join(self.dir, "run"))),
                          [".hmlattice", "figure.pdf", "figure.png", "series.csv"])
+
+    def test_the_figures_join_the_markers_file_list_so_that_overwrite_knows_them(self):
+        self.write("run/.hmlattice", '# hmlattice result folder: written by the command below\n'
+                                     'command_line = "hmlattice run"\nfiles = [\n  "series.csv",\n]\n')
+        self.write("run/series.csv", "t\n0\n")
+        for _ in range(2):  # drawn twice: listed once
+            self.assertEqual(self.draw("run").returncode, 0)
+        with open(os.path.join(self.dir, "run", ".hmlattice"), "rb") as f:
+            marker = tomllib.load(f)
+        self.assertEqual(marker["command_line"], "hmlattice run")
+        self.assertEqual(marker["files"], ["figure.pdf", "figure.png", "series.csv"])
+        self.assertEqual(self.draw("figs").returncode, 0)
+        with open(os.path.join(self.dir, "figs", ".hmlattice"), "rb") as f:
+            self.assertEqual(tomllib.load(f)["files"], ["figure.pdf", "figure.png"])
 
     def test_the_users_folders_files_and_links_are_refused_and_left_as_they_were(self):
         self.write("mine/figure.png", "the user's own figure")

@@ -93,6 +93,18 @@ TEST_CASE("An earlier result is refused without --overwrite and replaced with it
   CHECK(folder_snapshot(dir.path).size() == before.size());  // nothing set aside is left over
 }
 
+TEST_CASE("An earlier result holding a file the user put there is refused by --overwrite, and nothing is removed",
+          "[verification][cli]") {
+  TempDir dir("out-overwrite-user-file");
+  REQUIRE(run_hmlattice("fdm1d " + fdm1d_case + " --out res", dir.path).exit_code == 0);
+  dir.write("res/my_notes.txt", "what I saw in this run");
+  const auto before = folder_snapshot(dir.path);
+  require_refusal(run_hmlattice("fdm1d " + fdm1d_case + " --out res --overwrite", dir.path),
+                  "--out = 'res' holds files hmlattice did not write ('my_notes.txt'), which --overwrite would "
+                  "remove; allowed: move them out first, or choose another folder");
+  CHECK(folder_snapshot(dir.path) == before);
+}
+
 TEST_CASE("An --out with a trailing slash or a 250-character name keeps the finished run", "[verification][cli]") {
   TempDir dir("out-names");
   auto r = run_hmlattice("fdm1d " + fdm1d_case + " --out res/", dir.path);

@@ -103,6 +103,14 @@ int CoupledModel::n_broken() const {
                                         [](BeamState s) { return s != BeamState::intact; }));
 }
 
+ParticleStress CoupledModel::particle_stress() const { return current_particle_stress(*mechanics_, reference_dual_); }
+
+Eigen::VectorXd CoupledModel::failure_ratio() const {
+  if (!fracture_) return {};
+  const BeamStress stress = current_beam_stress(*mechanics_, reference_dual_, fracture_->options.crack_tip);
+  return evaluate_failure(stress, fracture_->strengths, mechanics_->states()).ratio;
+}
+
 Eigen::Matrix2Xd CoupledModel::positions(const Eigen::VectorXd& u) const {
   Eigen::Matrix2Xd x = lattice().points;
   for (Eigen::Index i = 0; i < x.cols(); ++i) {

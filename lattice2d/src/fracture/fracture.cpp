@@ -79,14 +79,18 @@ void LoadSteppingOptions::validate() const {
 
 // --- break loop --------------------------------------------------------------------------------------
 
-BeamStress current_beam_stress(const BeamMechanics& mechanics, const DualGraph& dual, const CrackTipOptions& crack_tip,
-                               double stress_scale) {
-  const Lattice& lattice = mechanics.lattice();
-  assert(dual.particle_area.size() == lattice.n_particles() && "dual graph of another lattice");
+ParticleStress current_particle_stress(const BeamMechanics& mechanics, const DualGraph& dual) {
+  assert(dual.particle_area.size() == mechanics.lattice().n_particles() && "dual graph of another lattice");
   // The break loop's own path (FailureScan): connection forces, then the particle stresses of them.
   ParticleStress particle;
-  compute_particle_stress(lattice, dual, mechanics.beam_forces(), particle);
-  BeamStress stress = compute_beam_stress(lattice, particle, mechanics.states(), crack_tip);
+  compute_particle_stress(mechanics.lattice(), dual, mechanics.beam_forces(), particle);
+  return particle;
+}
+
+BeamStress current_beam_stress(const BeamMechanics& mechanics, const DualGraph& dual, const CrackTipOptions& crack_tip,
+                               double stress_scale) {
+  BeamStress stress =
+      compute_beam_stress(mechanics.lattice(), current_particle_stress(mechanics, dual), mechanics.states(), crack_tip);
   return stress_scale == 1.0 ? stress : scaled(std::move(stress), stress_scale);
 }
 

@@ -177,7 +177,9 @@ void write_vtu(const fs::path& path, const Lattice& lattice, const DualGraph& du
     for (const NamedField& f : s.particle_fields)
       w.array<double>("Float64", f.name, 1, n, [&](long i, int) { return f.values[i]; });
     out << "      </PointData>\n"
-        << "      <CellData Scalars=\"cell_kind\">\n";
+        << "      <CellData Scalars=\"cell_kind\">\n"
+        << "        <!-- cell_kind: 0 flow triangle, 1 beam. state: -1 triangle, 0 intact beam, 1 broken beam in\n"
+        << "             contact (normal spring), 2 broken beam open (no force). broken: -1 triangle, 0/1 beam. -->\n";
     w.array<std::int32_t>("Int32", "cell_kind", 1, n_cells, [&](long k, int) { return k < n_tri ? 0 : 1; });
     w.array<double>("Float64", "pressure", 1, n_cells,
                [&](long k, int) { return (k < n_tri && s.pressure.size() != 0) ? s.pressure[k] : 0.0; });

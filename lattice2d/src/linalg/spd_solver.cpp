@@ -253,10 +253,15 @@ void CholmodSolver::save_state(core::StateWriter& w) const {
   w.put("cholmod.factor_ok", impl_->factor_ok);
   // The simplicial LDL' factor as CHOLMOD holds it after updates: its column layout (p, nz, next,
   // prev) depends on how columns grew, so every array is kept, not just L's entries.
+  // Only a numeric simplicial LDL' is kept. A factorisation that failed can leave CHOLMOD's factor
+  // symbolic (no values) or in another form: it is saved as absent, and the restored solver
+  // factorises again, as this one would.
   const cholmod_factor* L = impl_->factor.get();
+  const bool numeric = L != nullptr && !L->is_super && !L->is_ll && L->xtype == CHOLMOD_REAL &&
+                       L->itype == CHOLMOD_INT && L->x != nullptr && L->nz != nullptr;
+  if (!numeric) L = nullptr;
   w.put("cholmod.has_factor", L != nullptr);
   if (L) {
-    assert(!L->is_super && !L->is_ll && L->xtype == CHOLMOD_REAL && L->itype == CHOLMOD_INT);
     const std::size_t n = L->n;
     w.put("L.n", n);
     w.put("L.minor", L->minor);
@@ -278,6 +283,38 @@ void CholmodSolver::save_state(core::StateWriter& w) const {
     w.put("forward.b", impl_->forward_b);
   }
 }
+
+namespace {
+
+// The saved factor's arrays index one another and the matrix: a damaged checkpoint whose checksum
+// still matches must be refused here, before CHOLMOD follows an index out of its arrays.
+void check_factor_arrays(const cholmod_factor& L, Eigen::Index n_rows, const std::string& source) {
+  const auto fail = [&](const std::string& what) {
+    throw InputError(source + ": the mechanics factor is inconsistent (" + what + ")");
+  };
+  const long n = static_cast<long>(L.n), nzmax = static_cast<long>(L.nzmax);
+  if (n != n_rows) fail("L.n = " + std::to_string(n) + ", the matrix has " + std::to_string(n_rows) + " rows");
+  if (static_cast<long>(L.minor) > n) fail("L.minor > n");
+  const auto* perm = static_cast<const int*>(L.Perm);
+  const auto* p = static_cast<const int*>(L.p);
+  const auto* i = static_cast<const int*>(L.i);
+  const auto* nz = static_cast<const int*>(L.nz);
+  const auto* next = static_cast<const int*>(L.next);
+  const auto* prev = static_cast<const int*>(L.prev);
+  std::vector<bool> seen(static_cast<std::size_t>(n), false);
+  for (long j = 0; j < n; ++j) {
+    if (perm[j] < 0 || perm[j] >= n || seen[static_cast<std::size_t>(perm[j])]) fail("L.Perm is not a permutation");
+    seen[static_cast<std::size_t>(perm[j])] = true;
+    if (p[j] < 0 || nz[j] < 1 || static_cast<long>(p[j]) + nz[j] > nzmax) fail("column " + std::to_string(j) + " out of L");
+    if (i[p[j]] != j) fail("column " + std::to_string(j) + " does not start on its diagonal");
+    for (int k = p[j] + 1; k < p[j] + nz[j]; ++k)
+      if (i[k] <= j || i[k] >= n) fail("row index out of range in column " + std::to_string(j));
+  }
+  for (long j = 0; j < n + 2; ++j)
+    if (next[j] < -1 || next[j] > n + 1 || prev[j] < -1 || prev[j] > n + 1) fail("column list out of range");
+}
+
+}  // namespace
 
 void CholmodSolver::restore_state(core::StateReader& r) {
   r.get_sparse("cholmod.matrix", matrix_);
@@ -328,6 +365,7 @@ void CholmodSolver::restore_state(core::StateReader& r) {
     get_ints("L.nz", L->nz, n);
     get_ints("L.next", L->next, n + 2);
     get_ints("L.prev", L->prev, n + 2);
+    check_factor_arrays(*L, n_rows, r.source());
     impl_->factor = std::move(L);
   }
   impl_->factor_ok = factor_ok && has_factor;

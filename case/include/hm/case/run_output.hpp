@@ -94,6 +94,10 @@ struct RadialFields {
 };
 RadialFields radial_fields(const hm::lattice2d::CoupledModel& model, const std::vector<double>& edges);
 
+/// Per beam, the normal opening (u_j - u_i).n_ij of a broken beam (> 0: its faces apart; over R), 0 for
+/// an intact one: the VTK snapshots' crack_opening.
+Eigen::VectorXd crack_openings(const hm::lattice2d::CoupledModel& model);
+
 /// The borehole pressure (annulus) or the source triangle's pressure (disk).
 double injection_pressure(const hm::lattice2d::CoupledModel& model);
 

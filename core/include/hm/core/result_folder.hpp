@@ -7,7 +7,9 @@
 ///   - absent: it is created (with any missing parent folders);
 ///   - an empty folder: it is filled;
 ///   - an earlier result of the toolkit, recognised by the marker file `.hmlattice` that every result
-///     folder gets: replaced only when the user asked for it (`--overwrite`), otherwise refused.
+///     folder gets: replaced only when the user asked for it (`--overwrite`), otherwise refused; and
+///     only when every file in it is one the marker lists as the toolkit's (a user's notes put in
+///     there are never removed: the folder is refused, naming them).
 /// Anything else is refused before any computing: a folder holding other files, a file, a device, a
 /// symbolic link, the working directory or a folder above it, `/` and the home directory.
 /// Results are written into a staging folder with a short fixed-length name beside the target, which
@@ -37,6 +39,11 @@ enum class ResultTarget {
 /// one line naming `option`, the path, why it is refused and what is allowed; `overwrite` allows an
 /// earlier result. Reads only: nothing is created or removed.
 ResultTarget inspect_result_target(const std::filesystem::path& target, const std::string& option, bool overwrite);
+
+/// The entries under a result folder that its marker does not list as written by the toolkit (every
+/// marker of a finished or stopped result lists its files), e.g. notes a user put in there; all of
+/// them if the marker lists nothing. '/'-separated relative paths, sorted.
+std::vector<std::string> files_not_written_by_toolkit(const std::filesystem::path& folder);
 
 /// True if `folder` holds the toolkit's marker file (a regular file whose first line is the marker's).
 bool is_result_folder(const std::filesystem::path& folder);

@@ -286,6 +286,13 @@ class CoupledModel {
   /// current ones, without dropped springs of broken beams, are mechanics().normal_springs().
   const Eigen::VectorXd& spring_stiffness() const { return springs_; }
   int n_broken() const;
+  /// Particle stresses (sigma_xx, sigma_yy, sigma_xy per column) of the last mechanical solution as the
+  /// failure check sees them: the beams' forces from the whole displacement (the rest state under an
+  /// in-situ field plus the increment since), V_i of the undeformed dual like the break loop's.
+  ParticleStress particle_stress() const;
+  /// Every beam's failure ratio under the break loop's check (max(sigma_1/T_u, sigma_CC/C_u) with the
+  /// crack-tip factor; a beam breaks at >= 1), 0 for broken beams. Empty when fracture is off.
+  Eigen::VectorXd failure_ratio() const;
 
  private:
   // The guess a pass's mechanics sees: the pressure p_g (Eq. 17) and the springs' rest state u_g (Eq. 20).

@@ -79,6 +79,11 @@ struct BreakLoopSummary {
   bool is_stable() const { return status == BreakLoopStatus::stable; }
 };
 
+/// Particle stresses of `mechanics`' current solution as the failure check sees them: the beam forces
+/// of the whole displacement (the rest state under an in-situ field plus the increment since) ->
+/// compute_particle_stress with V_i from `dual`. Precondition: dual built from mechanics.lattice().
+ParticleStress current_particle_stress(const BeamMechanics& mechanics, const DualGraph& dual);
+
 /// Beam stresses (with the crack-tip factor) of `mechanics`' current solution, times stress_scale:
 /// mechanics.beam_forces() (bit for bit compute_beam_forces' forces) -> compute_particle_stress (V_i from
 /// `dual`) -> compute_beam_stress: the functions the break loop's failure check uses.
