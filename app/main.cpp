@@ -11,7 +11,10 @@
 //
 // Exit codes: 0 success; 1 a verification check failed; 2 bad input (one line on stderr naming the
 // parameter, the value and what is allowed; nothing is written).
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
+#include <cstdlib>
 #include <iostream>
 #include <string>
 
@@ -38,9 +41,22 @@ void reject_empty_values(CLI::App& app) {
   for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) reject_empty_values(*sub);
 }
 
+// OpenMP's threads wait for their next parallel region asleep, not spinning: a spinning thread takes
+// a core from the one doing the serial work between regions, and when another process holds the
+// other core the default (spinning) threads ran a Fig. 12 case 1.4-2x slower than one thread; asleep,
+// never slower, and as fast on an idle machine (docs/performance.md). libgomp reads OMP_WAIT_POLICY
+// once, when it is loaded before main, so the program starts itself again with it set. A user's
+// own OMP_WAIT_POLICY is kept; if the restart fails the run goes on with the default.
+void restart_with_passive_openmp_waits(char** argv) {
+  if (std::getenv("OMP_WAIT_POLICY") != nullptr) return;
+  if (::setenv("OMP_WAIT_POLICY", "passive", 1) != 0) return;
+  ::execv("/proc/self/exe", argv);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  restart_with_passive_openmp_waits(argv);
   hm::cases::limit_blas_threads();  // before any factorisation: see blas_threads.hpp
   CLI::App app{"hmlattice: fluid-driven fracture in porous rock, verified (Ulven & Sun 2017)", "hmlattice"};
   app.require_subcommand(1);

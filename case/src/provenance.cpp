@@ -25,6 +25,8 @@ Provenance make_provenance(const std::string& command_line) {
   const char* omp = std::getenv("OMP_NUM_THREADS");
   p.omp_num_threads = omp ? omp : "unset";
   p.omp_max_threads = omp_get_max_threads();
+  const char* wait = std::getenv("OMP_WAIT_POLICY");
+  p.omp_wait_policy = wait ? wait : "unset";
 #if defined(__clang__)
   p.compiler = "clang " __clang_version__;
 #elif defined(__GNUC__)
@@ -50,6 +52,7 @@ std::string to_toml(const Provenance& p) {
      << "\n"
      << "omp_num_threads = " << core::toml_string(p.omp_num_threads) << "\n"
      << "omp_max_threads = " << p.omp_max_threads << "\n"
+     << "omp_wait_policy = " << core::toml_string(p.omp_wait_policy) << "\n"
      << "compiler = " << core::toml_string(p.compiler) << "\n"
      << "libc = " << core::toml_string(p.libc) << "\n";
   return os.str();

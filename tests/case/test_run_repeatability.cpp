@@ -42,16 +42,22 @@ TEST_CASE("config.toml records the BLAS and OpenMP in effect, OpenBLAS on one th
   REQUIRE(r.exit_code == 0);
   const toml::value config = toml::parse((dir.path / "run" / "config.toml").string());
   const toml::value& p = toml::find(config, "provenance");
-  for (const char* key : {"blas", "blas_core", "blas_threads", "omp_num_threads", "omp_max_threads", "compiler", "libc"})
+  for (const char* key : {"blas", "blas_core", "blas_threads", "omp_num_threads", "omp_max_threads", "omp_wait_policy",
+                          "compiler", "libc"})
     CHECK(p.contains(key));
+  // OpenMP's threads sleep between regions unless the user chose otherwise (app/main.cpp).
+  CHECK(toml::find<std::string>(p, "omp_wait_policy") == "passive");
   // This machine's libblas.so.3 is OpenBLAS (scripts/install-deps.sh): its identity is known.
   CHECK_THAT(toml::find<std::string>(p, "blas"), Catch::StartsWith("OpenBLAS"));
   CHECK(toml::find<std::string>(p, "blas_core") != "unknown");
   CHECK(toml::find<long long>(p, "blas_threads") == 1);
   CHECK(toml::find<std::string>(p, "omp_num_threads") == "1");
   CHECK(toml::find<long long>(p, "omp_max_threads") == 1);
-  // The rerun's config.toml reads the provenance it carries as provenance (ignored as input).
-  REQUIRE(run_hmlattice("run run/config.toml --out run2", dir.path).exit_code == 0);
+  // The rerun's config.toml reads the provenance it carries as provenance (ignored as input); a user's
+  // own wait policy is kept.
+  REQUIRE(run_hmlattice("run run/config.toml --out run2", dir.path, "export OMP_WAIT_POLICY=active; ").exit_code == 0);
+  CHECK(toml::find<std::string>(toml::find(toml::parse((dir.path / "run2" / "config.toml").string()), "provenance"),
+                                "omp_wait_policy") == "active");
   CHECK(slurp(dir.path / "run" / "series.csv") == slurp(dir.path / "run2" / "series.csv"));
 }
 

@@ -22,6 +22,7 @@ struct Provenance {
   int blas_threads = -1;        ///< BlasInEffect::threads; -1 unknown
   std::string omp_num_threads;  ///< the environment's OMP_NUM_THREADS, "unset" without it
   int omp_max_threads = 0;      ///< omp_get_max_threads()
+  std::string omp_wait_policy;  ///< the environment's OMP_WAIT_POLICY (hmlattice sets "passive"), "unset" without it
   std::string compiler;         ///< compiler id and version
   std::string libc;             ///< gnu_get_libc_version()
 };
