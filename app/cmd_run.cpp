@@ -182,8 +182,16 @@ void run_case(const RunArgs& a, int& exit_code, const std::string& command_line)
     core::write_stopped_status(out->path() / "status.toml", "run", why, step, model->time(), c.stepping.t_end, kept,
                                {checkpoint_step, checkpoint_t});
     out->commit(why);
-    std::cerr << "hmlattice run: " << core::one_line(why, 300) << "; the " << step << " steps done (t = "
-              << model->time() << " of " << c.stepping.t_end << ") are in " << kept.string()
+    // What usually cures a step that does not converge or a solve that fails (docs/coupling.md).
+    const std::string what_to_try =
+        interrupted ? std::string()
+                    : std::string("; to try: ") +
+                          (c.coupling.relaxation == lattice2d::CouplingRelaxation::anderson
+                               ? ""
+                               : "[coupling] relaxation = \"anderson\", ") +
+                          "a smaller [numerics] dt_initial or dt_max";
+    std::cerr << "hmlattice run: " << core::one_line(why, 300) << what_to_try << "; the " << step
+              << " steps done (t = " << model->time() << " of " << c.stepping.t_end << ") are in " << kept.string()
               << ", marked incomplete (status.toml)"
               << (checkpoint_step >= 0 ? "; continue with hmlattice run --resume " + kept.string() : std::string())
               << "\n";
@@ -215,11 +223,11 @@ void add_run_command(CLI::App& app, int& exit_code, const std::string& command_l
   resume->excludes(file)->excludes("--out")->excludes("--overwrite");
   cmd->add_option("--checkpoint-every", a->checkpoint_seconds,
                   "write a checkpoint at least every this many seconds of wall time (and at each output time; 0: every step)")
-      ->check(CLI::Range(0.0, 1e9))
+      ->check(finite_between(0.0, 1e9))
       ->capture_default_str();
   cmd->add_option("--stop-after-steps", a->stop_after_steps,
                   "stop after this many steps, as an interrupt would (checkpoint, incomplete folder, exit 0)")
-      ->check(CLI::Range(1, 100000000));
+      ->check(integer_between(1, 100000000));
   cmd->callback([a, &exit_code, command_line, file, resume] {
     if (file->count() == 0 && resume->count() == 0)
       throw InputError("run: a case file or --resume DIR is required");

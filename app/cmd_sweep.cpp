@@ -17,6 +17,7 @@
 #include "commands.hpp"
 #include "hm/case/sweep.hpp"
 #include "hm/case/sweep_collect.hpp"
+#include "hm/core/interrupt.hpp"
 #include "hm/core/result_folder.hpp"
 
 namespace hm::app {
@@ -26,13 +27,23 @@ namespace {
 struct SweepArgs {
   std::string case_file, out, folder, runs;
   bool overwrite = false;
+  long long max_combinations = cases::default_max_combinations;
 };
 
-void expand(const SweepArgs& a, const std::string& command_line) {
+void expand(const SweepArgs& a, const std::string& command_line, int& exit_code) {
   // 1. The output folder first: a refused --out is reported before any case is read.
   core::ResultFolder out(output_folder(a.out, a.case_file), "--out", a.overwrite, command_line);
-  // 2. Every combination, each read and validated by its model's reader; an error discards the folder.
-  const cases::SweepExpansion sweep = cases::expand_sweep(a.case_file, out.path());
+  // 2. Every combination, each read and validated by its model's reader; an error or Ctrl-C (SIGTERM)
+  //    discards the folder.
+  const core::InterruptRequest interrupt;
+  const cases::SweepExpansion sweep =
+      cases::expand_sweep(a.case_file, out.path(), a.max_combinations, [&] { return interrupt.signal() != 0; });
+  if (sweep.stopped) {
+    std::cerr << "hmlattice sweep expand: interrupted by " << interrupt.signal_name() << " after "
+              << sweep.combinations.size() << " of " << sweep.n_planned << " combinations; nothing written\n";
+    exit_code = interrupt.exit_code();
+    return;
+  }
   // 3. Everything appears at once.
   out.commit();
   std::cout << "sweep: " << sweep.combinations.size() << " " << sweep.model << " cases over";
@@ -52,14 +63,18 @@ void collect(const SweepArgs& a) {
 
 }  // namespace
 
-void add_sweep_command(CLI::App& app, const std::string& command_line) {
+void add_sweep_command(CLI::App& app, int& exit_code, const std::string& command_line) {
   auto a = std::make_shared<SweepArgs>();
   auto* cmd = app.add_subcommand("sweep", "Parameter studies: expand a [sweep] case, collect its runs' results");
   cmd->require_subcommand(1);
   auto* ex = cmd->add_subcommand("expand", "Write one resolved case per combination of a case's [sweep] lists, and index.csv");
   ex->add_option("case", a->case_file, "case file (TOML) with a [sweep] table")->required();
   add_output_options(*ex, a->out, a->overwrite);
-  ex->callback([a, command_line] { expand(*a, command_line); });
+  ex->add_option("--max-combinations", a->max_combinations,
+                 "refuse a sweep of more combinations than this (default " +
+                     std::to_string(cases::default_max_combinations) + ")")
+      ->check(integer_between(1, 1000000000));
+  ex->callback([a, command_line, &exit_code] { expand(*a, command_line, exit_code); });
   auto* co = cmd->add_subcommand("collect", "Print one CSV row per combination with its run's status and results");
   co->add_option("folder", a->folder, "folder written by hmlattice sweep expand")->required();
   co->add_option("--runs", a->runs, "folder holding one run folder per combination, named as its case")->required();

@@ -13,7 +13,12 @@ void add_fdm1d_command(CLI::App& app, int& exit_code, const std::string& command
 void add_run_command(CLI::App& app, int& exit_code, const std::string& command_line);
 void add_fractures_command(CLI::App& app, const std::string& command_line);
 void add_case_format_command(CLI::App& app);
-void add_sweep_command(CLI::App& app, const std::string& command_line);
+void add_sweep_command(CLI::App& app, int& exit_code, const std::string& command_line);
+
+/// Checks of a command-line value, by the case files' rules: a decimal integer in [lo, hi]; a finite
+/// number in [lo, hi]. The message names the value and the rule.
+CLI::Validator integer_between(long long lo, long long hi);
+CLI::Validator finite_between(double lo, double hi);
 
 /// Adds --out DIR and --overwrite to a command that writes a result folder.
 void add_output_options(CLI::App& cmd, std::string& out, bool& overwrite);

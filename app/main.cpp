@@ -68,7 +68,7 @@ int main(int argc, char** argv) {
   hm::app::add_fractures_command(app, joined(argc, argv));
   hm::app::add_analytic_command(app, exit_code);
   hm::app::add_case_format_command(app);
-  hm::app::add_sweep_command(app, joined(argc, argv));
+  hm::app::add_sweep_command(app, exit_code, joined(argc, argv));
   reject_empty_values(app);
 
   try {

@@ -1,5 +1,9 @@
 #include "hm/case/case_file.hpp"
 
+#include <charconv>
+#include <cmath>
+#include <limits>
+#include <system_error>
 #include <cstdio>
 #include <regex>
 #include <sstream>
@@ -24,6 +28,23 @@ void CaseTable::wrong_type(const std::string& key, const std::string& wanted) co
   fail(key + " = " + core::echo(toml::format(table_.at(key))) + ", allowed: " + wanted);
 }
 
+// toml11 reads an integer literal beyond 64 bits as the nearest limit; TOML calls such a file
+// invalid, so a limit is checked against the literal as written.
+long long CaseTable::integer_of(const toml::value& v, const std::string& key) const {
+  const long long x = v.as_integer();
+  if (x != std::numeric_limits<long long>::max() && x != std::numeric_limits<long long>::min()) return x;
+  const toml::source_location at = v.location();
+  if (at.column() < 1 || at.column() - 1 + at.region() > at.line_str().size()) return x;
+  std::string digits;
+  for (char ch : at.line_str().substr(at.column() - 1, at.region()))
+    if (ch != '_' && ch != '+') digits += ch;
+  long long parsed = 0;
+  if (std::from_chars(digits.data(), digits.data() + digits.size(), parsed).ec == std::errc::result_out_of_range)
+    fail(key + " = " + core::echo(at.line_str().substr(at.column() - 1, at.region())) +
+         ", allowed: an integer within 64 bits (-2^63 ... 2^63 - 1)");
+  return x;
+}
+
 bool CaseTable::has(const std::string& key) const { return table_.is_table() && table_.contains(key); }
 
 const toml::value* CaseTable::find(const std::string& key) {
@@ -34,9 +55,10 @@ const toml::value* CaseTable::find(const std::string& key) {
 double CaseTable::get_double(const std::string& key, double default_value) {
   const toml::value* v = find(key);
   if (!v) return default_value;
-  if (v->is_floating()) return v->as_floating();
-  if (v->is_integer()) return static_cast<double>(v->as_integer());
-  wrong_type(key, "a number");
+  if (v->is_integer()) return static_cast<double>(integer_of(*v, key));
+  // TOML's nan and inf are numbers, but no quantity of a case is: every real is finite.
+  if (v->is_floating() && std::isfinite(v->as_floating())) return v->as_floating();
+  wrong_type(key, "a finite number");
 }
 
 double CaseTable::get_double(const std::string& key) {
@@ -47,7 +69,7 @@ double CaseTable::get_double(const std::string& key) {
 long long CaseTable::get_int(const std::string& key, long long default_value) {
   const toml::value* v = find(key);
   if (!v) return default_value;
-  if (v->is_integer()) return v->as_integer();
+  if (v->is_integer()) return integer_of(*v, key);
   wrong_type(key, "an integer");
 }
 
@@ -71,12 +93,12 @@ std::vector<double> CaseTable::get_doubles(const std::string& key, const std::ve
   if (!v->is_array()) wrong_type(key, "an array of numbers");
   std::vector<double> out;
   for (const auto& x : v->as_array()) {
-    if (x.is_floating())
+    if (x.is_floating() && std::isfinite(x.as_floating()))
       out.push_back(x.as_floating());
     else if (x.is_integer())
-      out.push_back(static_cast<double>(x.as_integer()));
+      out.push_back(static_cast<double>(integer_of(x, key)));
     else
-      wrong_type(key, "an array of numbers");
+      wrong_type(key, "an array of finite numbers");
   }
   return out;
 }

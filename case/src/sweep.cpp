@@ -126,7 +126,8 @@ std::string resolved_case(const std::string& model, const fs::path& file) {
 
 }  // namespace
 
-SweepExpansion expand_sweep(const fs::path& case_file, const fs::path& folder) {
+SweepExpansion expand_sweep(const fs::path& case_file, const fs::path& folder, long long max_combinations,
+                            const std::function<bool()>& stop) {
   const std::string file = case_file.string();
   CaseFile readable(case_file);  // a missing file or malformed TOML: its one-line message
   const toml::value root = toml::parse(file);
@@ -138,12 +139,27 @@ SweepExpansion expand_sweep(const fs::path& case_file, const fs::path& folder) {
   out.command = out.model == "fdm1d" ? "fdm1d" : "run";
   const std::vector<Axis> axes = read_axes(root, file);
   for (const Axis& a : axes) out.axes.push_back(a.shown);
+  out.n_planned = 1;
+  std::string sizes;
+  for (const Axis& a : axes) {
+    out.n_planned = static_cast<long long>(std::min<double>(static_cast<double>(out.n_planned) * a.values.size(), 9e18));
+    sizes += (sizes.empty() ? "" : " x ") + std::to_string(a.values.size());
+  }
+  if (out.n_planned > max_combinations)
+    throw InputError(file + ": [sweep] " + sizes + " = " + std::to_string(out.n_planned) +
+                     " combinations, allowed: at most " + std::to_string(max_combinations) +
+                     " (--max-combinations N to allow more)");
+
+  const fs::path scratch = folder / ".combination.toml";
 
   // Every combination, the first axis slowest (an odometer over the lists).
   std::vector<std::size_t> at(axes.size(), 0);
   std::map<std::string, std::string> seen;  // name -> the assignments that made it
-  const fs::path scratch = folder / ".combination.toml";
   for (bool more = true; more;) {
+    if (stop && stop()) {
+      out.stopped = true;
+      return out;
+    }
     SweepCombination combination;
     toml::value c = root;
     c.as_table().erase("sweep");
@@ -194,6 +210,29 @@ SweepExpansion expand_sweep(const fs::path& case_file, const fs::path& folder) {
       at[i] = 0;
     }
   }
+  // The case's own value of a swept key is replaced, but it is part of the file: checked as `run`
+  // would check it, in the first combination with that one key put back (after every combination
+  // has passed, so that what fails here is that value).
+  for (std::size_t k = 0; k < axes.size(); ++k) {
+    const Axis& own = axes[k];
+    if (!root.contains(own.table) || !root.at(own.table).is_table() || !root.at(own.table).contains(own.key)) continue;
+    toml::value c = root;
+    c.as_table().erase("sweep");
+    for (std::size_t i = 0; i < axes.size(); ++i)
+      if (i != k) {
+        if (!c.contains(axes[i].table) || !c.at(axes[i].table).is_table()) c[axes[i].table] = toml::table{};
+        c[axes[i].table][axes[i].key] = axes[i].values[0];
+      }
+    core::write_file_atomically(scratch, [&](std::ostream& f) { f << toml::format(c); });
+    try {
+      resolved_case(out.model, scratch);
+    } catch (const InputError& e) {
+      std::string what = e.what();
+      if (what.rfind(scratch.string() + ": ", 0) == 0) what = what.substr(scratch.string().size() + 2);
+      throw InputError(file + ": " + what + " (the case's own value of " + own.shown.key + ", which [sweep] replaces)");
+    }
+  }
+
   fs::remove(scratch);
 
   core::write_file_atomically(folder / sweep_index_name, [&](std::ostream& f) {

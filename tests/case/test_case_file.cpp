@@ -87,7 +87,21 @@ TEST_CASE("Case errors name the file, the table, the key, the value and the rule
     CHECK(error_of(dir, "[physics_si]\nR_i = 2\nR = 1\n") == file + ": [physics_si] R_i = 2, allowed: 0 <= R_i < 1");
   }
   SECTION("wrong type") {
-    CHECK(error_of(dir, "[physics]\nQ = \"high\"\n") == file + ": [physics] Q = \"high\", allowed: a number");
+    CHECK(error_of(dir, "[physics]\nQ = \"high\"\n") == file + ": [physics] Q = \"high\", allowed: a finite number");
+  }
+  SECTION("an integer beyond 64 bits is invalid TOML, not the nearest limit") {
+    CHECK(error_of(dir, "[physics]\nQ = 9223372036854775808\n") ==
+          file + ": [physics] Q = 9223372036854775808, allowed: an integer within 64 bits (-2^63 ... 2^63 - 1)");
+    CHECK(error_of(dir, "[physics]\nQ = -9_223_372_036_854_775_809\n") ==
+          file + ": [physics] Q = -9_223_372_036_854_775_809, allowed: an integer within 64 bits (-2^63 ... 2^63 - 1)");
+    // The limit itself is an integer: refused only by Q's own rule.
+    CHECK(error_of(dir, "[physics]\nQ = 9223372036854775807\n") ==
+          file + ": [physics] Q = 9223372036854775808, allowed: 0 <= Q <= 1e+06");
+  }
+  SECTION("nan and inf are numbers to TOML, never a case's value") {
+    CHECK(error_of(dir, "[physics]\nQ = nan\n") == file + ": [physics] Q = nan, allowed: a finite number");
+    CHECK(error_of(dir, "[physics]\nb = -inf\n") == file + ": [physics] b = -inf, allowed: a finite number");
+    CHECK(error_of(dir, "[physics_si]\nq = +inf\n") == file + ": [physics_si] q = inf, allowed: a finite number");
   }
   SECTION("both physics tables") {
     CHECK(error_of(dir, "[physics]\n[physics_si]\n") ==

@@ -62,7 +62,7 @@ TEST_CASE("A key added as one table entry is read, written to config.toml and li
   CHECK(error_of(dir, "[experiment]\ncount = 12\n") == (dir.path / "toy.toml").string() +
                                                            ": [experiment] count = 12, allowed: 1 ... 9");
   CHECK_THAT(error_of(dir, "[experiment]\nthrowaway = \"x\"\n"),
-             Catch::Contains("[experiment] throwaway = \"x\", allowed: a number"));
+             Catch::Contains("[experiment] throwaway = \"x\", allowed: a finite number"));
   CHECK_THAT(error_of(dir, "[experiment]\nthrowaway_ = 1\n"),
              Catch::Contains("[experiment] unknown key 'throwaway_', allowed: count, throwaway"));
   // Written: the resolved value, and what is written reads back to the same case.

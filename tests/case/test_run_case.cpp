@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "run_command.hpp"
@@ -166,6 +167,49 @@ TEST_CASE("A coupled run that does not converge exits 1 with the reason and keep
              Catch::Contains("complete = false") && Catch::Contains("not converged after 1 passes") &&
                  Catch::Contains("last_step = 0\n"));
   CHECK(count_lines(hm::test::slurp(dir.path / "run" / "series.csv")) == 2);  // header and t = 0
+}
+
+TEST_CASE("Command-line numbers follow the case files' rules: finite, and an integer written as one",
+          "[verification][cli]") {
+  TempDir dir("cli-run-values");
+  const std::string case_file = std::string(HM_SOURCE_DIR) + "/cases/fig12_b0.2_quick.toml";
+  for (const auto& [option, message] : std::vector<std::pair<std::string, std::string>>{
+           {"--checkpoint-every nan", "--checkpoint-every: nan, allowed: 0 <= value <= 1e+09, finite"},
+           {"--checkpoint-every inf", "--checkpoint-every: inf, allowed: 0 <= value <= 1e+09, finite"},
+           {"--stop-after-steps 1e3", "--stop-after-steps: 1e3, allowed: an integer, 1 ... 100000000"},
+           {"--stop-after-steps 0", "--stop-after-steps: 0, allowed: an integer, 1 ... 100000000"}}) {
+    const auto r = run_hmlattice("run '" + case_file + "' --out run " + option, dir.path);
+    INFO(option << ": " << r.err);
+    CHECK(r.exit_code == 2);
+    CHECK(count_lines(r.err) == 1);
+    CHECK_THAT(r.err, Catch::Contains(message));
+    CHECK(dir.is_empty());
+  }
+}
+
+TEST_CASE("A fracturing borehole case of only the required keys runs to its end", "[verification][cli]") {
+  // Q, b, n_particles and t_end, with the annulus and fracture on: the defaults (Anderson's relaxation,
+  // steps growing by 1.2) run it. With Fig. 5's plain loop and constant steps (the former defaults) the
+  // first step did not converge, its oscillating pressures broke the lattice apart and the mechanics
+  // became singular after 68 passes.
+  TempDir dir("cli-run-required-keys");
+  dir.write("case.toml", "model = \"lattice2d\"\n[physics]\nQ = 0.01\nb = 0.2\n[lattice]\ndomain = \"annulus\"\n"
+                         "n_particles = 1000\n[numerics]\nt_end = 0.0272\n[fracture]\nenabled = true\n");
+  const auto r = run_hmlattice("run case.toml --out run", dir.path);
+  INFO("stderr: " << r.err);
+  REQUIRE(r.exit_code == 0);
+  const std::string config = hm::test::slurp(dir.path / "run" / "config.toml");
+  CHECK_THAT(config, Catch::Contains("relaxation = \"anderson\"") && Catch::Contains("dt_growth = 1.2"));
+  // It fractures: the borehole breaks down within t_end at Q = 0.01 (Fig. 12's setting).
+  CHECK(count_lines(hm::test::slurp(dir.path / "run" / "breaks.csv")) > 10);
+
+  // The former defaults, stated: a numerical failure that says what to try.
+  dir.write("plain.toml", hm::test::slurp(dir.path / "case.toml") + "[coupling]\nrelaxation = \"none\"\nmax_iterations = 10\n");
+  const auto plain = run_hmlattice("run plain.toml --out plain", dir.path);
+  CHECK(plain.exit_code == 1);
+  CHECK(count_lines(plain.err) == 1);
+  CHECK_THAT(plain.err, Catch::Contains("numerical failure") &&
+                            Catch::Contains("to try: [coupling] relaxation = \"anderson\", a smaller [numerics] dt_initial"));
 }
 
 TEST_CASE("A spring feedback so large that the mechanics is singular fails as a numerical failure, never a crash",

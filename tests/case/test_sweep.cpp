@@ -202,3 +202,45 @@ TEST_CASE("collect gives one row per combination with its run's status", "[case]
   CHECK_THROWS_WITH(hm::cases::collect_sweep(dir.path / "runs", dir.path / "runs", csv),
                     Catch::Contains("no readable index.csv, allowed: a folder written by hmlattice sweep expand"));
 }
+
+TEST_CASE("A sweep's size is bounded, the case's own values of swept keys are checked, and SIGTERM leaves nothing",
+          "[case][sweep]") {
+  TempDir dir("sweep-bounds");
+  // 101 x 100 = 10100 combinations: more than the default bound, refused before any is written.
+  std::string q = "[", seeds = "[";
+  for (int k = 0; k <= 100; ++k) q += (k ? ", " : "") + std::to_string(1e-3 * (k + 1));
+  for (int k = 1; k <= 100; ++k) seeds += (k > 1 ? ", " : "") + std::to_string(k);
+  const std::string big = "[sweep]\n\"physics.Q\" = " + q + "]\n\"lattice.seed\" = " + seeds + "]\n";
+  CHECK(expand_error(dir, big) == (dir.path / "s.toml").string() +
+                                      ": [sweep] 101 x 100 = 10100 combinations, allowed: at most 10000 "
+                                      "(--max-combinations N to allow more)");
+  CHECK(fs::is_empty(dir.path / "out"));
+  const auto refused = hm::test::run_hmlattice("sweep expand s.toml --out big", dir.path);
+  CHECK(refused.exit_code == 2);
+  CHECK(hm::test::count_lines(refused.err) == 1);
+  CHECK_FALSE(fs::exists(dir.path / "big"));
+
+  // The case's own b, which the sweep replaces, is still part of the file: `run` would refuse it.
+  dir.write("own.toml", hm::test::edited(lattice_case, {{"b = 0.5", "b = 1.0000001"}}) +
+                            "[sweep]\n\"physics.b\" = [0.2, 0.8]\n");
+  const auto own = hm::test::run_hmlattice("sweep expand own.toml --out own", dir.path);
+  CHECK(own.exit_code == 2);
+  CHECK_THAT(own.err, Catch::Contains("[physics] b = 1.0000001, allowed: 0 <= b <= 1 (the case's own value of "
+                                      "physics.b, which [sweep] replaces)"));
+  CHECK_FALSE(fs::exists(dir.path / "own"));
+
+  // Allowed explicitly, the big sweep starts; SIGTERM ends it with one line, exit 143, and no folder
+  // (its staging folder removed).
+  dir.write("s.toml", lattice_case + big);
+  const std::string cmd = "cd '" + dir.path.string() + "' && ('" + HMLATTICE_EXE +
+                          "' sweep expand s.toml --out big --max-combinations 20000 2> err.txt & pid=$!; sleep 1; "
+                          "kill -TERM $pid; wait $pid; echo $? > rc.txt)";
+  REQUIRE(std::system(cmd.c_str()) == 0);
+  CHECK(hm::test::slurp(dir.path / "rc.txt") == "143\n");
+  const std::string err = hm::test::slurp(dir.path / "err.txt");
+  CHECK(hm::test::count_lines(err) == 1);
+  CHECK_THAT(err, Catch::Contains("interrupted by SIGTERM after") && Catch::Contains("of 10100 combinations; nothing written"));
+  for (const auto& e : fs::directory_iterator(dir.path))
+    CHECK(e.path().filename().string().rfind(".hmlattice-staging-", 0) != 0);
+  CHECK_FALSE(fs::exists(dir.path / "big"));
+}

@@ -14,6 +14,7 @@
 /// What a sweep cannot do: sweep two keys together (zipped lists), or sweep a key outside a table
 /// (`model`) or inside a sub-table.
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -38,7 +39,12 @@ struct SweepExpansion {
   std::string command;  ///< the hmlattice command that runs each case: "run" or "fdm1d"
   std::vector<SweepAxis> axes;                  ///< in the order of the [sweep] table in the file
   std::vector<SweepCombination> combinations;   ///< the first axis varies slowest
+  long long n_planned = 0;                        ///< the product of the lists' sizes
+  bool stopped = false;                           ///< `stop` ended it before the last combination
 };
+
+/// The largest sweep expand_sweep() writes unless told otherwise (`--max-combinations`).
+inline constexpr long long default_max_combinations = 10000;
 
 /// Name of the index of an expanded sweep: columns name, command, then one per swept key.
 inline constexpr const char* sweep_index_name = "index.csv";
@@ -50,7 +56,14 @@ inline constexpr const char* sweep_index_name = "index.csv";
 /// combinations with one name — or, for a combination the model's reader refuses, its name and the
 /// reader's message ("[physics] Q = -1, allowed: 0 <= Q <= 1e6"). Files already written to `folder`
 /// are then left for the caller to discard with the folder.
-SweepExpansion expand_sweep(const std::filesystem::path& case_file, const std::filesystem::path& folder);
+/// More than `max_combinations` combinations is refused before any is written (a list typed with an
+/// extra zero must not fill a disk with case files); the case's own value of a swept key, which the
+/// sweep replaces, is checked by the reader as well (a file `run` would refuse is not expanded). `stop`
+/// is asked before each combination: when it returns true the expansion ends early with `stopped` set
+/// (the caller discards the folder).
+SweepExpansion expand_sweep(const std::filesystem::path& case_file, const std::filesystem::path& folder,
+                            long long max_combinations = default_max_combinations,
+                            const std::function<bool()>& stop = {});
 
 /// The [sweep] section of the case-format reference (markdown).
 std::string sweep_reference_markdown();
