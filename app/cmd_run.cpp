@@ -124,7 +124,7 @@ void run_case(const RunArgs& a, int& exit_code, const std::string& command_line)
   };
   double step_seconds = 0.0;  // for the ETA of the progress line
   const auto is_first_break_end = [&](const lattice2d::CoupledModel& m) {
-    return c.stop_at_first_break && m.n_broken() > 0;
+    return c.stop_at_first_break && m.n_broken() > m.n_cut();  // a beam failed (a notch's are cut)
   };
   bool stopped_at_first_break = false;
   const auto run = model->run(c.stepping, [&](const lattice2d::CoupledModel& m, const lattice2d::CoupledStepSummary& s,

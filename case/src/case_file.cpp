@@ -103,6 +103,29 @@ std::vector<double> CaseTable::get_doubles(const std::string& key, const std::ve
   return out;
 }
 
+std::vector<std::vector<double>> CaseTable::get_double_lists(const std::string& key, std::size_t size,
+                                                             const std::vector<std::vector<double>>& default_value) {
+  const toml::value* v = find(key);
+  if (!v) return default_value;
+  const std::string wanted = "an array of arrays of " + std::to_string(size) + " finite numbers";
+  if (!v->is_array()) wrong_type(key, wanted);
+  std::vector<std::vector<double>> out;
+  for (const auto& inner : v->as_array()) {
+    if (!inner.is_array() || inner.as_array().size() != size) wrong_type(key, wanted);
+    std::vector<double> values;
+    for (const auto& x : inner.as_array()) {
+      if (x.is_floating() && std::isfinite(x.as_floating()))
+        values.push_back(x.as_floating());
+      else if (x.is_integer())
+        values.push_back(static_cast<double>(integer_of(x, key)));
+      else
+        wrong_type(key, wanted);
+    }
+    out.push_back(std::move(values));
+  }
+  return out;
+}
+
 CaseTable CaseTable::table(const std::string& key) {
   const toml::value* v = find(key);
   const std::string sub = name_.empty() ? key : name_ + "." + key;

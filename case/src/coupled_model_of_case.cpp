@@ -1,5 +1,6 @@
 #include "hm/case/coupled_model_of_case.hpp"
 
+#include "hm/lattice2d/fracture/notch.hpp"
 #include "hm/lattice2d/fracture/strength.hpp"
 
 namespace hm::cases {
@@ -9,8 +10,10 @@ namespace lt = hm::lattice2d;
 std::unique_ptr<lt::CoupledModel> make_coupled_model(const RunCase& c, lt::Lattice lattice) {
   auto model = std::make_unique<lt::CoupledModel>(std::move(lattice), c.beams(), c.boundary_conditions(), c.mechanics,
                                                   c.flow_parameters(), c.coupling);
-  if (c.fracture_enabled)
+  if (c.fracture_enabled) {
     model->enable_fracture(lt::draw_beam_strengths(c.strength, model->lattice().n_beams()), c.break_loop);
+    model->cut_beams(lt::beams_crossing(model->lattice(), c.notches));
+  }
   return model;
 }
 

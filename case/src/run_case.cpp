@@ -177,10 +177,36 @@ CaseKeys<RunCase> make_run_case_keys() {
                "the crack-tip factor (L/2L_m)^(1/2) of Fig. 2")
       .real("crack_tip_length", [](auto& c) -> auto& { return c.break_loop.crack_tip.material_length; }, "> 0",
             "L_m over R, the crack-tip factor's material length")
+      .key({"notch", "list of [x0, y0, x1, y1]", "`[]`",
+            "each 4 finite numbers, two distinct ends inside the domain (at most 1 from the centre); only with enabled = true",
+            "pre-cut cracks: the beams each segment crosses are broken before the first step (breaks.csv, t = 0, "
+            "mode none)",
+            [](CaseTable& t, RunCase& c) {
+              c.notches.clear();
+              for (const std::vector<double>& v : t.get_double_lists("notch", 4, {})) {
+                lt::NotchSegment n{{v[0], v[1]}, {v[2], v[3]}};
+                const std::string shown = "notch = [" + toml_real(v[0]) + ", " + toml_real(v[1]) + ", " +
+                                          toml_real(v[2]) + ", " + toml_real(v[3]) + "]";
+                if (n.a == n.b) t.fail(shown + ", allowed: two distinct ends");
+                if (n.a.norm() > 1.0 || n.b.norm() > 1.0) t.fail(shown + ", allowed: ends inside the domain (at most 1 from the centre)");
+                c.notches.push_back(n);
+              }
+            },
+            [](const RunCase& c) {
+              std::string out = "[";
+              for (std::size_t s = 0; s < c.notches.size(); ++s) {
+                const lt::NotchSegment& n = c.notches[s];
+                out += (s ? ", [" : "[") + toml_real(n.a.x()) + ", " + toml_real(n.a.y()) + ", " + toml_real(n.b.x()) +
+                       ", " + toml_real(n.b.y()) + "]";
+              }
+              return out + "]";
+            }})
       .check([](CaseTable& fracture, CaseTable&, RunCase& c) {
         if (c.stop_at_first_break && !c.fracture_enabled)
           fracture.fail("stop_at_first_break = true, allowed: true only with enabled = true (no beam breaks with "
                         "fracture disabled)");
+        if (!c.notches.empty() && !c.fracture_enabled)
+          fracture.fail("notch given, allowed: only with enabled = true (a notch is a set of broken beams)");
         // The mean strengths and mu_i are the material's ([physics]).
         auto& st = c.strength;
         st.tensile_strength = c.physics.parameters.tensile_strength;

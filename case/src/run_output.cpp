@@ -1,5 +1,8 @@
 #include "hm/case/run_output.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include "hm/case/fracture_pressure.hpp"
 
 #include "hm/core/file_output.hpp"
@@ -195,13 +198,15 @@ void RunRecorder::record(const lt::CoupledModel& model, const lt::CoupledStepSum
     b.t_peak = model.time();
   }
   if (fracture_) {
+    // The first break is the first beam that failed: a notch's beams (mode none) were cut.
     const auto& log = model.break_log();
-    if (breaks_.empty() && !log.empty()) {
+    const auto failed = log.begin() + std::min<std::ptrdiff_t>(model.n_cut(), static_cast<std::ptrdiff_t>(log.size()));
+    if (std::isnan(b.t_first) && failed != log.end()) {
       b.t_first = model.time();
       b.p_before = last_p_h_;
       b.p_first = p_h;
-      b.x_first = log.front().position.x();
-      b.y_first = log.front().position.y();
+      b.x_first = failed->position.x();
+      b.y_first = failed->position.y();
     }
     const std::vector<lt::BreakEvent> new_breaks(log.begin() + static_cast<std::ptrdiff_t>(breaks_.size()), log.end());
     lt::write_break_log_rows(breaks_file_, new_breaks);

@@ -255,9 +255,9 @@ InjectionRun run_injection(const cases::RunCase& c, const std::filesystem::path&
   const l2::CoupledRunSummary s = model->run(
       c.stepping,
       [&](const l2::CoupledModel& m, const l2::CoupledStepSummary& step, bool out) {
-        recorder.record(m, step, out || (to_first_break && m.n_broken() > 0));
+        recorder.record(m, step, out || (to_first_break && m.n_broken() > m.n_cut()));
       },
-      [&] { return to_first_break && model->n_broken() > 0; });
+      [&] { return to_first_break && model->n_broken() > model->n_cut(); });
   recorder.finish();
   if (!s.is_ok() && s.status != l2::CoupledStatus::interrupted) throw std::runtime_error("in-situ injection run " + dir.filename().string() + ": " + s.message);
   core::write_file_atomically(dir / "config.toml", [&](std::ostream& out) {

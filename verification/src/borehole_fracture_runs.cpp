@@ -301,7 +301,7 @@ RunOutcome run_case(const RunCase& c, const std::string& label, const fs::path& 
   if (progress) reporter.emplace(*progress, label, 60.0);
   // As `hmlattice run` does with [fracture] stop_at_first_break: the step that breaks the first beam is
   // recorded as an output time's and is the last; the run is complete then (or at t_end, unbroken).
-  const auto first_break_end = [&](const lt::CoupledModel& m) { return c.stop_at_first_break && m.n_broken() > 0; };
+  const auto first_break_end = [&](const lt::CoupledModel& m) { return c.stop_at_first_break && m.n_broken() > m.n_cut(); };
   const auto run = model->run(c.stepping, [&](const lt::CoupledModel& m, const lt::CoupledStepSummary& s, bool out) {
     recorder.record(m, s, out || first_break_end(m));
     if (reporter) reporter->update(m.time(), c.stepping.t_end, "broken " + std::to_string(m.n_broken()));

@@ -98,6 +98,30 @@ void CoupledModel::enable_fracture(BeamStrengths strengths, const BreakLoopOptio
   fracture_ = std::make_unique<FractureSetup>(FractureSetup{std::move(strengths), options});
 }
 
+void CoupledModel::cut_beams(const std::vector<int>& beams) {
+  if (!fracture_) throw hm::InputError("notch: allowed only with fracture enabled");
+  if (at_rest_ || cursor_.started) throw hm::InputError("notch: allowed only before the first step");
+  const Lattice& l = lattice();
+  for (int e : beams) {
+    if (e < 0 || e >= l.n_beams())
+      throw hm::InputError("notch beam = " + std::to_string(e) + ", allowed: 0 <= beam < " + std::to_string(l.n_beams()));
+    if (mechanics_->states()[static_cast<std::size_t>(e)] != BeamState::intact)
+      throw hm::InputError("notch beam = " + std::to_string(e) + ", allowed: an intact beam (each beam once)");
+    const auto [i, j] = l.beams[static_cast<std::size_t>(e)];
+    BreakEvent cut;
+    cut.sequence = static_cast<int>(break_log_.size());
+    cut.beam = e;
+    cut.particle_i = i;
+    cut.particle_j = j;
+    cut.position = 0.5 * (l.points.col(i) + l.points.col(j));
+    cut.load = 0.0;  // before the first step; mode none, ratio 0: cut, not failed
+    mechanics_->break_beam(e);
+    break_log_.push_back(cut);
+    ++n_cut_;
+  }
+  if (!beams.empty()) flow_->set_broken(broken_flags(mechanics_->states()));
+}
+
 int CoupledModel::n_broken() const {
   return static_cast<int>(std::count_if(mechanics_->states().begin(), mechanics_->states().end(),
                                         [](BeamState s) { return s != BeamState::intact; }));

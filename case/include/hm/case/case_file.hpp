@@ -26,6 +26,9 @@ class CaseTable {
   std::string get_string(const std::string& key, const std::string& default_value);
   bool get_bool(const std::string& key, bool default_value);
   std::vector<double> get_doubles(const std::string& key, const std::vector<double>& default_value);
+  /// An array of arrays of finite numbers, each inner one of `size` entries ([[x0, y0, x1, y1], ...]).
+  std::vector<std::vector<double>> get_double_lists(const std::string& key, std::size_t size,
+                                                    const std::vector<std::vector<double>>& default_value);
   /// Marks a key as understood without reading it (e.g. [provenance] in a resolved config).
   void ignore(const std::string& key) { used_.insert(key); }
   /// A sub-table; an empty one if absent.

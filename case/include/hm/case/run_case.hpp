@@ -13,6 +13,7 @@
 #include "hm/lattice2d/coupled/coupled_model.hpp"
 #include "hm/lattice2d/flow/flow_network.hpp"
 #include "hm/lattice2d/fracture/fracture_statistics.hpp"
+#include "hm/lattice2d/fracture/notch.hpp"
 #include "hm/lattice2d/geometry/lattice.hpp"
 #include "hm/lattice2d/mechanics/mechanics.hpp"
 #include "hm/case/case_file.hpp"
@@ -71,6 +72,8 @@ struct RunCase {
   /// Beam strengths (means from [physics]) and the break loop's crack-tip rule; used when enabled.
   hm::lattice2d::StrengthSpec strength;
   hm::lattice2d::BreakLoopOptions break_loop;
+  /// Pre-cut cracks: the beams each segment crosses are broken before the first step (notch.hpp).
+  std::vector<hm::lattice2d::NotchSegment> notches;
   RunOutput output;
 
   /// The calibrated beam constants of this case's stiffness scaling.

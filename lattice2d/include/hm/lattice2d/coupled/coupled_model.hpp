@@ -220,6 +220,14 @@ class CoupledModel {
   /// options. Call before the first step.
   void enable_fracture(BeamStrengths strengths, const BreakLoopOptions& options = {});
   bool fracture_enabled() const { return fracture_ != nullptr; }
+  /// Breaks `beams` before the first step: pre-cut cracks ([fracture] notch, notch.hpp). Each becomes
+  /// open (or contact) as a break makes it, is logged at t = 0 with mode none and ratio 0 (it did not
+  /// fail), and the flow sees it as broken; the rest state (settle) is then that of the notched rock.
+  /// Throws hm::InputError without fracture enabled, after the first step, for a beam out of range or
+  /// broken already.
+  void cut_beams(const std::vector<int>& beams);
+  /// Beams broken by cut_beams (the first entries of break_log()).
+  int n_cut() const { return n_cut_; }
   /// Every break so far, in order; BreakEvent::load is the time t^{n+1} of the step that broke it.
   const std::vector<BreakEvent>& break_log() const { return break_log_; }
 
@@ -340,6 +348,7 @@ class CoupledModel {
   std::vector<BreakEvent> break_log_;
   bool unloaded_ = true;  // BoundaryConditions::is_unloaded: the rest state is u = 0
   bool at_rest_ = false;  // settle() has run
+  int n_cut_ = 0;         // pre-cut beams (cut_beams), the head of break_log_
   RunCursor cursor_;
 };
 
