@@ -71,6 +71,10 @@ Fdm1dCase read_fdm1d_case(const std::filesystem::path& file) {
     root.fail("R_i = 0, allowed: 0 < R_i < 1 (the 1D model needs a borehole)");
   fdm1d_case_keys().read(root, c);
   root.reject_unknown();
+  // The default output times are Fig. 10's, up to t* = 1: a shorter run keeps those it reaches (its
+  // t_end is always stored); times the file gives are checked as given.
+  if (!root.table("output").has("times"))
+    std::erase_if(c.numerics.output_times, [&](double t) { return t > c.numerics.t_end; });
 
   try {
     c.numerics.validate(c.physics.parameters.R_i);

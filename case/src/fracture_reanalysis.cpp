@@ -10,6 +10,8 @@
 #include "hm/core/file_output.hpp"
 #include "hm/core/toml_text.hpp"
 #include "hm/core/input_error.hpp"
+#include "hm/core/result_folder.hpp"
+#include "hm/core/result_folder.hpp"
 #include "hm/lattice2d/fracture/failure.hpp"
 #include "hm/lattice2d/geometry/lattice.hpp"
 #include "hm/lattice2d/io/vtk_writer.hpp"
@@ -37,14 +39,16 @@ std::vector<double> snapshot_times(const std::filesystem::path& file) {
   std::istringstream in(text_of(file));
   std::string line;
   std::getline(in, line);
-  if (line.rfind("t,n_broken,", 0) != 0) throw std::runtime_error(file.string() + ":1: not a fracture summary");
+  if (line.rfind("t,n_broken,", 0) != 0)
+    throw InputError(file.string() + ":1: not a fracture summary, allowed: the fracture_summary.csv `hmlattice run` wrote");
   std::vector<double> times;
   for (int line_no = 2; std::getline(in, line); ++line_no) {
     if (line.empty()) continue;
     try {
       times.push_back(std::stod(line.substr(0, line.find(','))));
     } catch (const std::logic_error&) {
-      throw std::runtime_error(file.string() + ":" + std::to_string(line_no) + ": no time in '" + line + "'");
+      throw InputError(file.string() + ":" + std::to_string(line_no) + ": no time in '" + core::echo(line) +
+                       "', allowed: the fracture_summary.csv `hmlattice run` wrote");
     }
   }
   return times;
@@ -66,6 +70,12 @@ FractureReanalysis recompute_fracture_statistics(const std::filesystem::path& ru
     if (!std::filesystem::is_regular_file(run_dir / name))
       throw InputError("run folder = " + run_dir.string() + " has no " + name +
                        ", allowed: the output folder of `hmlattice run` with [fracture] enabled");
+  // A stopped run is continued with --resume, which checks its config.toml against the checkpoint:
+  // rewriting it here would make the run impossible to continue.
+  if (!core::is_complete_result(run_dir))
+    throw InputError("run folder = " + run_dir.string() +
+                     " holds a run that has not finished (see its status.toml), allowed: a finished run; continue it "
+                     "with hmlattice run --resume " + run_dir.string() + " first");
   RunCase c = read_run_case(run_dir / "config.toml");
   if (!c.fracture_enabled)
     throw InputError("run folder = " + run_dir.string() + ": [fracture] enabled = false in its config.toml");

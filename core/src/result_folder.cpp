@@ -182,6 +182,12 @@ std::vector<std::string> files_not_written_by_toolkit(const fs::path& folder) {
   return foreign;
 }
 
+bool is_complete_result(const fs::path& folder) {
+  if (!is_result_folder(folder)) return false;
+  const fs::path marker = folder / result_marker_name;
+  return marker_value(marker, "complete") != "false" && marker_value(marker, "state") != "running";
+}
+
 bool is_result_folder(const fs::path& folder) {
   const fs::path marker = folder / result_marker_name;
   std::error_code ec;

@@ -147,3 +147,22 @@ TEST_CASE("A killed run's staging folder is reported by the next run beside it, 
   CHECK_THAT(slurp(staging / "status.toml"), Catch::Contains("last_step = " + std::to_string(flushed + 2) + "\n") &&
                                                  Catch::Contains("resume = \"hmlattice run --resume " + staging.string()));
 }
+
+TEST_CASE("A second Ctrl-C ends the run at once and says where its files are", "[case][cli]") {
+  TempDir dir("run-interrupt-twice");
+  // Two signals 30 ms apart (a pending signal absorbs an identical one) inside one step: N = 1e4,
+  // whose steps take ~0.2 s here.
+  std::string text = long_case();
+  text.replace(text.find("n_particles = 3000"), 18, "n_particles = 10000");
+  CHECK(run_and_signal(dir, "INT $pid; sleep 0.03; kill -INT", "run", text) == 130);
+  const std::string err = slurp(dir.path / "err.txt");
+  INFO(err);
+  CHECK(count_lines(err) == 1);
+  CHECK_THAT(err, Catch::Contains("hmlattice: interrupted again: ended at once") &&
+                      Catch::Contains(".hmlattice-staging-*") && Catch::Contains("hmlattice run --resume"));
+  CHECK_FALSE(std::filesystem::exists(dir.path / "run"));
+  int staged = 0;  // what was written is kept where the message says
+  for (const auto& entry : std::filesystem::directory_iterator(dir.path))
+    staged += entry.path().filename().string().rfind(".hmlattice-staging-", 0) == 0;
+  CHECK(staged == 1);
+}

@@ -122,6 +122,19 @@ TEST_CASE("hmlattice fdm1d writes its CSV files and a resolved config that rerun
   CHECK_THAT(hm::test::slurp(dir.path / "run1" / "config.toml"), Catch::Contains("E_over_M = 0.75229695454"));
 }
 
+TEST_CASE("A 1D case of only t_end = 0.5 keeps the default output times it reaches", "[verification][cli]") {
+  // The defaults are Fig. 10's times up to t* = 1; a run to 0.5 was refused over the time 1.
+  TempDir dir("cli-fdm1d-short");
+  dir.write("case.toml", "model = \"fdm1d\"\n[physics]\nQ = 0.01\nb = 0.5\n[numerics]\nn_r = 40\nt_end = 0.5\n");
+  const auto r = run_hmlattice("fdm1d case.toml --out run", dir.path);
+  INFO("stderr: " << r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK_THAT(hm::test::slurp(dir.path / "run" / "config.toml"), Catch::Contains("times = [0.025, 0.05, 0.1, 0.25]"));
+  // Times the file gives are still checked as given.
+  dir.write("late.toml", "model = \"fdm1d\"\n[physics]\nQ = 0.01\nb = 0.5\n[numerics]\nt_end = 0.5\n[output]\ntimes = [1]\n");
+  CHECK(run_hmlattice("fdm1d late.toml --out late", dir.path).exit_code == 2);
+}
+
 TEST_CASE("A case given in SI units gives the same dimensionless results as its dimensionless twin",
           "[verification][cli]") {
   // PorePy's scaled-vs-unscaled check, end to end through the command a user runs.

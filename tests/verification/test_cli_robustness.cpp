@@ -116,6 +116,22 @@ TEST_CASE("A case file behind a link loop and a damaged run folder are bad input
   dir.write("run2d.toml", "model = \"lattice2d\"\n[physics]\nQ = 0.1\nb = 0.5\nR_i = 0\n[lattice]\nn_particles = 600\n"
                           "[numerics]\ndt_initial = 5e-6\nt_end = 1e-5\n[fracture]\nenabled = true\n");
   REQUIRE(run_hmlattice("run run2d.toml --out run", dir.path).exit_code == 0);
+  const std::string breaks = hm::test::slurp(dir.path / "run" / "breaks.csv");
   dir.write("run/breaks.csv", "garbage\n");
   require_one_line_exit_2(run_hmlattice("fractures run", dir.path), "breaks.csv:1: header 'garbage', expected");
+  dir.write("run/breaks.csv", breaks);
+  // An empty fracture_summary.csv is a damaged file too (it exited 1, as if the computation failed).
+  dir.write("run/fracture_summary.csv", "");
+  require_one_line_exit_2(run_hmlattice("fractures run", dir.path), "fracture_summary.csv:1: not a fracture summary");
+
+  // A run that stopped before t_end is refused, its files untouched: rewriting its config.toml made
+  // `run --resume` refuse the checkpoint as another case's.
+  dir.write("long.toml", "model = \"lattice2d\"\n[physics]\nQ = 0.1\nb = 0.5\nR_i = 0\n[lattice]\nn_particles = 600\n"
+                         "[numerics]\ndt_initial = 5e-6\nt_end = 2e-5\n[fracture]\nenabled = true\n");
+  REQUIRE(run_hmlattice("run long.toml --out part --stop-after-steps 1", dir.path).exit_code == 0);
+  const std::string config = hm::test::slurp(dir.path / "part" / "config.toml");
+  require_one_line_exit_2(run_hmlattice("fractures part", dir.path), "holds a run that has not finished");
+  CHECK(hm::test::slurp(dir.path / "part" / "config.toml") == config);
+  CHECK(run_hmlattice("run --resume part", dir.path).exit_code == 0);
+  CHECK(run_hmlattice("fractures part", dir.path).exit_code == 0);  // finished now
 }

@@ -45,6 +45,10 @@ ResultTarget inspect_result_target(const std::filesystem::path& target, const st
 /// them if the marker lists nothing. '/'-separated relative paths, sorted.
 std::vector<std::string> files_not_written_by_toolkit(const std::filesystem::path& folder);
 
+/// True if `folder` is a result folder whose marker says it was finished: neither stopped early
+/// (`complete = false`) nor still being written (`state = "running"`, a run in progress or killed).
+bool is_complete_result(const std::filesystem::path& folder);
+
 /// True if `folder` holds the toolkit's marker file (a regular file whose first line is the marker's).
 bool is_result_folder(const std::filesystem::path& folder);
 
