@@ -51,7 +51,7 @@ TEST_CASE("Every named enum has one distinct name per value, parsed back to it",
   check_names<lt::CouplingRelaxation>(3);
   check_names<lt::FractureCheck>(2);
   check_names<lt::CouplingPredictor>(2);
-  check_names<lt::CoupledStatus>(5);
+  check_names<lt::CoupledStatus>(6);
   check_names<lt::StrengthDistribution>(3);
   check_names<lt::FractureLink>(2);
   check_names<lt::FractureKind>(2);

@@ -4,6 +4,7 @@
 // with no break it runs to t_end and says so.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <sstream>
 #include <string>
@@ -163,4 +164,74 @@ TEST_CASE("A stop_at_first_break run in which nothing breaks goes to t_end and s
   CHECK(cells_of(lines_of(slurp(dir.path / "run/breakdown.csv"))[1])[0] == "nan");
   CHECK(cells_of(lines_of(slurp(dir.path / "run/series.csv")).back())[0] == "0.0001");
   CHECK_THAT(slurp(dir.path / "run/.hmlattice"), !Catch::Contains("complete = false"));
+}
+
+namespace {
+
+// The Fig. 12 quick case (N = 3000) checked at converged states, ended at its first break, with
+// constant steps dt and the given overshoot tolerance.
+std::string first_break_case(const std::string& dt, const std::string& tolerance) {
+  return hm::test::edited(slurp(std::filesystem::path(HM_SOURCE_DIR) / "cases/fig12_b0.2_quick.toml"),
+                          {{"[coupling]\n", "[coupling]\nfracture_check = \"at_convergence\"\n"},
+                           {"dt_initial = 1e-5", "dt_initial = " + dt},
+                           {"dt_max = 5e-4", "dt_max = " + dt},
+                           {"[numerics]\n", "[numerics]\novershoot_tolerance = " + tolerance + "\n"},
+                           {"vtk = true", "vtk = false"},
+                           {"enabled = true\n", "enabled = true\nstop_at_first_break = true\n"}});
+}
+
+struct FirstBreak {
+  double t, p, ratio;
+  std::string breaks;
+};
+
+FirstBreak first_break(const TempDir& dir, const std::string& name, const std::string& dt, const std::string& tolerance) {
+  dir.write(name + ".toml", first_break_case(dt, tolerance));
+  const auto r = run_hmlattice("run " + name + ".toml --out " + name, dir.path);
+  INFO(name << ": " << r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto breakdown = lines_of(slurp(dir.path / name / "breakdown.csv"));
+  const std::string breaks = slurp(dir.path / name / "breaks.csv");
+  std::vector<std::string> b, e;
+  std::istringstream bd(breakdown.at(1)), first(lines_of(breaks).at(1));
+  for (std::string cell; std::getline(bd, cell, ',');) b.push_back(cell);
+  for (std::string cell; std::getline(first, cell, ',');) e.push_back(cell);
+  return {std::stod(b.at(0)), std::stod(b.at(2)), std::stod(e.at(9)), breaks};
+}
+
+}  // namespace
+
+TEST_CASE("With an overshoot tolerance the first break happens within it of the threshold, whatever the step",
+          "[case][fracture]") {
+  TempDir dir("overshoot");
+  // Without it the first break lands wherever the step ends: ratio 2.18 at dt = 2e-4, 1.72 at 1e-4
+  // (p_h 2.18e-4 against 1.88e-4), so halving the step moves the breakdown pressure by 16%.
+  const FirstBreak coarse = first_break(dir, "coarse", "2e-4", "0");
+  const FirstBreak fine = first_break(dir, "fine", "1e-4", "0");
+  CHECK(coarse.ratio > 1.5);
+  CHECK(std::abs(coarse.p - fine.p) > 0.1 * fine.p);
+  // With 2%: the step that overshoots is undone and halved until its first break is within 2% (here
+  // 1.0101 after four and three halvings: t* = 1.25e-5, p_h = 1.357e-4 from both), and the breakdown
+  // pressure no longer depends on the step.
+  const FirstBreak coarse_retried = first_break(dir, "coarse_retried", "2e-4", "0.02");
+  const FirstBreak fine_retried = first_break(dir, "fine_retried", "1e-4", "0.02");
+  CHECK(coarse_retried.ratio <= 1.02);
+  CHECK(fine_retried.ratio <= 1.02);
+  CHECK(std::abs(coarse_retried.p - fine_retried.p) <= 0.02 * fine_retried.p);
+  // The retried step is the step of that length taken in the first place: a run at the halved step
+  // gives the same break log bit for bit (a failed attempt leaves no trace).
+  std::ostringstream dt;
+  dt.precision(17);
+  dt << fine_retried.t;
+  const FirstBreak halved = first_break(dir, "halved", dt.str(), "0");
+  CHECK(halved.t == fine_retried.t);
+  CHECK(halved.breaks == fine_retried.breaks);
+
+  // Checked on every pass, a first break overshoots through the unconverged iterate itself (14% at
+  // dt -> 0 here), which no halving removes: the tolerance is refused there.
+  dir.write("every.toml", hm::test::edited(first_break_case("1e-4", "0.02"), {{"fracture_check = \"at_convergence\"\n", ""}}));
+  const auto r = run_hmlattice("run every.toml --out every", dir.path);
+  CHECK(r.exit_code == 2);
+  CHECK(count_lines(r.err) == 1);
+  CHECK_THAT(r.err, Catch::Contains("[numerics] overshoot_tolerance = 0.02, allowed: 0 unless [coupling] fracture_check"));
 }

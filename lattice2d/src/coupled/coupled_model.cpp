@@ -42,6 +42,8 @@ void TimeStepping::validate() const {
     throw hm::InputError("numerics.max_step_halvings = " + std::to_string(max_step_halvings) + ", allowed: 0 ... 50");
   if (!(dt_max >= dt_initial))
     throw hm::InputError("numerics.dt_max = " + format_value(dt_max) + ", allowed: >= dt_initial = " + format_value(dt_initial));
+  if (!(overshoot_tolerance >= 0.0 && overshoot_tolerance < 1.0))
+    throw hm::InputError("numerics.overshoot_tolerance = " + format_value(overshoot_tolerance) + ", allowed: 0 <= value < 1");
   require_feasible_stepping(dt_initial, dt_growth, dt_max, t_end, "numerics.");
   for (std::size_t k = 0; k < output_times.size(); ++k) {
     const double t = output_times[k];
@@ -193,7 +195,7 @@ CoupledStepSummary CoupledModel::settle() {
 
 // One time step (Fig. 5): predict the guess, then passes of mechanics (with the break loop) and flow
 // until the guess stops changing, then accept the step or restore t^n.
-CoupledStepSummary CoupledModel::step(double dt) {
+CoupledStepSummary CoupledModel::step(double dt, double overshoot_tolerance) {
   if (!(dt > 0.0 && std::isfinite(dt)))
     throw hm::InputError("dt = " + hm::core::format_value(dt) + ", allowed: > 0, finite");
   if (!at_rest_) {
@@ -213,7 +215,15 @@ CoupledStepSummary CoupledModel::step(double dt) {
   save_model_state(at_start);
   PassGuess guess = predict(dt);
   DualGraph dual;
+  const std::size_t breaks_before = break_log_.size();
   const bool converged = iterate(dt, guess, dual, summary);
+  if (converged && overshoot_tolerance > 0.0 && break_log_.size() > breaks_before &&
+      break_log_[breaks_before].ratio > 1.0 + overshoot_tolerance) {
+    summary.status = CoupledStatus::overshoot;
+    summary.message = "first break at t = " + hm::core::format_value(summary.time) + " at failure ratio " +
+                      hm::core::format_value(break_log_[breaks_before].ratio) + ", above 1 + overshoot_tolerance (" +
+                      hm::core::format_value(overshoot_tolerance) + ")";
+  }
   finish_step(dt, converged, std::move(dual), summary);
   if (!summary.is_ok()) {
     core::StateReader snapshot(at_start.bytes(), "the state at t = " + hm::core::format_value(time()));
@@ -335,7 +345,7 @@ bool CoupledModel::solve_flow(double dt, int pass, const Eigen::VectorXd& u, Dua
 }
 
 void CoupledModel::finish_step(double dt, bool converged, DualGraph dual, CoupledStepSummary& summary) {
-  if (summary.status != CoupledStatus::solver_failure) {
+  if (summary.status != CoupledStatus::solver_failure && summary.status != CoupledStatus::overshoot) {
     if (converged) {
       summary.status = CoupledStatus::converged;
     } else if (options_.accept_unconverged) {
@@ -404,15 +414,21 @@ CoupledRunSummary CoupledModel::run(const TimeStepping& stepping, const Observer
     const double t_out = outputs[c.next_output];
     double dt = std::min(c.dt_nominal, t_out - time());
     if (t_out - (time() + dt) < snap) dt = t_out - time();
-    CoupledStepSummary s = step(dt);
-    run.total_iterations += s.iterations;
     // A coupling loop that did not converge is retried with half the step (fewer breaks per step,
-    // a milder change of the contact set), up to max_step_halvings times.
-    for (int h = 0; s.status == CoupledStatus::not_converged && h < stepping.max_step_halvings; ++h) {
+    // a milder change of the contact set), up to max_step_halvings times; so is a step whose first
+    // break went past its threshold by more than overshoot_tolerance, whose last try is accepted.
+    const auto tolerance = [&](int halvings) {
+      return halvings < stepping.max_step_halvings ? stepping.overshoot_tolerance : 0.0;
+    };
+    CoupledStepSummary s = step(dt, tolerance(0));
+    run.total_iterations += s.iterations;
+    for (int h = 0; (s.status == CoupledStatus::not_converged || s.status == CoupledStatus::overshoot) &&
+                    h < stepping.max_step_halvings;
+         ++h) {
       dt *= 0.5;
       c.dt_nominal = dt;
       ++run.n_step_halvings;
-      s = step(dt);
+      s = step(dt, tolerance(h + 1));
       run.total_iterations += s.iterations;
     }
     run.status = s.status;

@@ -124,6 +124,12 @@ struct TimeStepping {
   /// of its state (CoupledModel::step), so the retry breaks what the shorter step breaks.
   /// Allowed: 0 ... 50.
   int max_step_halvings = 8;
+  /// > 0: a step whose first break has failure ratio above 1 + this (the time-driven load went past
+  /// the beam's threshold within the step) is retried with half the step, like one that does not
+  /// converge, up to max_step_halvings times; the last try is accepted. Breakdown then happens within
+  /// this of the critical load whatever dt_max is. 0: off (every first break accepted, as the
+  /// paper's steps). Allowed: 0 <= value < 1.
+  double overshoot_tolerance = 0.0;
   /// Times at which run() calls its observer besides t = 0 (steps are shortened to land on them).
   /// Allowed: strictly increasing, in (0, t_end]; t_end is always an output.
   std::vector<double> output_times;
@@ -139,11 +145,13 @@ enum class CoupledStatus {
   not_converged,   ///< max_iterations hit: the step was not taken
   solver_failure,  ///< the mechanics or the flow solve failed: the step was not taken
   interrupted,     ///< run() stopped between steps because its stop request said so
+  overshoot,       ///< its first break was above 1 + overshoot_tolerance: the step was not taken
 };
 constexpr auto enum_names(CoupledStatus) {
   return core::enum_table<CoupledStatus>({
       {CoupledStatus::converged, "converged"}, {CoupledStatus::accepted_unconverged, "accepted unconverged"},
       {CoupledStatus::not_converged, "not converged"}, {CoupledStatus::solver_failure, "solver failure"},
+      {CoupledStatus::overshoot, "overshoot"},
       {CoupledStatus::interrupted, "interrupted"}});
 }
 
@@ -234,7 +242,7 @@ class CoupledModel {
   /// One coupled step of length dt > 0. On failure (status not_converged or solver_failure) the state
   /// is restored to t^n bit for bit, breaks of the failed attempt included; the summary says why.
   /// The first call (or run()) first brings the model to rest (settle).
-  CoupledStepSummary step(double dt);
+  CoupledStepSummary step(double dt, double overshoot_tolerance = 0.0);
 
   /// The state at rest before injection: the drained equilibrium (p = 0, the deviation from p0, and
   /// no Eq. 20 springs) under the constant boundary loads, e.g. the in-situ far field, with the break
