@@ -209,6 +209,14 @@ ResultTarget inspect_result_target(const fs::path& target, const std::string& op
   if (const char* home = std::getenv("HOME"); home && *home && canonical_or_empty(home) == where)
     refuse(option, shown, "is the home directory");
 
+  // Every name on the way must be one the file system takes: caught here, not when the finished run
+  // is moved into place.
+  const long name_max = ::pathconf("/", _PC_NAME_MAX) > 0 ? ::pathconf("/", _PC_NAME_MAX) : 255;
+  for (const fs::path& part : where)
+    if (static_cast<long>(part.string().size()) > name_max)
+      refuse(option, shown, "has a name of " + std::to_string(part.string().size()) + " characters",
+             "allowed: names of at most " + std::to_string(name_max) + " characters");
+
   std::error_code ec;
   const fs::file_status st = fs::symlink_status(where, ec);
   switch (st.type()) {

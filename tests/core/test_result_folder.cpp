@@ -171,6 +171,12 @@ TEST_CASE("Files, links, devices, pipes, the working directory, folders above it
           "result with --overwrite");
     CHECK(refusal("/", overwrite).find("is the root folder") != std::string::npos);
     CHECK(refusal("", overwrite).find("--out = '' is empty") == 0);
+    // A name the file system cannot take, under a new parent: refused before any computing (it was
+    // found only when the finished run was moved into place).
+    CHECK(refusal(box.root / "new" / std::string(256, 'x'), overwrite).find("has a name of 256 characters") !=
+          std::string::npos);
+    CHECK(refusal(box.root / std::string(256, 'y') / "run", overwrite).find("allowed: names of at most 255 characters") !=
+          std::string::npos);
   }
   CHECK(folder_snapshot(box.root) == before);
 
