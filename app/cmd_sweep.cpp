@@ -57,8 +57,13 @@ void collect(const SweepArgs& a) {
   std::ostringstream csv;
   const cases::SweepCollectCounts n = cases::collect_sweep(a.folder, a.runs, csv);
   std::cout << csv.str();
-  std::cerr << "sweep collect: " << n.complete + n.incomplete + n.missing << " combinations: " << n.complete
-            << " complete, " << n.incomplete << " incomplete, " << n.missing << " missing\n";
+  std::cerr << "sweep collect: " << n.complete + n.incomplete + n.missing + n.other_case << " combinations: " << n.complete
+            << " complete, " << n.incomplete << " incomplete, " << n.missing << " missing"
+            << (n.other_case > 0 ? ", " + std::to_string(n.other_case) +
+                                       " of another case (status 'other case': made before the sweep changed? remove "
+                                       "them to have them redone)"
+                                 : std::string())
+            << "\n";
 }
 
 }  // namespace

@@ -9,6 +9,8 @@
 #include <toml.hpp>
 #include <vector>
 
+#include "hm/case/fdm1d_case.hpp"
+#include "hm/case/run_case.hpp"
 #include "hm/case/sweep.hpp"
 #include "hm/core/input_error.hpp"
 #include "hm/core/result_folder.hpp"
@@ -96,6 +98,22 @@ std::string run_folder_status(const fs::path& run) {
   return "complete";
 }
 
+namespace {
+
+// True if the finished run in `run` is of the case `combination` (an expanded sweep's file): both read
+// and resolved by the model's reader, provenance aside. A config.toml that does not read is not.
+bool runs_combination(const fs::path& combination, const fs::path& run, const std::string& command) {
+  try {
+    if (command == "fdm1d")
+      return fdm1d_case_to_toml(read_fdm1d_case(combination), "") == fdm1d_case_to_toml(read_fdm1d_case(run / "config.toml"), "");
+    return run_case_to_toml(read_run_case(combination), "") == run_case_to_toml(read_run_case(run / "config.toml"), "");
+  } catch (const InputError&) {
+    return false;
+  }
+}
+
+}  // namespace
+
 SweepCollectCounts collect_sweep(const fs::path& sweep_folder, const fs::path& runs_folder, std::ostream& csv) {
   const std::vector<Row> index = read_csv(sweep_folder / sweep_index_name);
   if (index.empty() || index.front().size() < 2 || index.front()[0] != "name" || index.front()[1] != "command")
@@ -109,8 +127,14 @@ SweepCollectCounts collect_sweep(const fs::path& sweep_folder, const fs::path& r
   for (std::size_t i = 1; i < index.size(); ++i) {
     const fs::path run = runs_folder / index[i][0];
     status.push_back(run_folder_status(run));
+    if (status.back() == "complete" &&
+        !runs_combination(sweep_folder / (index[i][0] + ".toml"), run, index[i].size() > 1 ? index[i][1] : "run"))
+      status.back() = "other case";
     results.push_back(status.back() == "complete" ? run_results(run, columns) : std::map<std::string, std::string>{});
-    ++(status.back() == "complete" ? counts.complete : status.back() == "missing" ? counts.missing : counts.incomplete);
+    ++(status.back() == "complete"     ? counts.complete
+       : status.back() == "missing"    ? counts.missing
+       : status.back() == "other case" ? counts.other_case
+                                       : counts.incomplete);
   }
 
   csv << "name";

@@ -184,7 +184,9 @@ TEST_CASE("collect gives one row per combination with its run's status", "[case]
   fs::create_directories(done);
   fs::create_directories(stopped);
   std::ofstream(done / ".hmlattice") << "# hmlattice result folder: x\nutc_time = \"2026-12-03T10:00:07Z\"\n";
-  std::ofstream(done / "config.toml") << "[provenance]\nutc_time = \"2026-12-03T10:00:00Z\"\n";
+  // Its config.toml: the combination's case, as `hmlattice run` resolves it, with the provenance.
+  std::ofstream(done / "config.toml") << hm::test::slurp(dir.path / "cases" / "Q=0.01.toml")
+                                      << "[provenance]\nutc_time = \"2026-12-03T10:00:00Z\"\n";
   std::ofstream(done / "breakdown.csv") << "t_first_break,p_h_first_break\n0.001,0.0002\n";
   std::ofstream(done / "fracture_summary.csv") << "t,n_arms\n0,0\n0.002,4\n";
   std::ofstream(stopped / ".hmlattice") << "# hmlattice result folder: x\ncomplete = false\n";
@@ -201,6 +203,18 @@ TEST_CASE("collect gives one row per combination with its run's status", "[case]
         "Q=1,1,missing,,,,,\n");
   CHECK_THROWS_WITH(hm::cases::collect_sweep(dir.path / "runs", dir.path / "runs", csv),
                     Catch::Contains("no readable index.csv, allowed: a folder written by hmlattice sweep expand"));
+
+  // A finished run of another case in a combination's folder (made before the sweep was changed) is
+  // never listed under the combination's values: it was "complete" with Q = 1's results.
+  const fs::path other = dir.path / "runs" / "Q=1";
+  fs::create_directories(other);
+  for (const char* f : {".hmlattice", "breakdown.csv", "fracture_summary.csv", "config.toml"})
+    fs::copy_file(done / f, other / f);
+  std::ostringstream again;
+  const auto m = hm::cases::collect_sweep(dir.path / "cases", dir.path / "runs", again);
+  CHECK(m.complete == 1);
+  CHECK(m.other_case == 1);
+  CHECK_THAT(again.str(), Catch::EndsWith("Q=1,1,other case,,,,,\n"));
 }
 
 TEST_CASE("A sweep's size is bounded, the case's own values of swept keys are checked, and SIGTERM leaves nothing",
