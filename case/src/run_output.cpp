@@ -143,6 +143,14 @@ RunRecorder::RunRecorder(const std::filesystem::path& dir, const RunCase& c, con
     written.push_back({t, vtk_files.substr(from, to - from)});
     from = to + 1;
   }
+  // The snapshots written before the stop are part of the result as the CSV files are: a run
+  // continued without one would be complete but for it.
+  if (output_.vtk)
+    for (const lt::PvdEntry& e : written)
+      if (!std::filesystem::is_regular_file(dir / "vtk" / e.file))
+        throw InputError("'" + (dir / "vtk" / e.file).string() +
+                         "' is missing; allowed: the run folder as the stopped run left it (rerun the case "
+                         "from its config.toml instead)");
 
   series_file_ = core::open_for_appending(dir / "series.csv", static_cast<std::uintmax_t>(sizes[0]));
   radial_file_ = core::open_for_appending(dir / "radial.csv", static_cast<std::uintmax_t>(sizes[1]));

@@ -114,6 +114,14 @@ TEST_CASE("A checkpoint is refused, the folder untouched, when its case was edit
   }
   std::filesystem::remove_all(folder / "checkpoint.bin");
   std::ofstream(folder / "checkpoint.bin", std::ios::binary) << checkpoint;
+  // A snapshot the user removed: the run would complete without it. Refused, naming it.
+  const std::string snapshot = slurp(folder / "vtk" / "lattice_0000.vtu");
+  std::filesystem::remove(folder / "vtk" / "lattice_0000.vtu");
+  r = run_hmlattice("run --resume part", dir.path);
+  CHECK(r.exit_code == 2);
+  CHECK(count_lines(r.err) == 1);
+  CHECK_THAT(r.err, Catch::Contains("vtk/lattice_0000.vtu' is missing"));
+  std::ofstream(folder / "vtk" / "lattice_0000.vtu", std::ios::binary) << snapshot;
   // Nothing was changed by the refused attempts.
   CHECK(slurp(folder / "series.csv") == series);
   CHECK(slurp(folder / ".hmlattice") == marker);
