@@ -45,6 +45,14 @@ long long CaseTable::integer_of(const toml::value& v, const std::string& key) co
   return x;
 }
 
+// One number of `key`'s value (the value itself or an array element): an integer, or a finite real.
+double CaseTable::finite_number(const toml::value& x, const std::string& key, const std::string& wanted) const {
+  if (x.is_integer()) return static_cast<double>(integer_of(x, key));
+  // TOML's nan and inf are numbers, but no quantity of a case is: every real is finite.
+  if (x.is_floating() && std::isfinite(x.as_floating())) return x.as_floating();
+  wrong_type(key, wanted);
+}
+
 bool CaseTable::has(const std::string& key) const { return table_.is_table() && table_.contains(key); }
 
 const toml::value* CaseTable::find(const std::string& key) {
@@ -55,10 +63,7 @@ const toml::value* CaseTable::find(const std::string& key) {
 double CaseTable::get_double(const std::string& key, double default_value) {
   const toml::value* v = find(key);
   if (!v) return default_value;
-  if (v->is_integer()) return static_cast<double>(integer_of(*v, key));
-  // TOML's nan and inf are numbers, but no quantity of a case is: every real is finite.
-  if (v->is_floating() && std::isfinite(v->as_floating())) return v->as_floating();
-  wrong_type(key, "a finite number");
+  return finite_number(*v, key, "a finite number");
 }
 
 double CaseTable::get_double(const std::string& key) {
@@ -92,14 +97,7 @@ std::vector<double> CaseTable::get_doubles(const std::string& key, const std::ve
   if (!v) return default_value;
   if (!v->is_array()) wrong_type(key, "an array of numbers");
   std::vector<double> out;
-  for (const auto& x : v->as_array()) {
-    if (x.is_floating() && std::isfinite(x.as_floating()))
-      out.push_back(x.as_floating());
-    else if (x.is_integer())
-      out.push_back(static_cast<double>(integer_of(x, key)));
-    else
-      wrong_type(key, "an array of finite numbers");
-  }
+  for (const auto& x : v->as_array()) out.push_back(finite_number(x, key, "an array of finite numbers"));
   return out;
 }
 
@@ -113,14 +111,7 @@ std::vector<std::vector<double>> CaseTable::get_double_lists(const std::string& 
   for (const auto& inner : v->as_array()) {
     if (!inner.is_array() || inner.as_array().size() != size) wrong_type(key, wanted);
     std::vector<double> values;
-    for (const auto& x : inner.as_array()) {
-      if (x.is_floating() && std::isfinite(x.as_floating()))
-        values.push_back(x.as_floating());
-      else if (x.is_integer())
-        values.push_back(static_cast<double>(integer_of(x, key)));
-      else
-        wrong_type(key, wanted);
-    }
+    for (const auto& x : inner.as_array()) values.push_back(finite_number(x, key, wanted));
     out.push_back(std::move(values));
   }
   return out;

@@ -211,7 +211,7 @@ ResultTarget inspect_result_target(const fs::path& target, const std::string& op
 
   // Every name on the way must be one the file system takes: caught here, not when the finished run
   // is moved into place.
-  const long name_max = ::pathconf("/", _PC_NAME_MAX) > 0 ? ::pathconf("/", _PC_NAME_MAX) : 255;
+  const long reported = ::pathconf("/", _PC_NAME_MAX), name_max = reported > 0 ? reported : 255;
   for (const fs::path& part : where)
     if (static_cast<long>(part.string().size()) > name_max)
       refuse(option, shown, "has a name of " + std::to_string(part.string().size()) + " characters",

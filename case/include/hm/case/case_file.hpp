@@ -45,6 +45,7 @@ class CaseTable {
   const toml::value* find(const std::string& key);
   [[noreturn]] void wrong_type(const std::string& key, const std::string& wanted) const;
   long long integer_of(const toml::value& v, const std::string& key) const;
+  double finite_number(const toml::value& x, const std::string& key, const std::string& wanted) const;
 
   toml::value table_;
   std::string file_, name_;
