@@ -102,6 +102,11 @@ void run_case(const RunArgs& a, int& exit_code, const std::string& command_line)
       std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_start).count();
   std::cout << "lattice: " << model->lattice().n_particles() << " particles, " << model->lattice().n_beams()
             << " beams, " << model->lattice().n_triangles() << " triangles\n";
+  if (const lattice2d::SawtoothLaw* law = model->sawtooth_law())
+    std::cout << "saw-tooth law: G_f/(E R) = " << core::format_value(law->options().fracture_energy) << ", "
+              << law->options().teeth.n_teeth << " teeth of ratio " << core::format_value(law->options().teeth.reduction)
+              << "; " << law->n_brittle_beams() << " of " << model->lattice().n_beams()
+              << " beams are too long for their G_f and have one tooth at the strength that dissipates it\n";
   const int first_step = model->run_cursor().totals.n_steps;
   if (resuming)
     std::cout << "resumed at step " << first_step << ", t = " << model->time() << ", from "
@@ -207,7 +212,10 @@ void run_case(const RunArgs& a, int& exit_code, const std::string& command_line)
               << ", p_h = " << core::format_value(recorder->breakdown().p_first) << " (step " << step << ")\n";
   else if (c.stop_at_first_break)
     std::cout << "No beam broke by t_end = " << core::format_value(c.stepping.t_end) << "\n";
-  std::cout << "Results: " << out->target().string() << (c.fracture_enabled ? "/{series,radial,breaks,breakdown,fractures,fracture_summary,fracture_pressure}.csv, " : "/{series,radial}.csv, ") << (c.output.vtk ? "vtk/lattice.pvd, " : "")
+  std::cout << "Results: " << out->target().string() << (!c.fracture_enabled ? "/{series,radial}.csv, "
+                                                 : c.fracture_law == lattice2d::FractureLaw::sawtooth
+                                                     ? "/{series,radial,breaks,teeth,breakdown,fractures,fracture_summary,fracture_pressure}.csv, "
+                                                     : "/{series,radial,breaks,breakdown,fractures,fracture_summary,fracture_pressure}.csv, ") << (c.output.vtk ? "vtk/lattice.pvd, " : "")
             << "config.toml\n";
 }
 

@@ -37,6 +37,11 @@ lt::FlowParameters RunCase::flow_parameters() const {
 
 namespace {
 
+// A step whose first tooth gives way more than 2% past its strength is retried with half the step
+// under the saw-tooth law: well inside the strengths' own scatter (5% half-width by default), and
+// the measured cost of the brittle law's retry at this tolerance is ~3x the steps (docs/fracture_law.md).
+constexpr double kSawtoothOvershootTolerance = 0.02;
+
 // The beams every run uses and the continuum they were measured to represent (not inputs: comments).
 std::string calibration_comment(const RunCase& c) {
   const lt::BeamParameters beams = c.beams();
@@ -144,7 +149,9 @@ CaseKeys<RunCase> make_run_case_keys() {
       .integer("anderson_depth", [](auto& c) -> auto& { return c.coupling.anderson_depth; }, 1, 50, "1 ... 50",
                "residual differences Anderson combines")
       .choice("fracture_check", [](auto& c) -> auto& { return c.coupling.fracture_check; },
-              "when beams are checked for failure: every pass (Fig. 5) or at the coupled equilibrium")
+              "when beams are checked for failure: every pass (Fig. 5) or at the coupled equilibrium", {},
+              "`\"" + core::name_of(lt::CouplingOptions{}.fracture_check) +
+                  "\"`; `\"at_convergence\"` with [fracture] law = \"sawtooth\"")
       .choice("predictor", [](auto& c) -> auto& { return c.coupling.predictor; },
               "the first pass's guess: the last step's state or its linear extrapolation")
       .check([](CaseTable&, CaseTable&, RunCase& c) { c.coupling.validate(); });
@@ -162,8 +169,9 @@ CaseKeys<RunCase> make_run_case_keys() {
                "retries of an unconverged step with half the step")
       .real("overshoot_tolerance", [](auto& c) -> auto& { return c.stepping.overshoot_tolerance; },
             "0 <= value < 1; > 0 only with [coupling] fracture_check = \"at_convergence\"",
-            "> 0 (with fracture_check = \"at_convergence\"): a step whose first break has failure ratio above 1 + "
-            "this is retried with half the step (the last of max_step_halvings tries is accepted); 0: off");
+            "> 0 (with fracture_check = \"at_convergence\"): a step whose first break (or tooth) has failure ratio "
+            "above 1 + this is retried with half the step (the last of max_step_halvings tries is accepted); 0: off",
+            {}, "`0`; `" + toml_real(kSawtoothOvershootTolerance) + "` with [fracture] law = \"sawtooth\"");
   k.table("fracture")
       .boolean("enabled", [](auto& c) -> auto& { return c.fracture_enabled; }, "break beams (Eq. 11)")
       .boolean("stop_at_first_break", [](auto& c) -> auto& { return c.stop_at_first_break; },
@@ -181,6 +189,17 @@ CaseKeys<RunCase> make_run_case_keys() {
                "the crack-tip factor (L/2L_m)^(1/2) of Fig. 2")
       .real("crack_tip_length", [](auto& c) -> auto& { return c.break_loop.crack_tip.material_length; }, "> 0",
             "L_m over R, the crack-tip factor's material length")
+      .choice("law", [](auto& c) -> auto& { return c.fracture_law; },
+              "how a beam fails in tension: removed at its strength with the crack-tip factor (the paper's), or "
+              "softened tooth by tooth until it has dissipated the fracture energy (docs/fracture_law.md; the "
+              "crack-tip keys are then not used)")
+      .real("fracture_energy", [](auto& c) -> auto& { return c.sawtooth.fracture_energy; },
+            "> 0, finite, with law = \"sawtooth\" (required there); 0 with \"brittle\"",
+            "G_f / (E R), the energy per unit crack area of the saw-tooth law", {}, "`0` (none)")
+      .real("sawtooth_reduction", [](auto& c) -> auto& { return c.sawtooth.teeth.reduction; }, "> 1, finite",
+            "saw-tooth law: each tooth's stiffness over the next's")
+      .integer("sawtooth_teeth", [](auto& c) -> auto& { return c.sawtooth.teeth.n_teeth; }, 1, 100, "1 ... 100",
+               "saw-tooth law: teeth before the beam breaks")
       .key({"notch", "list of [x0, y0, x1, y1]", "`[]`",
             "each 4 finite numbers, two distinct ends inside the domain (at most 1 from the centre); only with enabled = true",
             "pre-cut cracks: the beams each segment crosses are broken before the first step (breaks.csv, t = 0, "
@@ -218,6 +237,20 @@ CaseKeys<RunCase> make_run_case_keys() {
         st.friction = c.physics.parameters.friction;
         st.validate();
         core::require_positive(c.break_loop.crack_tip.material_length, "crack_tip_length");
+        const double g_f = c.sawtooth.fracture_energy;
+        if (c.fracture_law == lt::FractureLaw::sawtooth) {
+          if (!c.fracture_enabled)
+            fracture.fail("law = \"sawtooth\", allowed: only with enabled = true");
+          if (!(std::isfinite(g_f) && g_f > 0.0))
+            fracture.fail("fracture_energy = " + core::format_value(g_f) +
+                          ", allowed: > 0, finite with law = \"sawtooth\" (required there)");
+          const double a = c.sawtooth.teeth.reduction;
+          if (!(std::isfinite(a) && a > 1.0))
+            fracture.fail("sawtooth_reduction = " + core::format_value(a) + ", allowed: > 1, finite");
+        } else if (g_f != 0.0) {
+          fracture.fail("fracture_energy = " + core::format_value(g_f) +
+                        ", allowed: 0 with law = \"brittle\" (a fracture energy belongs to law = \"sawtooth\")");
+        }
       });
   k.table("output")
       .reals("times", [](auto& c) -> auto& { return c.output.times; }, "increasing, in (0, t_end]",
@@ -267,6 +300,12 @@ RunCase read_run_case(const std::filesystem::path& file) {
     root.table("numerics").fail(what.rfind("numerics.", 0) == 0 ? what.substr(9) : what);
   }
   CaseTable numerics = root.table("numerics");
+  // The saw-tooth law's defaults in other tables: a tooth judged on a converged state, and a step
+  // whose first tooth overshoots retried (docs/fracture_law.md).
+  if (c.fracture_law == lt::FractureLaw::sawtooth) {
+    if (!root.table("coupling").has("fracture_check")) c.coupling.fracture_check = lt::FractureCheck::at_convergence;
+    if (!numerics.has("overshoot_tolerance")) c.stepping.overshoot_tolerance = kSawtoothOvershootTolerance;
+  }
   // A first break checked on every pass can overshoot through the iteration itself (an unconverged
   // pass's pressure; 14% at dt -> 0 in the Fig. 12 quick case), which no shorter step removes: only
   // the converged states' check makes the retry meaningful.

@@ -88,6 +88,7 @@ RunRecorder::RunRecorder(const std::filesystem::path& dir, const RunCase& c)
       dir_(dir),
       fracture_(c.fracture_enabled),
       statistics_options_{c.output.fracture_link},
+      sawtooth_(c.fracture_enabled && c.fracture_law == lt::FractureLaw::sawtooth),
       series_file_(core::open_for_writing(dir / "series.csv")),
       radial_file_(core::open_for_writing(dir / "radial.csv")) {
   series_ = std::make_unique<CsvWriter>(series_file_, series_columns);
@@ -107,7 +108,9 @@ RunRecorder::RunRecorder(const std::filesystem::path& dir, const RunCase& c, con
       r_min_(c.lattice.domain == lt::DomainShape::annulus ? c.lattice.inner_radius : 0.0),
       dir_(dir),
       fracture_(c.fracture_enabled),
-      statistics_options_{c.output.fracture_link} {
+      statistics_options_{c.output.fracture_link},
+      sawtooth_(c.fracture_enabled && c.fracture_law == lt::FractureLaw::sawtooth),
+      teeth_(model.tooth_log()) {
   std::vector<std::int64_t> sizes;
   r.get("recorder.file_sizes", sizes);
   if (sizes.size() != 4) throw InputError(r.source() + ": at 'recorder.file_sizes': 4 values expected");
@@ -222,6 +225,10 @@ void RunRecorder::record(const lt::CoupledModel& model, const lt::CoupledStepSum
     breaks_.insert(breaks_.end(), new_breaks.begin(), new_breaks.end());
     b.n_broken = model.n_broken();
   }
+  if (sawtooth_) {
+    const auto& log = model.tooth_log();
+    teeth_.insert(teeth_.end(), log.begin() + static_cast<std::ptrdiff_t>(teeth_.size()), log.end());
+  }
   series_file_.flush();
   last_p_h_ = p_h;
   if (!is_output) return;
@@ -247,6 +254,14 @@ void RunRecorder::record(const lt::CoupledModel& model, const lt::CoupledStepSum
     snapshot.beam_states = model.mechanics().states();
     snapshot.particle_stress = model.particle_stress().stress;
     if (fracture_) snapshot.beam_fields.push_back({"failure_ratio", model.failure_ratio()});
+    if (sawtooth_) {
+      Eigen::VectorXd stiffness(model.lattice().n_beams());
+      for (int e = 0; e < stiffness.size(); ++e)
+        stiffness[e] = model.mechanics().states()[static_cast<std::size_t>(e)] == lt::BeamState::intact
+                           ? model.mechanics().stiffness_factor(e)
+                           : 0.0;
+      snapshot.beam_fields.push_back({"stiffness_factor", stiffness});
+    }
     snapshot.beam_fields.push_back({"crack_opening", crack_openings(model)});
     vtk_->write(model.lattice(), model.current_dual(), snapshot);
   }
@@ -262,6 +277,7 @@ void RunRecorder::finish() {
   if (!fracture_) return;
   core::close_checked(breaks_file_, dir_ / "breaks.csv");
   core::close_checked(pressure_file_, dir_ / "fracture_pressure.csv");
+  if (sawtooth_) lt::write_tooth_log(dir_ / "teeth.csv", teeth_, "time");
   lt::write_fracture_table(dir_ / "fractures.csv", fractures_);
   lt::write_fracture_summary(dir_ / "fracture_summary.csv", fractures_);
   core::write_file_atomically(dir_ / "breakdown.csv", [&](std::ostream& file) {

@@ -97,7 +97,14 @@ void CoupledModel::enable_fracture(BeamStrengths strengths, const BreakLoopOptio
   if (strengths.n_beams() != n || strengths.compressive.size() != n)
     throw hm::InputError("fracture.strengths: " + std::to_string(strengths.n_beams()) +
                          " values, allowed: one per beam (" + std::to_string(n) + ")");
-  fracture_ = std::make_unique<FractureSetup>(FractureSetup{std::move(strengths), options});
+  fracture_ = std::make_unique<FractureSetup>(FractureSetup{std::move(strengths), options, nullptr});
+}
+
+void CoupledModel::use_sawtooth_law(const SawtoothLawOptions& options) {
+  if (!fracture_) throw hm::InputError("law = sawtooth: allowed only with fracture enabled");
+  if (at_rest_ || cursor_.started) throw hm::InputError("law = sawtooth: allowed only before the first step");
+  fracture_->sawtooth = std::make_unique<SawtoothLaw>(lattice(), reference_dual_, mechanics_->parameters(),
+                                                      fracture_->strengths, options);
 }
 
 void CoupledModel::cut_beams(const std::vector<int>& beams) {
@@ -133,8 +140,8 @@ ParticleStress CoupledModel::particle_stress() const { return current_particle_s
 
 Eigen::VectorXd CoupledModel::failure_ratio() const {
   if (!fracture_) return {};
-  const BeamStress stress = current_beam_stress(*mechanics_, reference_dual_, fracture_->options.crack_tip);
-  return evaluate_failure(stress, fracture_->strengths, mechanics_->states()).ratio;
+  return failure_ratios(*mechanics_, reference_dual_, fracture_->strengths, fracture_->options.crack_tip,
+                        fracture_->sawtooth.get());
 }
 
 Eigen::Matrix2Xd CoupledModel::positions(const Eigen::VectorXd& u) const {
@@ -215,13 +222,12 @@ CoupledStepSummary CoupledModel::step(double dt, double overshoot_tolerance) {
   save_model_state(at_start);
   PassGuess guess = predict(dt);
   DualGraph dual;
-  const std::size_t breaks_before = break_log_.size();
   const bool converged = iterate(dt, guess, dual, summary);
-  if (converged && overshoot_tolerance > 0.0 && break_log_.size() > breaks_before &&
-      break_log_[breaks_before].ratio > 1.0 + overshoot_tolerance) {
+  if (converged && overshoot_tolerance > 0.0 && summary.first_event_ratio > 1.0 + overshoot_tolerance) {
     summary.status = CoupledStatus::overshoot;
-    summary.message = "first break at t = " + hm::core::format_value(summary.time) + " at failure ratio " +
-                      hm::core::format_value(break_log_[breaks_before].ratio) + ", above 1 + overshoot_tolerance (" +
+    summary.message = std::string("first ") + (summary.n_teeth > 0 ? "event" : "break") + " at t = " +
+                      hm::core::format_value(summary.time) + " at failure ratio " +
+                      hm::core::format_value(summary.first_event_ratio) + ", above 1 + overshoot_tolerance (" +
                       hm::core::format_value(overshoot_tolerance) + ")";
   }
   finish_step(dt, converged, std::move(dual), summary);
@@ -307,22 +313,28 @@ bool CoupledModel::solve_mechanics(int pass, const PassGuess& guess, bool check_
 }
 
 bool CoupledModel::break_beams(int pass, int& n_breaks, CoupledStepSummary& summary) {
-  const BreakLoopSummary bs = break_until_stable(*mechanics_, reference_dual_, fracture_->strengths,
-                                                 fracture_->options, summary.time, break_log_);
+  const BreakLoopSummary bs =
+      fracture_->sawtooth ? break_until_stable(*mechanics_, reference_dual_, fracture_->strengths, *fracture_->sawtooth,
+                                               fracture_->options, summary.time, break_log_, tooth_log_)
+                          : break_until_stable(*mechanics_, reference_dual_, fracture_->strengths, fracture_->options,
+                                               summary.time, break_log_);
   summary.mechanics_seconds += bs.solve_seconds;
   summary.stress_seconds += bs.stress_seconds;
   summary.break_seconds += bs.break_seconds;
   summary.n_mechanics_solves += bs.n_solves;
   summary.n_contact_changes += bs.n_contact_changes;
-  n_breaks = bs.n_breaks;
+  // A tooth changes the system as a break does: the coupling must pass again.
+  n_breaks = bs.n_breaks + bs.n_teeth;
+  if (summary.first_event_ratio == 0.0) summary.first_event_ratio = bs.first_ratio;
   summary.n_breaks += bs.n_breaks;
+  summary.n_teeth += bs.n_teeth;
   if (!bs.is_stable()) {
     summary.status = CoupledStatus::solver_failure;
     summary.message = "break loop at t = " + hm::core::format_value(summary.time) + ", pass " +
                       std::to_string(pass) + ": " + core::name_of(bs.status) + " " + bs.message;
     return false;
   }
-  if (n_breaks > 0) flow_->set_broken(broken_flags(mechanics_->states()));
+  if (bs.n_breaks > 0) flow_->set_broken(broken_flags(mechanics_->states()));
   return true;
 }
 
@@ -362,7 +374,7 @@ void CoupledModel::finish_step(double dt, bool converged, DualGraph dual, Couple
     if (options_.predictor == CouplingPredictor::linear) {
       previous_pressure_ = flow_->pressure();
       previous_displacement_ = displacement_;
-      previous_dt_ = summary.n_breaks == 0 ? dt : 0.0;
+      previous_dt_ = summary.n_breaks + summary.n_teeth == 0 ? dt : 0.0;
     }
     flow_->accept();
     displacement_ = mechanics_->displacement();  // the last pass's u, which the accepted flow saw
@@ -486,6 +498,33 @@ std::vector<BreakEvent> restore_break_log(core::StateReader& r) {
   return log;
 }
 
+void save_tooth_log(core::StateWriter& w, const std::vector<ToothEvent>& log) {
+  std::vector<int> ints;
+  std::vector<double> reals;
+  for (const ToothEvent& e : log) {
+    ints.insert(ints.end(), {e.sequence, e.beam, e.tooth});
+    reals.insert(reals.end(), {e.load, e.stiffness_factor, e.axial_stress, e.ratio, e.energy});
+  }
+  w.put("teeth.ints", ints);
+  w.put("teeth.reals", reals);
+}
+
+std::vector<ToothEvent> restore_tooth_log(core::StateReader& r) {
+  std::vector<int> ints;
+  std::vector<double> reals;
+  r.get("teeth.ints", ints);
+  r.get("teeth.reals", reals);
+  if (ints.size() % 3 != 0 || reals.size() % 5 != 0 || reals.size() / 5 != ints.size() / 3)
+    throw InputError(r.source() + ": at 'teeth': inconsistent sizes");
+  std::vector<ToothEvent> log(ints.size() / 3);
+  for (std::size_t k = 0; k < log.size(); ++k) {
+    const int* i = &ints[3 * k];
+    const double* x = &reals[5 * k];
+    log[k] = {i[0], i[1], x[0], i[2], x[1], x[2], x[3], x[4]};
+  }
+  return log;
+}
+
 // The run's counters, saved or restored (Archive: core::StateWriter with const totals, or StateReader).
 template <class Archive, class Totals>
 void transfer_totals(Archive& a, Totals& t) {
@@ -554,6 +593,10 @@ void CoupledModel::save_model_state(core::StateWriter& w) const {
     w.put("strengths.compressive", fracture_->strengths.compressive);
   }
   save_break_log(w, break_log_);
+  if (sawtooth_law()) {
+    fracture_->sawtooth->save_state(w);
+    save_tooth_log(w, tooth_log_);
+  }
 }
 
 void CoupledModel::restore_model_state(core::StateReader& r) {
@@ -577,6 +620,10 @@ void CoupledModel::restore_model_state(core::StateReader& r) {
     r.get("strengths.compressive", fracture_->strengths.compressive);
   }
   break_log_ = restore_break_log(r);
+  if (sawtooth_law()) {
+    fracture_->sawtooth->restore_state(r);
+    tooth_log_ = restore_tooth_log(r);
+  }
 }
 
 }  // namespace hm::lattice2d

@@ -6,12 +6,14 @@
 namespace hm::lattice2d {
 
 FailureScan::FailureScan(const Lattice& lattice, const DualGraph& dual, const CrackTipOptions& crack_tip,
-                         const std::vector<BeamState>& states)
+                         const std::vector<BeamState>& states, const SawtoothLaw* law)
     : lattice_(lattice),
       dual_(dual),
       crack_tip_(crack_tip),
+      law_(law),
       triangle_broken_(lattice.triangle_beams.size(), 0),
       tip_triangles_(static_cast<std::size_t>(lattice.n_beams()), 0) {
+  if (law_) crack_tip_.enabled = false;  // the saw-tooth's G_f, not a tip factor, gives the crack its length scale
   assert(dual.particle_area.size() == lattice.n_particles() && "dual graph of another lattice");
   assert(static_cast<int>(states.size()) == lattice.n_beams() && "one state per beam");
   for (std::size_t t = 0; t < triangle_broken_.size(); ++t) {
@@ -48,7 +50,7 @@ FailureScan::Result FailureScan::run(const std::vector<BeamForce>& forces, const
   std::array<bool, kChunks> any_intact{};
 #pragma omp parallel for schedule(static) if (n_beams >= kParallelBeams)
   for (int c = 0; c < kChunks; ++c)
-    scan_beams(c * n_beams / kChunks, (c + 1) * n_beams / kChunks, strengths, states, stress_scale,
+    scan_beams(c * n_beams / kChunks, (c + 1) * n_beams / kChunks, forces, strengths, states, stress_scale,
                part[static_cast<std::size_t>(c)], any_intact[static_cast<std::size_t>(c)]);
   Result out;
   bool any = false;
@@ -65,13 +67,15 @@ FailureScan::Result FailureScan::run(const std::vector<BeamForce>& forces, const
       out.sigma_1 = r.sigma_1;
       out.sigma_3 = r.sigma_3;
       out.crack_tip_factor = r.crack_tip_factor;
+      out.axial_stress = r.axial_stress;
     }
   }
   return out;
 }
 
-void FailureScan::scan_beams(int first, int last, const BeamStrengths& strengths, const std::vector<BeamState>& states,
-                             double stress_scale, Result& out, bool& any_intact) const {
+void FailureScan::scan_beams(int first, int last, const std::vector<BeamForce>& forces, const BeamStrengths& strengths,
+                             const std::vector<BeamState>& states, double stress_scale, Result& out,
+                             bool& any_intact) const {
   const FailureCriterion criterion(strengths.friction);
   BreakCandidate& best = out.judged;
   for (int e = first; e < last; ++e) {
@@ -81,8 +85,19 @@ void FailureScan::scan_beams(int first, int last, const BeamStrengths& strengths
     const PrincipalPair principal = principal_pair(sigma[0], sigma[1], sigma[2]);
     const double s1 = principal.sigma_1, s3 = principal.sigma_3;
     const double T = strengths.tensile[e], C = strengths.compressive[e];
-    const auto reference = criterion.check(s1, s3, T, C);
-    const auto judged = stress_scale == 1.0 ? reference : criterion.check(s1 * stress_scale, s3 * stress_scale, T, C);
+    hm::analytic::FailureCheck reference, judged;
+    double axial = 0.0;
+    if (law_) {
+      axial = law_->axial_stress(e, forces[static_cast<std::size_t>(e)].normal);
+      const double f = law_->strength(e);
+      reference = FailureCriterion::combine(axial / f, criterion.shear_ratio(s1, s3, C));
+      judged = stress_scale == 1.0 ? reference
+                                   : FailureCriterion::combine(axial * stress_scale / f,
+                                                               criterion.shear_ratio(s1 * stress_scale, s3 * stress_scale, C));
+    } else {
+      reference = criterion.check(s1, s3, T, C);
+      judged = stress_scale == 1.0 ? reference : criterion.check(s1 * stress_scale, s3 * stress_scale, T, C);
+    }
     assert(!std::isnan(judged.ratio) && "failure ratio is NaN: non-finite stress");
     if (!any_intact || reference.ratio > out.max_reference_ratio) out.max_reference_ratio = reference.ratio;
     if (!any_intact || judged.ratio > best.max_ratio) best.max_ratio = judged.ratio;
@@ -95,6 +110,7 @@ void FailureScan::scan_beams(int first, int last, const BeamStrengths& strengths
       out.sigma_1 = stress_scale == 1.0 ? s1 : s1 * stress_scale;
       out.sigma_3 = stress_scale == 1.0 ? s3 : s3 * stress_scale;
       out.crack_tip_factor = factor;
+      out.axial_stress = stress_scale == 1.0 ? axial : axial * stress_scale;
     }
   }
 }

@@ -94,9 +94,28 @@ BeamStress current_beam_stress(const BeamMechanics& mechanics, const DualGraph& 
   return stress_scale == 1.0 ? stress : scaled(std::move(stress), stress_scale);
 }
 
-BreakLoopSummary break_until_stable(BeamMechanics& mechanics, const DualGraph& dual, const BeamStrengths& strengths,
-                                    const BreakLoopOptions& options, double load, std::vector<BreakEvent>& log,
-                                    double stress_scale) {
+Eigen::VectorXd failure_ratios(const BeamMechanics& mechanics, const DualGraph& dual, const BeamStrengths& strengths,
+                               const CrackTipOptions& crack_tip, const SawtoothLaw* law) {
+  if (!law) return evaluate_failure(current_beam_stress(mechanics, dual, crack_tip), strengths, mechanics.states()).ratio;
+  const BeamStress stress = current_beam_stress(mechanics, dual, CrackTipOptions{false});
+  const std::vector<BeamForce> forces = mechanics.beam_forces();
+  const FailureCriterion criterion(strengths.friction);
+  Eigen::VectorXd ratio = Eigen::VectorXd::Zero(mechanics.lattice().n_beams());
+  for (int e = 0; e < ratio.size(); ++e) {
+    if (mechanics.states()[static_cast<std::size_t>(e)] != BeamState::intact) continue;
+    const double tensile = law->axial_stress(e, forces[static_cast<std::size_t>(e)].normal) / law->strength(e);
+    ratio[e] = FailureCriterion::combine(tensile, criterion.shear_ratio(stress.sigma_1[e], stress.sigma_3[e],
+                                                                        strengths.compressive[e])).ratio;
+  }
+  return ratio;
+}
+
+namespace {
+
+// The break loop of both laws (law null: brittle, teeth unused).
+BreakLoopSummary run_break_loop(BeamMechanics& mechanics, const DualGraph& dual, const BeamStrengths& strengths,
+                                SawtoothLaw* law, const BreakLoopOptions& options, double load,
+                                std::vector<BreakEvent>& log, std::vector<ToothEvent>* teeth, double stress_scale) {
   const auto start = std::chrono::steady_clock::now();
   options.validate();
   if (!(std::isfinite(stress_scale) && stress_scale >= 0.0))
@@ -106,7 +125,7 @@ BreakLoopSummary break_until_stable(BeamMechanics& mechanics, const DualGraph& d
                          std::to_string(mechanics.lattice().n_beams()) + ")");
 
   BreakLoopSummary summary;
-  FailureScan scan(mechanics.lattice(), dual, options.crack_tip, mechanics.states());
+  FailureScan scan(mechanics.lattice(), dual, options.crack_tip, mechanics.states(), law);
   std::vector<BeamForce> forces;  // the connection forces of each solve, storage reused
   while (true) {
     const MechanicsSummary solved = mechanics.solve(false);  // no equilibrium residual: not read here
@@ -129,24 +148,62 @@ BreakLoopSummary break_until_stable(BeamMechanics& mechanics, const DualGraph& d
     summary.max_ratio = std::max(0.0, candidate.max_ratio);
     summary.stress_seconds += seconds_since(stress_start);
     if (!candidate.found()) break;  // stable
-    if (summary.n_breaks >= options.max_breaks) {
+    if (summary.n_breaks + summary.n_teeth >= options.max_breaks) {
       summary.status = BreakLoopStatus::break_cap;
       summary.message = "break cap reached (break_loop.max_breaks = " + std::to_string(options.max_breaks) +
                         "); beams still fail at load " + num(load);
       break;
     }
-    log.push_back(make_break_event(mechanics.lattice(), candidate, checked.sigma_1, checked.sigma_3,
-                                   checked.crack_tip_factor, load, static_cast<int>(log.size())));
+    const int e = candidate.beam;
+    if (summary.n_breaks + summary.n_teeth == 0) summary.first_ratio = candidate.ratio;
     const auto break_start = std::chrono::steady_clock::now();
-    mechanics.break_beam(candidate.beam);
-    // Only break_beam turns an intact beam into a broken one (detachment and contacts switch broken
-    // beams between contact and open).
-    scan.beam_broken(candidate.beam);
+    const bool tensile = candidate.mode == FailureMode::tensile;
+    // A tensile failure under the saw-tooth law: the tooth gives way (its energy booked), to the next
+    // tooth's stiffness or, after the last, to 0 (the beam breaks below).
+    const bool tooth_gives_way = law && tensile;
+    const bool last = !tooth_gives_way || law->on_last_tooth(e);
+    if (tooth_gives_way) {
+      ToothEvent tooth;
+      tooth.sequence = static_cast<int>(teeth->size());
+      tooth.beam = e;
+      tooth.load = load;
+      tooth.tooth = law->tooth(e);
+      tooth.stiffness_factor = last ? 0.0 : law->next_stiffness_factor(e);
+      tooth.axial_stress = checked.axial_stress;
+      tooth.ratio = candidate.ratio;
+      tooth.energy = law->give_way(e);
+      if (!last) mechanics.soften_beam(e, tooth.stiffness_factor);
+      teeth->push_back(tooth);
+      ++summary.n_teeth;
+    }
+    if (last) {
+      log.push_back(make_break_event(mechanics.lattice(), candidate, checked.sigma_1, checked.sigma_3,
+                                     checked.crack_tip_factor, load, static_cast<int>(log.size())));
+      mechanics.break_beam(e);
+      // Only break_beam turns an intact beam into a broken one (detachment and contacts switch broken
+      // beams between contact and open).
+      scan.beam_broken(e);
+      ++summary.n_breaks;
+    }
     summary.break_seconds += seconds_since(break_start);
-    ++summary.n_breaks;
   }
   summary.seconds = seconds_since(start);
   return summary;
+}
+
+}  // namespace
+
+BreakLoopSummary break_until_stable(BeamMechanics& mechanics, const DualGraph& dual, const BeamStrengths& strengths,
+                                    const BreakLoopOptions& options, double load, std::vector<BreakEvent>& log,
+                                    double stress_scale) {
+  return run_break_loop(mechanics, dual, strengths, nullptr, options, load, log, nullptr, stress_scale);
+}
+
+BreakLoopSummary break_until_stable(BeamMechanics& mechanics, const DualGraph& dual, const BeamStrengths& strengths,
+                                    SawtoothLaw& law, const BreakLoopOptions& options, double load,
+                                    std::vector<BreakEvent>& log, std::vector<ToothEvent>& teeth,
+                                    double stress_scale) {
+  return run_break_loop(mechanics, dual, strengths, &law, options, load, log, &teeth, stress_scale);
 }
 
 // --- load stepping -----------------------------------------------------------------------------------

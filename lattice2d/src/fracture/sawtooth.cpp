@@ -35,6 +35,16 @@ void SawtoothSpec::validate() const {
     throw hm::InputError("sawtooth.n_teeth = " + std::to_string(n_teeth) + ", allowed: 1 ... 100");
 }
 
+bool is_snap_back(double axial_modulus, double tensile_strength, double fracture_energy, double length) {
+  return 2.0 * fracture_energy / (tensile_strength * length) <= tensile_strength / axial_modulus;  // eps_u <= eps_0
+}
+
+double first_tooth_strength(double axial_modulus, double tensile_strength, double fracture_energy, double length) {
+  return is_snap_back(axial_modulus, tensile_strength, fracture_energy, length)
+             ? std::sqrt(2.0 * axial_modulus * (fracture_energy / length))
+             : tensile_strength;
+}
+
 double released_energy_density(const BeamTeeth& teeth, double axial_modulus) {
   double w = 0.0;
   for (std::size_t i = 0; i < teeth.strength.size(); ++i) {
@@ -59,12 +69,12 @@ BeamTeeth sawtooth_teeth(double axial_modulus, double tensile_strength, double f
   const double e_n = axial_modulus, f_t = tensile_strength;
   const double target = fracture_energy / length;  // G_f d over the volume d L
   const double eps_0 = f_t / e_n, eps_u = 2.0 * fracture_energy / (f_t * length);
-  if (eps_u <= eps_0) {  // snap-back: one tooth that releases the same energy
+  if (is_snap_back(e_n, f_t, fracture_energy, length)) {  // one tooth that releases the same energy
     BeamTeeth t;
     t.brittle = true;
     t.ultimate_strain = eps_u;
     t.stiffness_factor = {1.0};
-    t.strength = {std::sqrt(2.0 * e_n * target)};
+    t.strength = {first_tooth_strength(e_n, f_t, fracture_energy, length)};
     return t;
   }
   // The released energy grows with eps_u (every tooth's peak moves out along its secant): bracket the

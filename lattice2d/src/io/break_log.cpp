@@ -32,6 +32,17 @@ void write_break_log(const std::filesystem::path& path, const std::vector<BreakE
   });
 }
 
+void write_tooth_log(const std::filesystem::path& path, const std::vector<ToothEvent>& events,
+                     const std::string& load_column) {
+  core::write_file_atomically(path, [&](std::ostream& out) {
+    out << "sequence,beam," << load_column << ",tooth,stiffness_factor,axial_stress,ratio,energy\n";
+    for (const ToothEvent& ev : events)
+      out << ev.sequence << ',' << ev.beam << ',' << csv_number(ev.load) << ',' << ev.tooth << ','
+          << csv_number(ev.stiffness_factor) << ',' << csv_number(ev.axial_stress) << ',' << csv_number(ev.ratio) << ','
+          << csv_number(ev.energy) << '\n';
+  });
+}
+
 std::vector<BreakEvent> read_break_log(const std::filesystem::path& path) {
   std::ifstream in(path);
   if (!in) throw InputError("cannot read the break log " + path.string());

@@ -159,6 +159,7 @@ BeamMechanics::BeamMechanics(Lattice lattice, const BeamParameters& parameters, 
   normal_stiffness_.resize(static_cast<std::size_t>(lattice_.n_beams()));
   for (int e = 0; e < lattice_.n_beams(); ++e)
     normal_stiffness_[static_cast<std::size_t>(e)] = beam_parameters_for(lattice_, parameters_, e).normal_stiffness;
+  softening_.assign(static_cast<std::size_t>(lattice_.n_beams()), 1.0);
   detached_.assign(static_cast<std::size_t>(n_p), false);
 
   // 1. Held degrees of freedom: supports, boundary strain, explicit list (later overrides earlier).
@@ -318,22 +319,13 @@ Eigen::VectorXd BeamMechanics::full_vector(const Eigen::VectorXd& x_free) const 
   return u;
 }
 
-void BeamMechanics::change_state(int beam, BeamState to) {
-  const BeamState from = states_[static_cast<std::size_t>(beam)];
-  if (from == to) return;
-  // K_e(from) - K_e(to) (or the reverse) is a subset of the columns of beam_element_factor.
-  const Matrix63d V = beam_element_factor(lattice_.length[beam], lattice_.angle[beam], beam_parameters(beam),
-                                          BeamState::intact);
-  std::vector<int> columns;
-  int sigma = -1;
-  if (from == BeamState::intact) columns = to == BeamState::contact ? std::vector<int>{1, 2} : std::vector<int>{0, 1, 2};
-  else if (from == BeamState::contact && to == BeamState::open) columns = {0};
-  else if (from == BeamState::open && to == BeamState::contact) {
-    columns = {0};
-    sigma = 1;
-  } else {
-    assert(false && "change_state: a broken beam cannot heal");
-  }
+void BeamMechanics::modify_beam(int beam, const std::vector<int>& columns, double scale, int sigma) {
+  // sigma scale V_c V_c^T for the columns c of the unsoftened intact factor: the reduced matrix by a
+  // rank-|columns| modification, the held-DOF term K u_h by sigma scale V_c (V_c^T u_h).
+  BeamParameters intact = parameters_;
+  intact.normal_stiffness = normal_stiffness_[static_cast<std::size_t>(beam)];
+  Matrix63d V = beam_element_factor(lattice_.length[beam], lattice_.angle[beam], intact, BeamState::intact);
+  if (scale != 1.0) V *= std::sqrt(scale);  // a brittle lattice (scale 1) keeps its bits
   const auto d = beam_dofs(lattice_, beam);
   std::vector<Eigen::Triplet<double>> w;
   for (std::size_t c = 0; c < columns.size(); ++c)
@@ -341,19 +333,55 @@ void BeamMechanics::change_state(int beam, BeamState to) {
       const int r = free_index_[static_cast<std::size_t>(d[static_cast<std::size_t>(a)])];
       if (r >= 0 && V(a, columns[c]) != 0.0) w.emplace_back(r, static_cast<int>(c), V(a, columns[c]));
     }
-  // The held-DOF term K u_h changes by sigma V_c (V_c^T u_h).
   Eigen::Matrix<double, 6, 1> uh;
   for (int a = 0; a < 6; ++a) uh[a] = held_value_[d[static_cast<std::size_t>(a)]];
   for (int col : columns) {
     const double s = sigma * V.col(col).dot(uh);
     for (int a = 0; a < 6; ++a) held_term_[d[static_cast<std::size_t>(a)]] += s * V(a, col);
   }
-  if (from == BeamState::intact) broken_.push_back(beam);
-  states_[static_cast<std::size_t>(beam)] = to;
   if (w.empty()) return;  // both ends held: the reduced matrix does not change
   SpdSolver::Matrix W(n_free_dofs(), static_cast<Eigen::Index>(columns.size()));
   W.setFromTriplets(w.begin(), w.end());
   solver_->modify(W, sigma);
+}
+
+void BeamMechanics::change_state(int beam, BeamState to) {
+  const BeamState from = states_[static_cast<std::size_t>(beam)];
+  if (from == to) return;
+  // K_e(from) - K_e(to) (or the reverse) is a subset of the columns of beam_element_factor: the
+  // normal spring (0) and the bending (1, 2). An intact beam carries its softening factor on all
+  // three; a contact has the unsoftened normal spring (a closed crack transmits the rock's stiffness).
+  const double softening = softening_[static_cast<std::size_t>(beam)];
+  if (from == BeamState::intact && to == BeamState::contact) {
+    modify_beam(beam, {1, 2}, softening, -1);
+    if (softening != 1.0) modify_beam(beam, {0}, 1.0 - softening, +1);
+  } else if (from == BeamState::intact && to == BeamState::open) {
+    modify_beam(beam, {0, 1, 2}, softening, -1);
+  } else if (from == BeamState::contact && to == BeamState::open) {
+    modify_beam(beam, {0}, 1.0, -1);
+  } else if (from == BeamState::open && to == BeamState::contact) {
+    modify_beam(beam, {0}, 1.0, +1);
+  } else {
+    assert(false && "change_state: a broken beam cannot heal");
+  }
+  if (from == BeamState::intact) {
+    broken_.push_back(beam);
+    softening_[static_cast<std::size_t>(beam)] = 1.0;
+  }
+  states_[static_cast<std::size_t>(beam)] = to;
+}
+
+void BeamMechanics::soften_beam(int beam, double stiffness_factor) {
+  if (beam < 0 || beam >= lattice_.n_beams())
+    throw hm::InputError("beam = " + std::to_string(beam) + ", allowed: 0 <= beam < " + std::to_string(lattice_.n_beams()));
+  if (states_[static_cast<std::size_t>(beam)] != BeamState::intact)
+    throw hm::InputError("beam " + std::to_string(beam) + " is broken, allowed: an intact beam");
+  const double now = softening_[static_cast<std::size_t>(beam)];
+  if (!(stiffness_factor > 0.0 && stiffness_factor < now))
+    throw hm::InputError("stiffness_factor = " + hm::core::format_value(stiffness_factor) +
+                         ", allowed: 0 < stiffness_factor < the beam's current " + hm::core::format_value(now));
+  modify_beam(beam, {0, 1, 2}, now - stiffness_factor, -1);
+  softening_[static_cast<std::size_t>(beam)] = stiffness_factor;
 }
 
 void BeamMechanics::remove_normal_spring(int beam) {
@@ -574,7 +602,8 @@ void BeamMechanics::set_external_forces(const Eigen::VectorXd& forces) {
 
 BeamParameters BeamMechanics::beam_parameters(int beam) const {
   BeamParameters p = parameters_;
-  p.normal_stiffness = normal_stiffness_[static_cast<std::size_t>(beam)];
+  // Times 1 for every beam of a brittle lattice: bit for bit the unsoftened constants.
+  p.normal_stiffness = normal_stiffness_[static_cast<std::size_t>(beam)] * softening_[static_cast<std::size_t>(beam)];
   return p;
 }
 
@@ -695,6 +724,7 @@ void BeamMechanics::save_state(core::StateWriter& w) const {
   w.put("mechanics.displacement", displacement_);
   w.put("mechanics.broken", broken_);
   w.put("mechanics.springs", springs_);
+  w.put("mechanics.softening", softening_);
   w.put("mechanics.solver", solver_->name());
   solver_->save_state(w);
 }
@@ -724,6 +754,8 @@ void BeamMechanics::restore_state(core::StateReader& r) {
   check(displacement_.size() == static_cast<Eigen::Index>(n_dofs), "mechanics.displacement");
   r.get("mechanics.broken", broken_);
   r.get("mechanics.springs", springs_);
+  r.get("mechanics.softening", softening_);
+  check(softening_.size() == states_.size(), "mechanics.softening");
   std::string solver;
   r.get("mechanics.solver", solver);
   check(solver == solver_->name(), "mechanics.solver");

@@ -72,6 +72,9 @@ struct RunCase {
   /// Beam strengths (means from [physics]) and the break loop's crack-tip rule; used when enabled.
   hm::lattice2d::StrengthSpec strength;
   hm::lattice2d::BreakLoopOptions break_loop;
+  /// The tension law and, for the saw-tooth law, its fracture energy and teeth.
+  hm::lattice2d::FractureLaw fracture_law = hm::lattice2d::FractureLaw::brittle;
+  hm::lattice2d::SawtoothLawOptions sawtooth;
   /// Pre-cut cracks: the beams each segment crosses are broken before the first step (notch.hpp).
   std::vector<hm::lattice2d::NotchSegment> notches;
   RunOutput output;

@@ -23,6 +23,9 @@
 ///                  radial|secondary, extent, angle, modes;
 ///   fracture_summary.csv  per output time: counts of fractures, radial ones, those reaching the outer
 ///                  boundary, secondary ones, arms crossing r = R_i + (1 - R_i)/4, tensile/shear breaks.
+/// With [fracture] law = "sawtooth", also teeth.csv (break_log.hpp's write_tooth_log, load column
+/// "time"): every tooth that gave way, written when the run ends; and the VTK beam field
+/// stiffness_factor (1 intact, between 0 and 1 softened, 0 broken).
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -79,6 +82,8 @@ class RunRecorder {
   Breakdown breakdown_;
   double last_p_h_ = 0.0;
   std::vector<hm::lattice2d::BreakEvent> breaks_;
+  bool sawtooth_ = false;                           // law = "sawtooth": teeth.csv
+  std::vector<hm::lattice2d::ToothEvent> teeth_;    // the model's tooth log at the last record()
   std::vector<hm::lattice2d::FractureSnapshot> fractures_;
   std::vector<std::size_t> fracture_log_sizes_;  // break-log length at each snapshot
   std::ofstream series_file_, radial_file_, breaks_file_, pressure_file_;

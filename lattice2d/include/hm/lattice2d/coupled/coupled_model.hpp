@@ -167,6 +167,8 @@ struct CoupledStepSummary {
   std::vector<double> pressure_history;
   FlowStepSummary flow;                ///< the last flow solve (volumes of this step, balance)
   int n_breaks = 0;                    ///< beams broken in this step (all passes)
+  int n_teeth = 0;                     ///< saw-tooth law: teeth given way in this step (breaks not included)
+  double first_event_ratio = 0.0;      ///< failure ratio of the step's first break or tooth (0 if none)
   int n_broken = 0;                    ///< beams broken since t = 0, after this step
   double seconds = 0.0;             ///< wall time of the step, of which:
   double mechanics_seconds = 0.0;   ///< BeamMechanics::solve (back-substitutions), also inside break loops
@@ -228,6 +230,16 @@ class CoupledModel {
   /// options. Call before the first step.
   void enable_fracture(BeamStrengths strengths, const BreakLoopOptions& options = {});
   bool fracture_enabled() const { return fracture_ != nullptr; }
+  /// Replaces the brittle beam by the saw-tooth law (sawtooth_law.hpp): tension on each beam's axial
+  /// stress against its current tooth, a beam stepped down tooth by tooth (logged in tooth_log()) and
+  /// broken after its last; the break loop's crack-tip factor is then not used. Call after
+  /// enable_fracture (its tensile strengths are the f_t) and before the first step; throws
+  /// hm::InputError otherwise or for invalid options.
+  void use_sawtooth_law(const SawtoothLawOptions& options);
+  /// The saw-tooth law's state (null under the brittle law).
+  const SawtoothLaw* sawtooth_law() const { return fracture_ ? fracture_->sawtooth.get() : nullptr; }
+  /// Every tooth given way so far (saw-tooth law), in order; ToothEvent::load is the time of its step.
+  const std::vector<ToothEvent>& tooth_log() const { return tooth_log_; }
   /// Breaks `beams` before the first step: pre-cut cracks ([fracture] notch, notch.hpp). Each becomes
   /// open (or contact) as a break makes it, is logged at t = 0 with mode none and ratio 0 (it did not
   /// fail), and the flow sees it as broken; the rest state (settle) is then that of the notched rock.
@@ -306,8 +318,9 @@ class CoupledModel {
   /// failure check sees them: the beams' forces from the whole displacement (the rest state under an
   /// in-situ field plus the increment since), V_i of the undeformed dual like the break loop's.
   ParticleStress particle_stress() const;
-  /// Every beam's failure ratio under the break loop's check (max(sigma_1/T_u, sigma_CC/C_u) with the
-  /// crack-tip factor; a beam breaks at >= 1), 0 for broken beams. Empty when fracture is off.
+  /// Every beam's failure ratio under the break loop's check (failure_ratios of fracture.hpp: with the
+  /// crack-tip factor, or the saw-tooth law's; a beam gives way at >= 1), 0 for broken beams. Empty
+  /// when fracture is off.
   Eigen::VectorXd failure_ratio() const;
 
  private:
@@ -351,9 +364,11 @@ class CoupledModel {
   struct FractureSetup {
     BeamStrengths strengths;
     BreakLoopOptions options;
+    std::unique_ptr<SawtoothLaw> sawtooth;  // null: the brittle beam
   };
   std::unique_ptr<FractureSetup> fracture_;
   std::vector<BreakEvent> break_log_;
+  std::vector<ToothEvent> tooth_log_;
   bool unloaded_ = true;  // BoundaryConditions::is_unloaded: the rest state is u = 0
   bool at_rest_ = false;  // settle() has run
   int n_cut_ = 0;         // pre-cut beams (cut_beams), the head of break_log_

@@ -41,8 +41,15 @@ class FailureCriterion {
   /// max(sigma_1 / T_u, sigma_CC / C_u); mode none below 1, else the larger criterion (tensile on a tie).
   hm::analytic::FailureCheck check(double sigma_1, double sigma_3, double tensile_strength,
                                    double compressive_strength) const {
-    const double tensile = sigma_1 / tensile_strength;
-    const double shear = (k_squared_ * sigma_1 - sigma_3) / compressive_strength;
+    return combine(sigma_1 / tensile_strength, shear_ratio(sigma_1, sigma_3, compressive_strength));
+  }
+  /// sigma_CC / C_u of Eq. 11 alone.
+  double shear_ratio(double sigma_1, double sigma_3, double compressive_strength) const {
+    return (k_squared_ * sigma_1 - sigma_3) / compressive_strength;
+  }
+  /// The check from a tensile and a shear ratio (the saw-tooth law drives tension by the beam's own
+  /// axial stress): their maximum, mode as check().
+  static hm::analytic::FailureCheck combine(double tensile, double shear) {
     const double ratio = std::max(tensile, shear);
     if (ratio < 1.0) return {FailureMode::none, ratio};
     return {tensile >= shear ? FailureMode::tensile : FailureMode::shear, ratio};

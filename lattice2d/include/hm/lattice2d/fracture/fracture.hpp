@@ -23,6 +23,7 @@
 
 #include "hm/lattice2d/geometry/dual_graph.hpp"
 #include "hm/lattice2d/fracture/failure.hpp"
+#include "hm/lattice2d/fracture/sawtooth_law.hpp"
 #include "hm/lattice2d/geometry/lattice.hpp"
 #include "hm/lattice2d/mechanics/mechanics.hpp"
 #include "hm/lattice2d/mechanics/particle_stress.hpp"
@@ -38,8 +39,9 @@ namespace hm::lattice2d {
 struct BreakLoopOptions {
   /// Crack-tip factor (L/2L_m)^(1/2) of Fig. 2 and its L_m (particle_stress.hpp). Validated with these.
   CrackTipOptions crack_tip;
-  /// Cap on the beams broken by one call; reaching it is reported (status break_cap), never thrown.
-  /// Our choice 1e6 (more than the beams of the paper's largest lattice). Allowed: >= 1.
+  /// Cap on the beams broken (and, under the saw-tooth law, teeth given way) by one call; reaching it
+  /// is reported (status break_cap), never thrown. Our choice 1e6 (more than the beams of the paper's
+  /// largest lattice). Allowed: >= 1.
   int max_breaks = 1000000;
 
   /// Throws hm::InputError "break_loop.field = value, allowed: rule".
@@ -62,6 +64,8 @@ constexpr auto enum_names(BreakLoopStatus) {
 struct BreakLoopSummary {
   BreakLoopStatus status = BreakLoopStatus::stable;
   int n_breaks = 0;              ///< beams broken by this call
+  int n_teeth = 0;               ///< teeth given way by this call (saw-tooth law; a beam's last is also a break)
+  double first_ratio = 0.0;      ///< failure ratio of the call's first break or tooth (0 if none)
   int n_solves = 0;              ///< BeamMechanics::solve() calls (n_breaks + 1 when stable)
   /// Largest failure ratio max(sigma_1/T_u, sigma_CC/C_u) over intact beams at the last solve, at
   /// the judged stress (stress_scale x reference): < 1 when stable.
@@ -92,6 +96,13 @@ ParticleStress current_particle_stress(const BeamMechanics& mechanics, const Dua
 BeamStress current_beam_stress(const BeamMechanics& mechanics, const DualGraph& dual,
                                const CrackTipOptions& crack_tip = {}, double stress_scale = 1.0);
 
+/// Every beam's failure ratio under the break loop's check of `mechanics`' current solution (a beam
+/// fails at >= 1), 0 for broken beams: max(sigma_1 / T_u, sigma_CC / C_u) with the crack-tip factor
+/// (brittle, `law` null), or, under the saw-tooth `law`, max(axial stress / its tooth's strength,
+/// sigma_CC / C_u) without it.
+Eigen::VectorXd failure_ratios(const BeamMechanics& mechanics, const DualGraph& dual, const BeamStrengths& strengths,
+                               const CrackTipOptions& crack_tip, const SawtoothLaw* law = nullptr);
+
 /// The break loop of Section 2.1: solve; judge every intact beam on stress_scale x (its beam stress)
 /// against its own strengths (Eq. 11 and the tensile criterion, evaluate_failure); if any ratio >= 1
 /// break the single beam most over its threshold (select_beam_to_break; ties to the lowest index) with
@@ -108,6 +119,18 @@ BeamStress current_beam_stress(const BeamMechanics& mechanics, const DualGraph& 
 /// negative or non-finite stress_scale, or strengths not sized one per beam.
 BreakLoopSummary break_until_stable(BeamMechanics& mechanics, const DualGraph& dual, const BeamStrengths& strengths,
                                     const BreakLoopOptions& options, double load, std::vector<BreakEvent>& log,
+                                    double stress_scale = 1.0);
+
+/// The same loop under the saw-tooth law (sawtooth_law.hpp; `law` built for this mechanics' lattice and
+/// its current softening): an intact beam fails in tension when its axial stress reaches its current
+/// tooth's strength (ratio = stress_scale x axial stress / strength), in shear by Eq. 11 on the particle
+/// stresses without the crack-tip factor (options.crack_tip is not used). The beam most over its
+/// threshold gives way: a tensile failure is a ToothEvent in `teeth` and steps the beam down to the next
+/// tooth (BeamMechanics::soften_beam) or, on the last tooth, breaks it; a beam that breaks (last tooth,
+/// or shear) is a BreakEvent in `log`, with its particle stresses, ratio and crack-tip factor 1.
+BreakLoopSummary break_until_stable(BeamMechanics& mechanics, const DualGraph& dual, const BeamStrengths& strengths,
+                                    SawtoothLaw& law, const BreakLoopOptions& options, double load,
+                                    std::vector<BreakEvent>& log, std::vector<ToothEvent>& teeth,
                                     double stress_scale = 1.0);
 
 // ---------------------------------------------------------------------------------------------------

@@ -53,6 +53,12 @@ struct BeamTeeth {
 BeamTeeth sawtooth_teeth(double axial_modulus, double tensile_strength, double fracture_energy, double length,
                          const SawtoothSpec& spec = {});
 
+/// The beam is too long for its G_f (eps_u <= eps_0, L >= 2 E_n G_f / f_t^2): one tooth. No validation.
+bool is_snap_back(double axial_modulus, double tensile_strength, double fracture_energy, double length);
+/// The strength of the first tooth, sawtooth_teeth(...).strength[0], without the other teeth: f_t, or
+/// sqrt(2 E_n G_f / L) for a beam too long for its G_f. No validation.
+double first_tooth_strength(double axial_modulus, double tensile_strength, double fracture_energy, double length);
+
 /// The energy per unit volume the beam releases when taken through all its teeth:
 /// sum_i (1/2)(E_i - E_{i+1}) (f_i / E_i)^2, E_n = 0 after the last tooth.
 double released_energy_density(const BeamTeeth& teeth, double axial_modulus);

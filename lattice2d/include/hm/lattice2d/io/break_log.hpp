@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "hm/lattice2d/fracture/failure.hpp"
+#include "hm/lattice2d/fracture/sawtooth_law.hpp"
 
 namespace hm::lattice2d {
 
@@ -33,5 +34,17 @@ void write_break_log_rows(std::ostream& out, const std::vector<BreakEvent>& even
 /// significant digits). Throws std::runtime_error "<path>:<line>: ..." if the file cannot be read,
 /// its header is not write_break_log's, or a row is malformed.
 std::vector<BreakEvent> read_break_log(const std::filesystem::path& path);
+
+/// Writes the saw-tooth law's tooth log (teeth.csv) as write_break_log does, one row per tooth that
+/// gave way (a beam's last tooth, stiffness_factor 0, is also its row in the break log). Columns:
+///   sequence, beam                          integers;
+///   <load_column>                           load or time;
+///   tooth                                   the tooth that gave way (0 = the intact beam);
+///   stiffness_factor                        the beam's stiffness over its intact one after it (0: broken);
+///   axial_stress                            N / d at the step (over E);
+///   ratio                                   axial stress over the tooth's strength, >= 1;
+///   energy                                  the energy the step released (over E R^2, per unit thickness).
+void write_tooth_log(const std::filesystem::path& path, const std::vector<ToothEvent>& events,
+                     const std::string& load_column = "load");
 
 }  // namespace hm::lattice2d

@@ -161,6 +161,15 @@ class BeamMechanics {
   /// Break an intact beam (no-op for a broken one); returns its new state. Throws hm::InputError
   /// "beam = b, allowed: 0 <= beam < n_beams" for a bad index.
   BeamState break_beam(int beam);
+  /// Soften an intact beam (the saw-tooth law, sawtooth.hpp): all of its stiffness (k_n and with it
+  /// the bending k_omega, Eq. 4) becomes stiffness_factor times the unsoftened one, by a rank-3
+  /// downdate of the kept factor. Allowed: 0 < stiffness_factor < the current factor (a beam only
+  /// softens); throws hm::InputError otherwise, for a bad index or a broken beam. When the beam
+  /// later breaks, its contact has the unsoftened k_n (Eqs. 9-10).
+  void soften_beam(int beam, double stiffness_factor);
+  /// The stiffness of intact beam `beam` over its unsoftened stiffness (1 unless softened; 1 for a
+  /// broken beam, whose contact is unsoftened).
+  double stiffness_factor(int beam) const { return softening_[static_cast<std::size_t>(beam)]; }
   /// Additional nodal forces (3 n_particles; e.g. pore-pressure forces, crack-face pressure), added
   /// to the boundary pressures. Components at held degrees of freedom are ignored.
   void set_external_forces(const Eigen::VectorXd& forces);
@@ -209,6 +218,8 @@ class BeamMechanics {
   void setup_system();  // free-DOF map, reduced matrix, held-term vector, factorisation
   BeamParameters beam_parameters(int beam) const;  // = beam_parameters_for(lattice_, parameters_, beam), cached k_n
   void change_state(int beam, BeamState to);
+  // sigma scale V_c V_c^T for columns c of the unsoftened intact element factor (rank <= 3).
+  void modify_beam(int beam, const std::vector<int>& columns, double scale, int sigma);
   void check_detachment(int i, int j);
   bool has_intact_beam(int particle) const;
   void move_pin();  // pure traction: re-pin on the intact body (check_detachment)
@@ -220,6 +231,7 @@ class BeamMechanics {
   MechanicsOptions options_;
   std::vector<BeamState> states_;
   std::vector<double> normal_stiffness_;  // per beam: beam_parameters_for(...).normal_stiffness (facet scaling)
+  std::vector<double> softening_;         // per beam: stiffness over the unsoftened one (soften_beam)
   std::vector<bool> held_;       // per dof
   Eigen::VectorXd held_value_;   // per dof (0 where free)
   std::vector<bool> detached_;   // per particle
