@@ -286,6 +286,16 @@ TEST_CASE("Crack-face pressure is self-equilibrated and opens the crack", "[latt
     up += to_upper * p * dual.dual_length[e] * lattice.direction(1, e);
   }
   CHECK(up == Approx(p * 0.6).epsilon(0.15));
+  // Weights scale each beam's push: all 1 is the unweighted load bit for bit, and one beam at weight 0.25
+  // leaves a quarter of its push.
+  CHECK(crack_face_forces(lattice, dual, crack, p, std::vector<double>(crack.size(), 1.0)) == f);
+  std::vector<double> weights(crack.size(), 1.0);
+  weights[0] = 0.25;
+  const Eigen::VectorXd g = crack_face_forces(lattice, dual, crack, p, weights);
+  const Eigen::VectorXd alone = crack_face_forces(lattice, dual, {crack[0]}, p);
+  // Round-off of the particles' sums of a few pushes: 1e-12 of one push.
+  CHECK((f - g - 0.75 * alone).cwiseAbs().maxCoeff() <= 1e-12 * alone.cwiseAbs().maxCoeff());
+  CHECK_THROWS_AS(crack_face_forces(lattice, dual, crack, p, {1.0}), hm::InputError);
 
   BeamMechanics m(lattice, BeamParameters{}, BoundaryConditions{});
   for (int e : crack) CHECK(m.break_beam(e) == BeamState::open);

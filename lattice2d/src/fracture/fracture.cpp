@@ -290,14 +290,23 @@ std::vector<int> beams_crossing_segment(const Lattice& lattice, const Eigen::Vec
 
 Eigen::VectorXd crack_face_forces(const Lattice& lattice, const DualGraph& dual, const std::vector<int>& crack_beams,
                                   double pressure) {
+  return crack_face_forces(lattice, dual, crack_beams, pressure, std::vector<double>(crack_beams.size(), 1.0));
+}
+
+Eigen::VectorXd crack_face_forces(const Lattice& lattice, const DualGraph& dual, const std::vector<int>& crack_beams,
+                                  double pressure, const std::vector<double>& weights) {
   if (!std::isfinite(pressure)) throw hm::InputError("pressure = " + num(pressure) + ", allowed: finite");
+  if (weights.size() != crack_beams.size())
+    throw hm::InputError("weights: " + std::to_string(weights.size()) + " values, allowed: one per crack beam (" +
+                         std::to_string(crack_beams.size()) + ")");
   assert(dual.dual_length.size() == lattice.n_beams() && "dual graph of another lattice");
   Eigen::VectorXd f = Eigen::VectorXd::Zero(3 * lattice.n_particles());
   for (std::size_t k = 0; k < crack_beams.size(); ++k) {
     const int e = crack_beams[k];
     check_beam_index(lattice, e, "crack_beams[" + std::to_string(k) + "]");
     const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
-    const Eigen::Vector2d push = pressure * dual.dual_length[e] * lattice.direction.col(e);
+    if (!std::isfinite(weights[k])) throw hm::InputError("weights[" + std::to_string(k) + "] = " + num(weights[k]) + ", allowed: finite");
+    const Eigen::Vector2d push = (weights[k] * pressure) * dual.dual_length[e] * lattice.direction.col(e);
     f.segment<2>(dof_index(i, 0)) -= push;
     f.segment<2>(dof_index(j, 0)) += push;
   }

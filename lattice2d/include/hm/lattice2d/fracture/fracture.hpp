@@ -224,6 +224,9 @@ std::vector<int> beams_crossing_segment(const Lattice& lattice, const Eigen::Vec
 /// Throws hm::InputError for a beam index out of range or a non-finite pressure.
 Eigen::VectorXd crack_face_forces(const Lattice& lattice, const DualGraph& dual, const std::vector<int>& crack_beams,
                                   double pressure);
+/// The same with beam crack_beams[k]'s pressure times weights[k] (one weight per beam, finite).
+Eigen::VectorXd crack_face_forces(const Lattice& lattice, const DualGraph& dual, const std::vector<int>& crack_beams,
+                                  double pressure, const std::vector<double>& weights);
 
 /// Opening across one broken beam.
 struct CrackOpening {
