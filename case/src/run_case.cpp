@@ -200,6 +200,11 @@ CaseKeys<RunCase> make_run_case_keys() {
             "saw-tooth law: each tooth's stiffness over the next's")
       .integer("sawtooth_teeth", [](auto& c) -> auto& { return c.sawtooth.teeth.n_teeth; }, 1, 100, "1 ... 100",
                "saw-tooth law: teeth before the beam breaks")
+      .real("sawtooth_strength_factor", [](auto& c) -> auto& { return c.sawtooth.strength_factor; }, "> 0, finite",
+            "saw-tooth law: a beam's f_t over its strength drawn around [physics] tensile_strength (the default "
+            "makes uniaxial tension of an unnotched lattice peak at T_u; docs/fracture_law.md)",
+            [](const RunCase&) { return lt::calibrated_sawtooth_strength_factor(); },
+            "`" + toml_real(lt::calibrated_sawtooth_strength_factor()) + "` (calibrated)")
       .key({"notch", "list of [x0, y0, x1, y1]", "`[]`",
             "each 4 finite numbers, two distinct ends inside the domain (at most 1 from the centre); only with enabled = true",
             "pre-cut cracks: the beams each segment crosses are broken before the first step (breaks.csv, t = 0, "
@@ -247,6 +252,9 @@ CaseKeys<RunCase> make_run_case_keys() {
           const double a = c.sawtooth.teeth.reduction;
           if (!(std::isfinite(a) && a > 1.0))
             fracture.fail("sawtooth_reduction = " + core::format_value(a) + ", allowed: > 1, finite");
+          const double k = c.sawtooth.strength_factor;
+          if (!(std::isfinite(k) && k > 0.0))
+            fracture.fail("sawtooth_strength_factor = " + core::format_value(k) + ", allowed: > 0, finite");
         } else if (g_f != 0.0) {
           fracture.fail("fracture_energy = " + core::format_value(g_f) +
                         ", allowed: 0 with law = \"brittle\" (a fracture energy belongs to law = \"sawtooth\")");

@@ -90,6 +90,7 @@ TEST_CASE("A saw-tooth run books each broken beam's G_f d in teeth.csv and repea
   CHECK_THAT(config, Catch::Contains("fracture_energy = 2.34e-09"));
   CHECK_THAT(config, Catch::Contains("fracture_check = \"at_convergence\""));
   CHECK_THAT(config, Catch::Contains("overshoot_tolerance = 0.02"));
+  CHECK_THAT(config, Catch::Contains("sawtooth_strength_factor = 1.36"));
   REQUIRE(run_hmlattice("run run/config.toml --out again", dir.path).exit_code == 0);
   CHECK(slurp(dir.path / "again" / "teeth.csv") == slurp(dir.path / "run" / "teeth.csv"));
   CHECK(slurp(dir.path / "again" / "breaks.csv") == slurp(dir.path / "run" / "breaks.csv"));
@@ -109,7 +110,9 @@ TEST_CASE("A bad saw-tooth setting is one line of bad input naming [fracture] an
            {"law = \"sawtooth\"\nfracture_energy = 1e-9\nsawtooth_reduction = 1.0\n",
             "[fracture] sawtooth_reduction = 1, allowed: > 1, finite"},
            {"law = \"sawtooth\"\nfracture_energy = 1e-9\nsawtooth_teeth = 0\n",
-            "[fracture] sawtooth_teeth = 0, allowed: 1 ... 100"}}) {
+            "[fracture] sawtooth_teeth = 0, allowed: 1 ... 100"},
+           {"law = \"sawtooth\"\nfracture_energy = 1e-9\nsawtooth_strength_factor = 0\n",
+            "[fracture] sawtooth_strength_factor = 0, allowed: > 0, finite"}}) {
     dir.write("case.toml", sawtooth_case(fracture));
     const auto r = run_hmlattice("run case.toml --out run", dir.path);
     INFO(fracture << r.err);

@@ -154,13 +154,16 @@ TEST_CASE("One beam pulled through its teeth does the work G_f d that the law di
   }
 }
 
-TEST_CASE("The saw-tooth law refuses a fracture energy that is not positive", "[lattice2d][fracture]") {
+TEST_CASE("The saw-tooth law refuses a fracture energy or strength factor that is not positive", "[lattice2d][fracture]") {
   SawtoothLawOptions options;
   for (double bad : {0.0, -1e-9, std::nan("")}) {
     options.fracture_energy = bad;
     CHECK_THROWS_WITH(options.validate(), Catch::Contains("sawtooth_law.fracture_energy"));
   }
   options.fracture_energy = 1e-9;
+  options.strength_factor = 0.0;
+  CHECK_THROWS_WITH(options.validate(), Catch::Contains("sawtooth_law.strength_factor = 0"));
+  options.strength_factor = 1.0;
   options.teeth.n_teeth = 0;
   CHECK_THROWS_WITH(options.validate(), Catch::Contains("sawtooth_law.sawtooth.n_teeth"));
 }

@@ -419,6 +419,91 @@ BenchmarkResult uniaxial_tension(const BenchmarkContext& ctx) {
   return res;
 }
 
+// --- uniaxial tension under the saw-tooth law ------------------------------------------------------
+
+// The saw-tooth law's peak in uniaxial tension of an unnotched square, per seed, with the calibrated
+// strength factor: the lattice should peak at T_u at the calibration's resolution (N = 1e4).
+BenchmarkResult sawtooth_uniaxial_tension(const BenchmarkContext& ctx) {
+  BenchmarkResult res;
+  const bool paper = ctx.tier == Tier::paper;
+  const l2::StrengthSpec strength_spec;  // Table 1 T_u, C_u, mu_i; uniform +-5%
+  const double t_u = strength_spec.tensile_strength;
+  l2::SawtoothLawOptions law_options;
+  law_options.fracture_energy = 2.34e-9;  // K_Ic = 0.5 MPa m^1/2 on Table 1's rock (docs/fracture_law.md)
+  law_options.strength_factor = l2::calibrated_sawtooth_strength_factor();
+  Table table{"Uniaxial tension of an unnotched square under the saw-tooth law (G_f/(E R) = 2.34e-9, beam strengths " +
+                  fmt(law_options.strength_factor) + " x the drawn T_u)",
+              {"N", "seed", "E' (elastic slope)", "first tooth: mean stress / T_u", "peak mean stress / T_u",
+               "strain at peak / (T_u/E')", "teeth", "beams broken", "seconds"},
+              {}};
+  std::vector<double> peaks;
+  // Quick: one seed at N = 4000; paper: the calibration's own setting, N = 1e4, and two more seeds.
+  const long long n_particles = paper ? 10000 : 4000;
+  const std::vector<std::uint64_t> seeds = paper ? std::vector<std::uint64_t>{2, 3, 4, 5, 6} : std::vector<std::uint64_t>{2};
+  for (std::uint64_t seed : seeds) {
+    l2::LatticeSpec spec;
+    spec.domain = l2::DomainShape::rectangle;
+    spec.width = 1.0;
+    spec.height = 1.0;
+    spec.n_particles = n_particles;
+    spec.seed = seed;
+    const l2::Lattice lattice = l2::generate_lattice(spec);
+    const l2::DualGraph dual = l2::build_dual_graph(lattice);
+    std::vector<int> top;
+    l2::BeamMechanics m(lattice, beam_parameters(), uniaxial_pull(lattice, 1.0, &top));
+    l2::StrengthSpec strength_seeded = strength_spec;
+    strength_seeded.seed = seed;
+    l2::BeamStrengths strengths = l2::draw_beam_strengths(strength_seeded, lattice.n_beams());
+    for (int e = 0; e < lattice.n_beams(); ++e) {  // grips, as in uniaxial_tension
+      const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
+      if (0.5 * std::abs(lattice.points(1, i) + lattice.points(1, j)) > 0.4 * spec.height) {
+        strengths.tensile[e] *= 10;
+        strengths.compressive[e] *= 10;
+      }
+    }
+    l2::SawtoothLaw law(lattice, dual, beam_parameters(), strengths, law_options);
+    m.solve();
+    const double e_prime = top_force(m, top) / spec.width;
+    l2::LoadSteppingOptions options;
+    options.load_increment = 0.05 * t_u / e_prime;
+    options.max_load = 20 * t_u / e_prime;
+    options.max_breaks = 200000;
+    double peak = 0, peak_strain = 0;
+    const auto result =
+        l2::run_load_stepping(m, dual, strengths, law, options, [&](const l2::LoadStep& s, const l2::BeamMechanics& mm) {
+          const double stress = s.load * top_force(mm, top) / spec.width;
+          if (stress > peak) peak = stress, peak_strain = s.load;
+          return !(s.n_breaks_total > 0 && stress < 0.02 * peak);  // separated
+        });
+    const double first = result.teeth.empty() ? 0.0 : result.teeth.front().load * e_prime;
+    peaks.push_back(peak / t_u);
+    table.rows.push_back({std::to_string(lattice.n_particles()), std::to_string(seed), fmt(e_prime), fmt(first / t_u),
+                          fmt(peak / t_u), fmt(peak_strain * e_prime / t_u), std::to_string(result.teeth.size()),
+                          std::to_string(result.breaks.size()), fmt(result.seconds)});
+  }
+  double mean = 0;
+  for (double p : peaks) mean += p / static_cast<double>(peaks.size());
+  // At N = 1e4 (the calibration's resolution) the peak is T_u within the seeds' scatter; the quick tier's
+  // N = 4000 is coarser and peaks lower (0.87 T_u measured with the factor 1.258), so it is shown only.
+  res.metrics.push_back({.name = "peak mean stress / T_u, mean over seeds (N = " + std::to_string(n_particles) + ")",
+                         .value = mean, .reference = 1.0, .tolerance = 0.03, .comparison = Comparison::rel_error,
+                         .justification = paper ? "the calibration's own setting: seeds 2-4 scatter by < 1%, and the "
+                                                  "factor was set by secant steps to within ~1%"
+                                                : "shown: the calibration holds at N = 1e4; the peak of this coarser "
+                                                  "lattice is lower (docs/fracture_law.md)",
+                         .gating = paper});
+  res.tables.push_back(table);
+  res.notes.push_back(
+      "The saw-tooth law's first tooth is at the beam's f_t in its own axial stress N/d. A beam along the load "
+      "in a uniform uniaxial stress sigma has axial stress E_n eps_yy = sqrt(3) k_n (1 - nu^2) sigma / E, about "
+      "1.5 sigma with the calibrated k_n = 0.924 and nu = 0.25, and the random lattice's beam stresses scatter "
+      "around it: the first tooth comes at ~0.4-0.5 T_u of the mean stress, and without scaling the lattice "
+      "peaks at 0.795 T_u (N = 1e4, seeds 2-4). The beams' strengths are therefore the drawn ones times "
+      "calibrated_sawtooth_strength_factor() = " + fmt(l2::calibrated_sawtooth_strength_factor()) +
+      ", set so that this test peaks at T_u at N = 1e4.");
+  return res;
+}
+
 // --- thick-walled cylinder: first break ----------------------------------------------------------
 
 BenchmarkResult cylinder_first_break(const BenchmarkContext& ctx) {
@@ -562,6 +647,9 @@ void add_lattice2d_fracture_benchmarks(std::vector<Benchmark>& into) {
                   "A square pulled by prescribed displacements with the break loop at each load: peak mean stress "
                   "against T_u and a crack across the load direction.",
                   Tier::quick, uniaxial_tension});
+  into.push_back({"lattice2d.sawtooth_uniaxial_tension", "Lattice: uniaxial tension under the saw-tooth law",
+                  "The saw-tooth law's peak stress in uniaxial tension of an unnotched square, against T_u.",
+                  Tier::quick, sawtooth_uniaxial_tension});
   into.push_back({"lattice2d.cylinder_first_break", "Lattice: thick-walled cylinder, first break (Lamé)",
                   "The annulus R_i = 0.138 under increasing internal pressure (free outer boundary): the first break's "
                   "pressure, place, mode and direction against Lamé and the tensile criterion.",

@@ -208,8 +208,10 @@ BreakLoopSummary break_until_stable(BeamMechanics& mechanics, const DualGraph& d
 
 // --- load stepping -----------------------------------------------------------------------------------
 
-LoadingResult run_load_stepping(BeamMechanics& mechanics, const DualGraph& dual, const BeamStrengths& strengths,
-                                const LoadSteppingOptions& options, const LoadStepObserver& observer) {
+namespace {
+
+LoadingResult run_loading(BeamMechanics& mechanics, const DualGraph& dual, const BeamStrengths& strengths,
+                          SawtoothLaw* law, const LoadSteppingOptions& options, const LoadStepObserver& observer) {
   const auto start = std::chrono::steady_clock::now();
   options.validate();
   LoadingResult result;
@@ -231,15 +233,18 @@ LoadingResult run_load_stepping(BeamMechanics& mechanics, const DualGraph& dual,
     const bool due = reference_ratio < 0.0 || load * reference_ratio >= 1.0 || !options.snap_to_breaks;
     if (due) {
       BreakLoopOptions loop = options.break_loop;
-      loop.max_breaks = std::min(loop.max_breaks, options.max_breaks - static_cast<int>(result.breaks.size()));
-      const BreakLoopSummary s = break_until_stable(mechanics, dual, strengths, loop, load, result.breaks, load);
+      const int events = static_cast<int>(result.breaks.size() + result.teeth.size());
+      loop.max_breaks = std::min(loop.max_breaks, options.max_breaks - events);
+      const BreakLoopSummary s =
+          law ? run_break_loop(mechanics, dual, strengths, law, loop, load, result.breaks, &result.teeth, load)
+              : run_break_loop(mechanics, dual, strengths, nullptr, loop, load, result.breaks, nullptr, load);
       result.n_solves += s.n_solves;
-      record.n_breaks = s.n_breaks;
+      record.n_breaks = s.n_breaks + s.n_teeth;
       record.status = s.status;
       reference_ratio = s.max_reference_ratio;
       if (!s.is_stable()) result.message = s.message;
     }
-    record.n_breaks_total = static_cast<int>(result.breaks.size());
+    record.n_breaks_total = static_cast<int>(result.breaks.size() + result.teeth.size());
     record.max_ratio = load * reference_ratio;
     record.next_break_load = reference_ratio > 0.0 ? 1.0 / reference_ratio : inf;
     result.steps.push_back(record);
@@ -273,6 +278,18 @@ LoadingResult run_load_stepping(BeamMechanics& mechanics, const DualGraph& dual,
   }
   result.seconds = seconds_since(start);
   return result;
+}
+
+}  // namespace
+
+LoadingResult run_load_stepping(BeamMechanics& mechanics, const DualGraph& dual, const BeamStrengths& strengths,
+                                const LoadSteppingOptions& options, const LoadStepObserver& observer) {
+  return run_loading(mechanics, dual, strengths, nullptr, options, observer);
+}
+
+LoadingResult run_load_stepping(BeamMechanics& mechanics, const DualGraph& dual, const BeamStrengths& strengths,
+                                SawtoothLaw& law, const LoadSteppingOptions& options, const LoadStepObserver& observer) {
+  return run_loading(mechanics, dual, strengths, &law, options, observer);
 }
 
 // --- crack faces -------------------------------------------------------------------------------------

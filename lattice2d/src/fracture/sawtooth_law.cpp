@@ -13,12 +13,17 @@ void SawtoothLawOptions::validate() const {
   if (!(std::isfinite(fracture_energy) && fracture_energy > 0.0))
     throw hm::InputError("sawtooth_law.fracture_energy = " + core::format_value(fracture_energy) +
                          ", allowed: > 0, finite");
+  if (!(std::isfinite(strength_factor) && strength_factor > 0.0))
+    throw hm::InputError("sawtooth_law.strength_factor = " + core::format_value(strength_factor) +
+                         ", allowed: > 0, finite");
   try {
     teeth.validate();
   } catch (const hm::InputError& e) {
     throw hm::InputError(std::string("sawtooth_law.") + e.what());
   }
 }
+
+double calibrated_sawtooth_strength_factor() { return 1.36; }
 
 SawtoothLaw::SawtoothLaw(const Lattice& lattice, const DualGraph& dual, const BeamParameters& parameters,
                          const BeamStrengths& strengths, const SawtoothLawOptions& options)
@@ -50,7 +55,7 @@ SawtoothLaw::SawtoothLaw(const Lattice& lattice, const DualGraph& dual, const Be
                            "voronoi_facet with facet_floor > 0)");
     section_[k] = d;
     axial_modulus_[k] = k_n * length / d;
-    tensile_[k] = strengths.tensile[e];
+    tensile_[k] = options_.strength_factor * strengths.tensile[e];
     first_strength_[k] = first_tooth_strength(axial_modulus_[k], tensile_[k], g_f, length);
     n_brittle_ += is_snap_back(axial_modulus_[k], tensile_[k], g_f, length);
   }

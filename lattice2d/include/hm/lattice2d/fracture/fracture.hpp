@@ -164,8 +164,8 @@ struct LoadSteppingOptions {
 struct LoadStep {
   int step = 0;                  ///< 0, 1, ...
   double load = 0.0;             ///< load factor lambda
-  int n_breaks = 0;              ///< beams broken at this load
-  int n_breaks_total = 0;        ///< beams broken so far
+  int n_breaks = 0;              ///< beams broken at this load (and teeth given way, under the saw-tooth law)
+  int n_breaks_total = 0;        ///< beams broken so far (and teeth given way, under the saw-tooth law)
   double max_ratio = 0.0;        ///< largest failure ratio of the intact beams at lambda (< 1 when stable)
   double next_break_load = 0.0;  ///< 1 / max_reference_ratio: lambda at which the next beam breaks (inf if none)
   BreakLoopStatus status = BreakLoopStatus::stable;
@@ -196,6 +196,7 @@ struct LoadingResult {
   LoadingStatus status = LoadingStatus::reached_max_load;
   std::vector<LoadStep> steps;     ///< one per step, in order
   std::vector<BreakEvent> breaks;  ///< every break in order; BreakEvent::load = lambda (non-decreasing)
+  std::vector<ToothEvent> teeth;   ///< under the saw-tooth law, every tooth that gave way, in order
   int n_solves = 0;
   double seconds = 0.0;
   std::string message;             ///< why, when not reached_max_load
@@ -207,6 +208,12 @@ struct LoadingResult {
 /// Throws hm::InputError for invalid options or strengths; numerical trouble is in the status.
 LoadingResult run_load_stepping(BeamMechanics& mechanics, const DualGraph& dual, const BeamStrengths& strengths,
                                 const LoadSteppingOptions& options, const LoadStepObserver& observer = {});
+/// The same under the saw-tooth `law` (break_until_stable's saw-tooth overload at every step); a step's
+/// n_breaks and the cap count teeth and breaks. A softened beam is linear in the load factor like an
+/// intact one, so the homogeneity (and snap_to_breaks) holds.
+LoadingResult run_load_stepping(BeamMechanics& mechanics, const DualGraph& dual, const BeamStrengths& strengths,
+                                SawtoothLaw& law, const LoadSteppingOptions& options,
+                                const LoadStepObserver& observer = {});
 
 // ---------------------------------------------------------------------------------------------------
 // Cracks made of broken beams, pressurised on their faces (Appendix C)
