@@ -123,15 +123,19 @@ CaseKeys<RunCase> make_run_case_keys() {
   k.table("coupling", "coupling.")
       .choice("split", [](auto& c) -> auto& { return c.coupling.split; },
               "the operator split of Section 2.3")
-      .real("psi", [](auto& c) -> auto& { return c.coupling.terms.psi; }, ">= 0, finite; 0 for split = \"drained\"",
+      .real("psi", [](auto& c) -> auto& { return c.coupling.terms.psi; },
+            "0 ... 1e6 (the paper's study ends at 10; 1e12 swamps the beams); 0 for split = \"drained\"",
             "Psi, the undrained split's feedback (Eq. 20)", [](const RunCase& c) { return lt::default_psi(c.coupling.split); },
             "`" + toml_real(lt::CouplingTerms{}.psi) + "`; `0` for split = \"drained\"")
-      .real("xi", [](auto& c) -> auto& { return c.coupling.terms.xi; }, "> 0, finite", "xi, scaling of the pressure force (Eq. 17)")
+      .real("xi", [](auto& c) -> auto& { return c.coupling.terms.xi; },
+            "0 < xi <= 1e3 (1 by the divergence theorem; 1e12 swamps the beams)", "xi, scaling of the pressure force (Eq. 17)")
       .choice("broken_beam_spring", [](auto& c) -> auto& { return c.coupling.terms.broken_beam_spring; },
               "the Psi spring of a beam that breaks: kept, or dropped with the beam (docs/coupling.md)")
-      .real("pressure_tolerance", [](auto& c) -> auto& { return c.coupling.pressure_tolerance; }, "0 < value < 1",
+      .real("pressure_tolerance", [](auto& c) -> auto& { return c.coupling.pressure_tolerance; },
+            "1e-10 <= value < 1 (a pass's change stalls at round-off, ~1e-11)",
             "a step has converged when the pressure's change between passes, relative to its largest value, is below this...")
-      .real("displacement_tolerance", [](auto& c) -> auto& { return c.coupling.displacement_tolerance; }, "0 < value < 1",
+      .real("displacement_tolerance", [](auto& c) -> auto& { return c.coupling.displacement_tolerance; },
+            "1e-10 <= value < 1",
             "...and the displacement's relative change is below this")
       .integer("max_iterations", [](auto& c) -> auto& { return c.coupling.max_iterations; }, 1, 1000000,
                "1 <= max_iterations <= 1e6", "cap on the passes of one step")

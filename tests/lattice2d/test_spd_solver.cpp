@@ -387,6 +387,17 @@ TEST_CASE("A singular or indefinite matrix is reported by info(), not thrown", "
     const Eigen::VectorXd x = solver.solve(s.b);
     CHECK(solver.info() != Eigen::Success);
     CHECK_FALSE(x.allFinite());
+    // The snapshot of a failed factorisation (a step's, before its first pass) and its restore: once a
+    // crash (the failed factor was left supernodal and read back as simplicial). The restored solver
+    // reports the same failure.
+    hm::core::StateWriter w;
+    solver.save_state(w);
+    CholmodSolver restored;
+    restored.compute(s.A);
+    hm::core::StateReader r(w.bytes(), "test");
+    restored.restore_state(r);
+    restored.solve(s.b);
+    CHECK(restored.info() != Eigen::Success);
   }
 }
 

@@ -18,8 +18,13 @@ void CouplingOptions::validate() const {
   terms.validate();
   if (split == CouplingSplit::drained && terms.psi != 0.0)
     throw hm::InputError("coupling.psi = " + format_value(terms.psi) + ", allowed: 0 for split = drained");
-  require_open(pressure_tolerance, "coupling.pressure_tolerance", 0.0, 1.0);
-  require_open(displacement_tolerance, "coupling.displacement_tolerance", 0.0, 1.0);
+  // A pass's relative change stalls at round-off (~1e-11 for the pressure of the Fig. 12 quick case):
+  // a tolerance below kMinCouplingTolerance could never be met.
+  for (const auto& [value, name] : {std::pair{pressure_tolerance, "pressure_tolerance"},
+                                    std::pair{displacement_tolerance, "displacement_tolerance"}})
+    if (!(value >= kMinCouplingTolerance && value < 1.0))
+      throw hm::InputError(std::string("coupling.") + name + " = " + format_value(value) + ", allowed: " +
+                           format_value(kMinCouplingTolerance) + " <= " + name + " < 1");
   require_at_least(max_iterations, "coupling.max_iterations", 1);
   if (anderson_depth < 1 || anderson_depth > 50)
     throw hm::InputError("coupling.anderson_depth = " + std::to_string(anderson_depth) + ", allowed: 1 ... 50");

@@ -10,10 +10,13 @@ namespace hm::lattice2d {
 
 void CouplingTerms::validate() const {
   using namespace hm::core;
-  require_finite(xi, "coupling.xi");
-  require_positive(xi, "coupling.xi");
-  require_finite(psi, "coupling.psi");
-  require_non_negative(psi, "coupling.psi");
+  // Plausibility bounds (coupling.hpp): beyond them the Eq. 20 springs or the Eq. 17 forces swamp the
+  // beams by so many orders that the mechanical factor loses its digits (xi or psi = 1e12 fails the
+  // first solve of the Fig. 12 quick case), and no physical setting needs them.
+  if (!(xi > 0.0 && xi <= kMaxPressureForceScale))
+    throw hm::InputError("coupling.xi = " + format_value(xi) + ", allowed: 0 < xi <= " + format_value(kMaxPressureForceScale));
+  if (!(psi >= 0.0 && psi <= kMaxSplitFeedback))
+    throw hm::InputError("coupling.psi = " + format_value(psi) + ", allowed: 0 <= psi <= " + format_value(kMaxSplitFeedback));
 }
 
 Eigen::VectorXd pressure_forces(const Lattice& lattice, const DualGraph& dual, const Eigen::VectorXd& pressure,

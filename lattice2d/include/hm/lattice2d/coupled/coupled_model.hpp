@@ -69,6 +69,10 @@ constexpr auto enum_names(CouplingPredictor) {
       {CouplingPredictor::previous, "previous"}, {CouplingPredictor::linear, "linear"}});
 }
 
+/// The smallest coupling tolerance: a pass's relative change stalls at round-off (measured ~1e-11 for
+/// the pressure of the Fig. 12 quick case, whose passes then never converge).
+inline constexpr double kMinCouplingTolerance = 1e-10;
+
 /// Options of the coupling iteration (Fig. 5). Every default is set here.
 struct CouplingOptions {
   /// The split. Default undrained (the paper's primary scheme).
@@ -77,10 +81,10 @@ struct CouplingOptions {
   /// split without the Eq. 20 feedback (default_psi gives a case reader the default of each split).
   CouplingTerms terms;
   /// Iterations stop when max|p^k - p^{k-1}| <= pressure_tolerance * max|p^k| ... Our choice 1e-6.
-  /// Allowed: 0 < pressure_tolerance < 1.
+  /// Allowed: kMinCouplingTolerance = 1e-10 <= pressure_tolerance < 1 (below, round-off stalls the passes).
   double pressure_tolerance = 1e-6;
   /// ... and max|u^k - u^{k-1}| <= displacement_tolerance * max|u^k| (x, y components). Our choice 1e-6.
-  /// Allowed: 0 < displacement_tolerance < 1.
+  /// Allowed: 1e-10 <= displacement_tolerance < 1.
   double displacement_tolerance = 1e-6;
   /// Cap on the mechanics -> flow iterations of one step (with fracture_check = at_convergence: since
   /// the last breaks). Allowed: >= 1.

@@ -19,12 +19,18 @@ namespace hm::lattice2d {
 
 /// The modelling choices of the coupling terms (the material's b and E/M come with the flow
 /// parameters, FlowParameters). Every default is set here; CouplingOptions::terms carries them.
+/// Plausibility bounds of CouplingTerms: xi is 1 by the divergence theorem, and the paper's Psi study
+/// (Fig. 8) ends at 10; a thousand and a million times these are still allowed, 1e12 makes the
+/// mechanical factor lose its digits.
+inline constexpr double kMaxPressureForceScale = 1e3;
+inline constexpr double kMaxSplitFeedback = 1e6;
+
 struct CouplingTerms {
   /// xi, scaling of the pressure force (Eq. 17). Our choice 1: by the divergence theorem xi = 1
-  /// reproduces the continuum body force -b grad p (docs/coupling.md, tested). Allowed: > 0, finite.
+  /// reproduces the continuum body force -b grad p (docs/coupling.md, tested). Allowed: 0 < xi <= 1e3.
   double xi = 1.0;
   /// Psi, feedback of the undrained split (Eq. 20); 0 is the drained split. Our choice 1.3, the
-  /// paper's near-optimum (Section 3.1, Fig. 8). Allowed: >= 0, finite.
+  /// paper's near-optimum (Section 3.1, Fig. 8). Allowed: 0 <= psi <= 1e6.
   double psi = 1.3;
   /// The borehole wall (annulus) carries the full borehole pressure p_h as a normal traction (the
   /// total-stress boundary condition), lumped half to each end of a wall beam, besides the b-weighted
