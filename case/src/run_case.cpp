@@ -86,12 +86,12 @@ CaseKeys<RunCase> make_run_case_keys() {
               "the outer boundary r = 1: traction-free or held")
       .choice("solver", [](auto& c) -> auto& { return c.mechanics.solver; },
               "the mechanics' linear solver: CHOLMOD's Cholesky factor or preconditioned CG")
-      .real("S_H", [](auto& c) -> auto& { return c.insitu.S_H; }, ">= S_h, finite",
+      .real("S_H", [](auto& c) -> auto& { return c.insitu.S_H; }, "S_h <= S_H <= 1 (over E: a stress of E strains the rock by order one)",
             "in-situ largest horizontal stress S_H/E, compression positive: the far field at rest (docs/insitu.md)")
       .real("S_h", [](auto& c) -> auto& { return c.insitu.S_h; }, "0 <= S_h <= S_H", "in-situ smallest horizontal stress S_h/E")
       .real("theta_H", [](auto& c) -> auto& { return c.insitu.theta_H_deg; }, "finite",
             "azimuth of S_H from the x axis, degrees")
-      .real("p0", [](auto& c) -> auto& { return c.insitu.p0; }, ">= 0, finite",
+      .real("p0", [](auto& c) -> auto& { return c.insitu.p0; }, "0 <= p0 <= 1 (over E)",
             "rest pore pressure p0/E: the flow's p is the deviation from it (docs/insitu.md)")
       .check([](CaseTable& mechanics, CaseTable&, RunCase& c) {
         if (c.insitu.is_zero()) return;

@@ -212,7 +212,7 @@ TEST_CASE("A fracturing borehole case of only the required keys runs to its end"
                             Catch::Contains("to try: [coupling] relaxation = \"anderson\", a smaller [numerics] dt_initial"));
 }
 
-TEST_CASE("A spring feedback, force scale or tolerance beyond its plausibility bound is refused before the run",
+TEST_CASE("A spring feedback, force scale, tolerance or in-situ stress beyond its plausibility bound is refused before the run",
           "[verification][cli]") {
   // Psi = 2^63 - 1 once crashed the run (a failed factorisation's snapshot; the crash itself is tested
   // on the solver, test_spd_solver.cpp); psi or xi = 1e12 failed the first solve, and a tolerance of
@@ -224,7 +224,11 @@ TEST_CASE("A spring feedback, force scale or tolerance beyond its plausibility b
            {{"psi = 1.3", "psi = 9223372036854775807"}, "[coupling] psi = 9223372036854775808, allowed: 0 <= psi <= 1e+06"},
            {{"psi = 1.3", "psi = 1.3\nxi = 1e12"}, "[coupling] xi = 1e+12, allowed: 0 < xi <= 1000"},
            {{"pressure_tolerance = 1e-4", "pressure_tolerance = 5e-324"},
-            "[coupling] pressure_tolerance = 5e-324, allowed: 1e-10 <= pressure_tolerance < 1"}}) {
+            "[coupling] pressure_tolerance = 5e-324, allowed: 1e-10 <= pressure_tolerance < 1"},
+           // S_H or p0 = 1e300 overflowed the rest state's loads into NaN at the first solve.
+           {{"outer = \"free\"", "outer = \"free\"\nS_H = 1e300\nS_h = 1e-3"},
+            "[mechanics] S_H = 1e+300, allowed: <= 1 (over E; the lattice is small-strain)"},
+           {{"outer = \"free\"", "outer = \"free\"\np0 = 2.0"}, "[mechanics] p0 = 2, allowed: <= 1 (over E"}}) {
     dir.write("case.toml", hm::test::edited(base, {edit}));
     const auto r = run_hmlattice("run case.toml --out run", dir.path);
     INFO("stderr: " << r.err);

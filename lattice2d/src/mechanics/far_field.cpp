@@ -22,6 +22,12 @@ void add_far_field_loads(const analytic::FarFieldStress& far, double p0, double 
   far.validate();
   core::require_finite(p0, "p0");
   if (!(p0 >= 0.0)) throw hm::InputError("p0 = " + core::format_value(p0) + ", allowed: >= 0 (compression positive)");
+  // A stress of E strains the rock by order one, far outside the small-strain lattice (a rock's in-situ
+  // stresses are ~1e-3 E); 1e300 overflowed the loads into NaN at the first solve.
+  if (far.S_H > 1.0)
+    throw hm::InputError("S_H = " + core::format_value(far.S_H) + ", allowed: <= 1 (over E; the lattice is small-strain)");
+  if (p0 > 1.0)
+    throw hm::InputError("p0 = " + core::format_value(p0) + ", allowed: <= 1 (over E; the lattice is small-strain)");
   if (!(b >= 0.0 && b <= 1.0)) throw hm::InputError("b = " + core::format_value(b) + ", allowed: 0 <= b <= 1");
   conditions.outer_stress += far_field_tensor(far) + b * p0 * Eigen::Matrix2d::Identity();
   if (domain == DomainShape::annulus) conditions.inner_pressure += (1.0 - b) * p0;

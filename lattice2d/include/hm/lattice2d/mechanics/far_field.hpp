@@ -19,7 +19,7 @@ Eigen::Matrix2d far_field_tensor(const analytic::FarFieldStress& far);
 
 /// Adds the rest state's effective loads to `conditions`: outer_stress += far_field_tensor(far) +
 /// b p0 I, and on an annulus inner_pressure += (1 - b) p0. Throws hm::InputError for an invalid
-/// `far`, p0 < 0 or not finite, or b outside [0, 1].
+/// `far`, p0 < 0 or not finite, S_H or p0 above 1 (E: a strain of order one), or b outside [0, 1].
 void add_far_field_loads(const analytic::FarFieldStress& far, double p0, double b, DomainShape domain,
                          BoundaryConditions& conditions);
 
