@@ -69,6 +69,31 @@ struct TempDir {
   void write(const std::string& file, const std::string& text) const { std::ofstream(path / file) << text; }
 };
 
+/// The Fig. 12 quick case (b = 0.2, N = 3000) to t* = `t_end` (its only output time), without VTK,
+/// with `fracture` added at the top of its [fracture] table: the short run the case tests make.
+inline std::string short_fig12_case(const std::string& t_end, const std::string& fracture = "") {
+  return edited(slurp(std::filesystem::path(HM_SOURCE_DIR) / "cases/fig12_b0.2_quick.toml"),
+                {{"t_end = 0.0272", "t_end = " + t_end},
+                 {"times = [0.0045, 0.009, 0.0272]", "times = [" + t_end + "]"},
+                 {"vtk = true", "vtk = false"},
+                 {"[fracture]\n", "[fracture]\n" + fracture}});
+}
+
+/// The data rows of a CSV text (header dropped), split at commas.
+inline std::vector<std::vector<std::string>> csv_rows(const std::string& csv) {
+  std::vector<std::vector<std::string>> out;
+  std::istringstream lines(csv);
+  std::string line;
+  std::getline(lines, line);  // header
+  while (std::getline(lines, line)) {
+    std::vector<std::string> cells;
+    std::istringstream row(line);
+    for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
+    out.push_back(cells);
+  }
+  return out;
+}
+
 inline int count_lines(const std::string& s) {
   int n = 0;
   for (char c : s) n += (c == '\n');

@@ -21,29 +21,8 @@ using hm::test::TempDir;
 
 namespace {
 
-// The Fig. 12 quick case (b = 0.2, N = 3000) to t* = 5e-5 (four steps), without VTK, with `fracture`
-// added to its [fracture] table.
-std::string notched_case(const std::string& fracture) {
-  return edited(slurp(std::filesystem::path(HM_SOURCE_DIR) / "cases/fig12_b0.2_quick.toml"),
-                {{"t_end = 0.0272", "t_end = 5e-5"},
-                 {"times = [0.0045, 0.009, 0.0272]", "times = [5e-5]"},
-                 {"vtk = true", "vtk = false"},
-                 {"[fracture]\n", "[fracture]\n" + fracture}});
-}
-
-std::vector<std::vector<std::string>> rows(const std::string& csv) {
-  std::vector<std::vector<std::string>> out;
-  std::istringstream lines(csv);
-  std::string line;
-  std::getline(lines, line);  // header
-  while (std::getline(lines, line)) {
-    std::vector<std::string> cells;
-    std::istringstream row(line);
-    for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
-    out.push_back(cells);
-  }
-  return out;
-}
+// The short Fig. 12 quick case to t* = 5e-5 (four steps) with `fracture` in its [fracture] table.
+std::string notched_case(const std::string& fracture) { return hm::test::short_fig12_case("5e-5", fracture); }
 
 }  // namespace
 
@@ -63,7 +42,7 @@ TEST_CASE("A notch's beams are broken at t = 0, logged as cut, and the run goes 
   REQUIRE(cut.size() >= 4);  // 0.11 of crack across beams ~0.03 long (N = 3000)
   CHECK(model->n_cut() == static_cast<int>(cut.size()));
 
-  const auto breaks = rows(slurp(dir.path / "run" / "breaks.csv"));
+  const auto breaks = hm::test::csv_rows(slurp(dir.path / "run" / "breaks.csv"));
   REQUIRE(breaks.size() > cut.size());  // the notch, then beams that failed at its tip
   for (std::size_t k = 0; k < cut.size(); ++k) {
     CHECK(breaks[k][1] == std::to_string(cut[k]));
@@ -73,7 +52,7 @@ TEST_CASE("A notch's beams are broken at t = 0, logged as cut, and the run goes 
   }
   for (std::size_t k = cut.size(); k < breaks.size(); ++k) CHECK(breaks[k][11] != "none");
   // breakdown.csv's first break is the first beam that failed, after t = 0, beyond the notch's tip.
-  const auto breakdown = rows(slurp(dir.path / "run" / "breakdown.csv"));
+  const auto breakdown = hm::test::csv_rows(slurp(dir.path / "run" / "breakdown.csv"));
   REQUIRE(breakdown.size() == 1);
   CHECK(std::stod(breakdown[0][0]) > 0.0);
   CHECK(breakdown[0][3] == breaks[cut.size()][4]);  // x of the first failed beam

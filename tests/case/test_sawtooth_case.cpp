@@ -21,28 +21,10 @@ using hm::test::TempDir;
 
 namespace {
 
-// The Fig. 12 quick case (b = 0.2, N = 3000) to t* = 2e-4, without VTK, with `fracture` added to its
-// [fracture] table. K_Ic = 0.5 MPa m^1/2 on Table 1's rock: G_f / (E R) = 2.34e-9 (docs/fracture_law.md).
+// The short Fig. 12 quick case to t* = 2e-4 with `fracture` in its [fracture] table. K_Ic = 0.5 MPa m^1/2
+// on Table 1's rock: G_f / (E R) = 2.34e-9 (docs/fracture_law.md).
 std::string sawtooth_case(const std::string& fracture = "law = \"sawtooth\"\nfracture_energy = 2.34e-9\n") {
-  return edited(slurp(std::filesystem::path(HM_SOURCE_DIR) / "cases/fig12_b0.2_quick.toml"),
-                {{"t_end = 0.0272", "t_end = 2e-4"},
-                 {"times = [0.0045, 0.009, 0.0272]", "times = [2e-4]"},
-                 {"vtk = true", "vtk = false"},
-                 {"[fracture]\n", "[fracture]\n" + fracture}});
-}
-
-std::vector<std::vector<std::string>> rows(const std::string& csv) {
-  std::vector<std::vector<std::string>> out;
-  std::istringstream lines(csv);
-  std::string line;
-  std::getline(lines, line);  // header
-  while (std::getline(lines, line)) {
-    std::vector<std::string> cells;
-    std::istringstream row(line);
-    for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
-    out.push_back(cells);
-  }
-  return out;
+  return hm::test::short_fig12_case("2e-4", fracture);
 }
 
 }  // namespace
@@ -56,8 +38,8 @@ TEST_CASE("A saw-tooth run books each broken beam's G_f d in teeth.csv and repea
   REQUIRE(r.exit_code == 0);
   CHECK_THAT(r.out, Catch::Contains("saw-tooth law: G_f/(E R) = 2.34e-09, 10 teeth of ratio 2;"));
 
-  const auto teeth = rows(slurp(dir.path / "run" / "teeth.csv"));
-  const auto breaks = rows(slurp(dir.path / "run" / "breaks.csv"));
+  const auto teeth = hm::test::csv_rows(slurp(dir.path / "run" / "teeth.csv"));
+  const auto breaks = hm::test::csv_rows(slurp(dir.path / "run" / "breaks.csv"));
   REQUIRE(!breaks.empty());
   REQUIRE(teeth.size() > breaks.size());
   // Every tensile break is its beam's last tooth (stiffness factor 0), after its earlier teeth in order.

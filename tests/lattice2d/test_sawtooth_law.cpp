@@ -9,18 +9,13 @@
 #include "hm/lattice2d/fracture/fracture.hpp"
 #include "hm/lattice2d/fracture/sawtooth_law.hpp"
 #include "hm/lattice2d/mechanics/calibration.hpp"
+#include "lattice_fixtures.hpp"
 
 using namespace hm::lattice2d;
 
 namespace {
 
-Lattice square(long long n = 800) {
-  LatticeSpec spec;
-  spec.domain = DomainShape::rectangle;
-  spec.n_particles = n;
-  spec.seed = 3;
-  return generate_lattice(spec);
-}
+Lattice square() { return hm::test::make_lattice(DomainShape::rectangle, 800, 3); }
 
 // The interior beam nearest the centre.
 int central_beam(const Lattice& lattice) {
