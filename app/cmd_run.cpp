@@ -116,7 +116,10 @@ void run_case(const RunArgs& a, int& exit_code, const std::string& command_line)
   //    checkpoint written at the output times and every checkpoint_seconds of wall time. With
   //    stop_at_first_break, the step that breaks the first beam is recorded as an output and is the last.
   cases::ProgressReporter progress(std::cout, "run");
-  const core::InterruptRequest interrupt;  // Ctrl-C or SIGTERM: stop after the step, keep the results
+  // Ctrl-C or SIGTERM: stop, keep the results. A step in progress is undone at its next coupling pass
+  // or break-loop solve, so the answer does not wait for the step; the checkpoint is the last step's.
+  const core::InterruptRequest interrupt;
+  model->set_interrupt([&] { return interrupt.signal() != 0; });
   int step = first_step;
   int checkpoint_step = resuming ? first_step : -1;
   double checkpoint_t = model->time();

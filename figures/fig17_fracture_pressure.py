@@ -12,8 +12,8 @@ or a folder with runs.csv (a lattice2d benchmark's data folder, `figure` = 1 for
 The output times (initiation, growth, fractures near and at the boundary) were chosen from a quick run's
 fracture_summary.csv; the case files say what was measured.
 Each panel as Fig. 12's (hmplot.draw_pressure_snapshot): the pressure per triangle on the undeformed
-lattice, colours centred on p* = 0 with that snapshot's min and max as limits (the paper's colour
-bars), broken beams in black, the borehole wall in grey; the title gives fracture_summary.csv's counts.
+lattice, colours on a range symmetric about 0 (ticks at that snapshot's min and max), broken beams in
+black, the borehole wall in grey; the title gives fracture_summary.csv's counts.
 """
 import hmplot
 
@@ -21,7 +21,7 @@ import hmplot
 def main():
     args = hmplot.arguments(__doc__.splitlines()[0], check=lambda a: hmplot.runs_problem(a.data))
     fig = hmplot.fracture_pressure_figure("fig17", hmplot.runs_to_draw(args.data),
-                                          "Pressure p* per triangle and broken beams (black); Q = 1, iota = 1e6")
+                                          "Fig. 17 of Ulven & Sun (2017); each row's setting from its config.toml")
     hmplot.save(fig, args.out, "fig17_fracture_pressure")
 
 

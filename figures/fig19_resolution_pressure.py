@@ -9,8 +9,8 @@ Snakemake workflow writes them:
     /usr/bin/python3 figures/fig19_resolution_pressure.py --data out/sweeps/sweep_fig19_quick --out fig
 
 One panel per complete run, coarsest first, at its last output time (t_end, the paper's 2.5e-2), drawn
-as Fig. 12's panels (hmplot.draw_pressure_snapshot): pressure per triangle, colours centred on p* = 0
-with that snapshot's limits, broken beams in black. The particle count is the lattice's (the VTK
+as Fig. 12's panels (hmplot.draw_pressure_snapshot): pressure per triangle, colours on a range symmetric
+about 0 (ticks at that snapshot's min and max), broken beams in black. The particle count is the lattice's (the VTK
 snapshot's points), which the Poisson-disk sampling makes close to, not equal to, n_particles.
 Prints how many combinations were drawn and how many were left out (runs not complete).
 """

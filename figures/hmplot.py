@@ -19,6 +19,7 @@ import datetime
 import json
 import os
 import sys
+import textwrap
 import tomllib
 import xml.etree.ElementTree as ET
 from collections import defaultdict
@@ -162,7 +163,11 @@ def _write_atomically(path, write):
 
 
 def read_csv(path):
-    """Columns of a CSV with a header row, as a dict of numpy arrays."""
+    """Columns of a CSV with a header row, as a dict of numpy arrays. A missing file ends the script
+    with one line (the --data folder is of another kind: a lattice run for a 1D figure, or the reverse)."""
+    if not os.path.isfile(path):
+        raise SystemExit(f"{path}: no such file: --data must be the folder of hmlattice's output this figure "
+                         f"reads ({os.path.basename(path)})")
     with open(path, newline="") as f:
         rows = list(csv.reader(f))
     header, body = rows[0], rows[1:]
@@ -172,14 +177,77 @@ def read_csv(path):
     return {name: data[:, i] for i, name in enumerate(header)}
 
 
+def run_config(folder):
+    """A run folder's resolved config.toml as a dict ({} without one)."""
+    path = os.path.join(folder, "config.toml")
+    if not os.path.exists(path):
+        return {}
+    with open(path, "rb") as f:
+        return tomllib.load(f)
+
+
 def run_physics(folder, key):
     """[physics] <key> of a run folder's config.toml (as `hmlattice run` writes it), or None (also for
     a [physics_si] case, whose config.toml keeps [physics_si] and has the dimensionless values as comments)."""
-    path = os.path.join(folder, "config.toml")
-    if not os.path.exists(path):
-        return None
-    with open(path, "rb") as f:
-        return tomllib.load(f).get("physics", {}).get(key)
+    return run_config(folder).get("physics", {}).get(key)
+
+
+def run_is_complete(folder):
+    """False for a run that stopped early (its marker says complete = false: interrupted, failed, or
+    stopped with --stop-after-steps), whose figures would describe only part of the case."""
+    marker = os.path.join(folder, MARKER)
+    if not os.path.exists(marker):
+        return True
+    with open(marker) as f:
+        return "complete = false" not in f.read()
+
+
+def _tex_number(v):
+    """v in mathtext: 0.01, 1000 as 10^3, 3e-4 as 3 x 10^-4."""
+    if v == 0 or 1e-3 <= abs(v) < 1e4:
+        return f"{v:g}"
+    mantissa, exponent = f"{v:.2e}".split("e")
+    mantissa, exponent = f"{float(mantissa):g}", int(exponent)
+    return f"10^{{{exponent}}}" if mantissa == "1" else f"{mantissa} \\times 10^{{{exponent}}}"
+
+
+def run_setting(folder):
+    """The run's setting in one mathtext line, from its config.toml: Q, iota, b, N, seed, the in-situ
+    field if any, the fracture law if not the paper's; "" for a folder without a config."""
+    c = run_config(folder)
+    if not c:
+        return ""
+    physics, lattice, mech = c.get("physics", {}), c.get("lattice", {}), c.get("mechanics", {})
+    fracture = c.get("fracture", {})
+    parts = [f"$Q = {_tex_number(physics['Q'])}$" if "Q" in physics else None,
+             f"$\\iota = {_tex_number(physics['iota'])}$" if "iota" in physics else None,
+             f"$b = {physics['b']:g}$" if "b" in physics else None,
+             f"$N = {lattice['n_particles']}$" if "n_particles" in lattice else None,
+             f"seed {lattice['seed']}" if "seed" in lattice else None]
+    if mech.get("S_H", 0) or mech.get("S_h", 0):
+        parts.append(f"$S_H = {_tex_number(mech.get('S_H', 0))}$, $S_h = {_tex_number(mech.get('S_h', 0))}$, "
+                     f"$\\theta_H = {mech.get('theta_H', 0):g}°$")
+    if fracture.get("law", "brittle") != "brittle":
+        parts.append(f"{fracture['law']} law, $G_f/(ER) = {_tex_number(fracture.get('fracture_energy', 0))}$")
+    return ", ".join(p for p in parts if p)
+
+
+def provenance_footer(fig, folders):
+    """A small footer naming what the figure was drawn from: each run's case file (from the command
+    that wrote it), grouped by the hmlattice version and commit that ran it, wrapped to the width."""
+    builds = {}
+    for folder in folders:
+        prov = run_config(folder).get("provenance", {})
+        words = prov.get("command_line", "").split()
+        case = next((os.path.basename(w) for w in words if w.endswith(".toml")), os.path.basename(os.path.normpath(folder)))
+        cases = builds.setdefault(f"hmlattice {prov.get('version', '?')} {prov.get('git_commit', '?')}", [])
+        if case not in cases:
+            cases.append(case)
+    if builds:
+        text = "drawn from: " + "; ".join(f"{', '.join(cases)} ({build})" for build, cases in builds.items())
+        width = int(fig.get_figwidth() * 22)  # characters of 6 pt text per inch, about
+        fig.text(0.01, 0.003, "\n".join(textwrap.wrap(text, width)), fontsize=6, color="0.35", ha="left",
+                 va="bottom")
 
 
 def read_break_log(path):
@@ -294,16 +362,17 @@ def fracture_counts(summary):
             f"{int(summary['n_broken'])} broken")
 
 
-def draw_pressure_snapshot(fig, ax, path, title):
-    """One panel of the paper's Figs. 12, 14, 16, 17, 19: the pressure per triangle of a VTK snapshot
-    (undeformed lattice; diverging colours centred on p* = 0, limits from that snapshot's min and max,
-    as the paper's colour bars), broken beams as black segments (the beam from particle i to j, so a
-    crack shows as a chain of short segments across it), the borehole wall in grey."""
+def draw_pressure_snapshot(fig, ax, path, title, theta_H=None):
+    """One panel of the paper's Figs. 12, 14, 16, 17, 19: the pressure p/E per triangle of a VTK
+    snapshot (undeformed lattice; diverging colours on a range symmetric about 0, +-max|p| of that
+    snapshot, so that equal colours are equal magnitudes of either sign; the colour bar's ticks give
+    the snapshot's min and max), broken beams as black segments (the beam from particle i to j, so a
+    crack shows as a chain of short segments across it), the borehole wall in grey, and with an in-situ
+    field (theta_H in degrees) the direction of S_H as a double arrow."""
     xy, tri, p, seg, wall = read_snapshot(path)
     p_min, p_max = float(p.min()), float(p.max())
-    # Centred on 0 like the paper's colour bars; TwoSlopeNorm needs vmin < 0 < vmax.
     scale = max(abs(p_min), abs(p_max), 1e-30)
-    norm = mcolors.TwoSlopeNorm(vmin=min(p_min, -1e-6 * scale), vcenter=0.0, vmax=max(p_max, 1e-6 * scale))
+    norm = mcolors.Normalize(vmin=-scale, vmax=scale)
     im = ax.tripcolor(xy[:, 0], xy[:, 1], tri, facecolors=p, cmap="RdBu_r", norm=norm, rasterized=True)
     if len(seg):
         ax.add_collection(LineCollection(seg, colors="k", linewidths=0.7))
@@ -315,9 +384,16 @@ def draw_pressure_snapshot(fig, ax, path, title):
     ax.set_xticks([-1, 0, 1])
     ax.set_yticks([-1, 0, 1])
     ax.grid(False)
+    if theta_H is not None:
+        d = 0.22 * np.array([np.cos(np.radians(theta_H)), np.sin(np.radians(theta_H))])
+        centre = np.array([-0.78, 0.78])
+        ax.annotate("", xy=centre + d, xytext=centre - d,
+                    arrowprops=dict(arrowstyle="<->", color="0.15", lw=1.0, shrinkA=0, shrinkB=0, mutation_scale=7))
+        ax.text(*(centre + 1.25 * d), "$S_H$", fontsize=7, ha="center", va="center")
     ax.set_title(title, fontsize=8)
     cb = fig.colorbar(im, ax=ax, fraction=0.046, pad=0.03)
-    cb.set_ticks([p_min, 0.0, p_max] if p_min < 0 < p_max else [p_min, p_max])
+    cb.set_ticks(sorted({p_min, 0.0, p_max}))
+    cb.set_label("$p/E$", fontsize=7, labelpad=1)
     cb.ax.tick_params(labelsize=7)
     cb.formatter = plt.FuncFormatter(lambda v, _: f"{v:.2e}")
     cb.update_ticks()
@@ -325,33 +401,46 @@ def draw_pressure_snapshot(fig, ax, path, title):
 
 def fracture_pressure_figure(name, runs, suptitle):
     """Figs. 12, 14, 16, 17: one row per run (label, folder), one panel per output time, panels lettered
-    A, B, ... row by row as in the paper. Prints one line per row (`name: b = ...: n snapshots`).
-    Returns the figure."""
+    A, B, ... row by row as in the paper; each row titled with its run's own setting (run_setting), a run
+    that stopped early marked INCOMPLETE, the footer naming the cases and the build. Prints one line per
+    row (`name: b = ...: n snapshots`). Exits with a message when no run has a snapshot (a run
+    interrupted before its first output time). Returns the figure."""
     rows = []
     for label, folder in runs:
         snaps = vtk_snapshots(folder)
         b = run_physics(folder, "b")
-        print(f"{name}: {f'b = {b:g}' if b is not None else label}: {len(snaps)} snapshots")
+        print(f"{name}: {f'b = {b:g}' if b is not None else label}: {len(snaps)} snapshots"
+              + ("" if run_is_complete(folder) else " (INCOMPLETE run)"))
         rows.append((label, folder, snaps))
+    if not any(snaps for _, _, snaps in rows):
+        raise SystemExit(f"{name}: no run has a VTK snapshot at an output time (vtk = false, or stopped before the "
+                         "first output time): nothing to draw")
     n_cols = max(1, max(len(s) for _, _, s in rows))
-    fig, axes = plt.subplots(len(rows), n_cols, figsize=(3.0 * n_cols, 3.0 * len(rows)), squeeze=False)
+    # One subfigure per run, titled with that run's setting (constrained layout keeps titles clear).
+    fig = plt.figure(figsize=(3.0 * n_cols, 3.3 * len(rows) + 0.5), layout="constrained")
     panel = iter("ABCDEFGHIJKLMNOPQRSTUVWXYZ")
-    for row, (label, folder, snaps) in enumerate(rows):
-        b = run_physics(folder, "b")
-        for col in range(n_cols):
-            ax = axes[row][col]
+    fig.get_layout_engine().set(rect=(0.0, 0.03, 1.0, 0.97))  # room for the footer
+    # Transparent subfigures, so that the footer (a text of the whole figure) is not painted over.
+    row_figs = fig.subfigures(len(rows), 1, squeeze=False, facecolor="none")[:, 0]
+    for (label, folder, snaps), row_fig in zip(rows, row_figs):
+        mech = run_config(folder).get("mechanics", {})
+        theta_H = mech.get("theta_H", 0.0) if mech.get("S_H", 0) != mech.get("S_h", 0) else None
+        incomplete = "" if run_is_complete(folder) else "INCOMPLETE run: "
+        axes = row_fig.subplots(1, n_cols, squeeze=False)[0]
+        for col, ax in enumerate(axes):
             if col >= len(snaps):
                 ax.axis("off")
                 continue
             t, path = snaps[col]
-            b_text = f"b = {b:g}, " if b is not None else ""
-            draw_pressure_snapshot(fig, ax, path, f"{next(panel)}: {b_text}t* = {t:.3g}"
-                                   + fracture_counts(fracture_summary_at(folder, t)))
+            draw_pressure_snapshot(row_fig, ax, path, f"{next(panel)}: {incomplete}$t^* = {t:.3g}$"
+                                   + fracture_counts(fracture_summary_at(folder, t)), theta_H)
+            ax.set_xlabel("$x/R$")
             if col == 0:
-                ax.set_ylabel(f"{label}\ny*")
-            if row == len(rows) - 1:
-                ax.set_xlabel("x*")
-    fig.suptitle(suptitle, fontsize=10)
+                ax.set_ylabel(f"{label}\n$y/R$")
+        row_fig.suptitle(run_setting(folder), fontsize=8)
+    fig.suptitle(suptitle + "\npressure $p/E$ per triangle (colours symmetric about 0, per panel) and broken beams "
+                 "(black)", fontsize=10)
+    provenance_footer(fig, [folder for _, folder, _ in rows])
     return fig
 
 
@@ -432,7 +521,8 @@ def sweep_runs(data, key):
 
 def save(fig, out, name):
     """Write <out>/<name>.png and .pdf (each completely or not at all) and close the figure."""
-    fig.tight_layout()
+    if fig.get_layout_engine() is None:  # a figure may bring its own (constrained) layout
+        fig.tight_layout()
     _prepare_out(out)
     for ext in ("png", "pdf"):
         path = os.path.join(out, f"{name}.{ext}")

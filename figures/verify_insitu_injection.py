@@ -17,7 +17,14 @@ import hmplot
 args = hmplot.arguments(__doc__, check=lambda a: hmplot.runs_problem(a.data))
 runs = hmplot.runs_to_draw(args.data)
 
-fig, axes = plt.subplots(1, len(runs) + 1, figsize=(4.2 * (len(runs) + 1), 4.2))
+# A grid of at most three panels a row (one row of six was a 3780 px strip in the report).
+n_panels = len(runs) + 1
+n_cols = min(3, n_panels)
+n_rows = -(-n_panels // n_cols)
+fig, grid = plt.subplots(n_rows, n_cols, figsize=(4.2 * n_cols, 4.2 * n_rows), squeeze=False)
+axes = list(grid.flat)[:n_panels]
+for ax in list(grid.flat)[n_panels:]:
+    ax.axis("off")
 for k, ((label, folder), ax) in enumerate(zip(runs, axes)):
     with open(os.path.join(folder, "config.toml"), "rb") as f:
         config = tomllib.load(f)
@@ -41,4 +48,5 @@ for k, ((label, folder), ax) in enumerate(zip(runs, axes)):
     axes[-1].axhline(p_hw, color=colour, ls="--", lw=1)
 axes[-1].set(xscale="log", xlabel="t*", ylabel="p_h*", title="borehole pressure (dashed: Hubbert–Willis)")
 axes[-1].legend(fontsize=8)
+hmplot.provenance_footer(fig, [folder for _, folder in runs])
 hmplot.save(fig, args.out, "verify_insitu_injection")

@@ -4,6 +4,9 @@
 #include "hm/core/input_error.hpp"
 #include "hm/core/validation.hpp"
 
+#include <string>
+#include <utility>
+
 namespace hm::analytic {
 
 using namespace hm::core;  // require_* and format_value
@@ -34,10 +37,15 @@ void DimensionlessParameters::validate() const {
   // Pressures scale with Q (p_h ~ Q ln(1/R_i) / 2 pi): Q = 1e6 is already a borehole pressure of
   // ~3e5 E, beyond any rock; far above it the solvers' numbers overflow.
   require_closed(Q, "Q", 0.0, 1e6);
-  require_positive(iota, "iota");
+  if (!(iota > 0.0 && iota <= kMaxIota))
+    throw InputError("iota = " + format_value(iota) + ", allowed: 0 < iota <= " + format_value(kMaxIota));
   require_half_open(R_i, "R_i", 0.0, 1.0);
-  require_positive(tensile_strength, "tensile_strength");
-  require_positive(compressive_strength, "compressive_strength");
+  for (const auto& [value, name] : {std::pair{tensile_strength, "tensile_strength"},
+                                    std::pair{compressive_strength, "compressive_strength"}})
+    if (!(value > 0.0 && value <= kMaxStrength))
+      throw InputError(std::string(name) + " = " + format_value(value) + ", allowed: 0 < " + name + " <= " +
+                       format_value(kMaxStrength) + " (over E, a strain at failure; a strength in Pa belongs in a case "
+                       "in SI units)");
   require_non_negative(friction, "friction");
   require_positive(E_over_Kw, "E_over_Kw");
 }

@@ -199,9 +199,13 @@ const CaseKeys<analytic::DimensionlessParameters>& physics_keys() {
               "([flow] borehole_storage = \"fluid\"); Eq. 22's E/M is given by E_over_M");
     add_vol_strain(k, [](auto& d) -> auto& { return d.material.vol_strain; });
     k.real("R_i", [](auto& d) -> auto& { return d.R_i; }, "0 <= R_i < 1", "borehole radius R_i/R; 0 for point injection")
-        .real("iota", [](auto& d) -> auto& { return d.iota; }, "> 0", "fracture permeability enhancement k_f/k")
-        .real("tensile_strength", [](auto& d) -> auto& { return d.tensile_strength; }, "> 0", "T_u/E")
-        .real("compressive_strength", [](auto& d) -> auto& { return d.compressive_strength; }, "> 0", "C_u/E")
+        .real("iota", [](auto& d) -> auto& { return d.iota; }, "0 < iota <= 1e12",
+              "fracture permeability enhancement k_f/k (at most a 0.3 mm cubic-law aperture, k_f ~ 1e-8 m^2, in a "
+              "nanodarcy shale, k ~ 1e-20 m^2)")
+        .real("tensile_strength", [](auto& d) -> auto& { return d.tensile_strength; }, "0 < tensile_strength <= 1",
+              "T_u/E (a strain at failure: above 1 it is a strength in Pa)")
+        .real("compressive_strength", [](auto& d) -> auto& { return d.compressive_strength; },
+              "0 < compressive_strength <= 1", "C_u/E (a strain at failure: above 1 it is a strength in Pa)")
         .real("friction", [](auto& d) -> auto& { return d.friction; }, ">= 0", "mu_i, internal friction of Eq. 11")
         .check([](CaseTable&, CaseTable&, analytic::DimensionlessParameters& d) { d.validate(); });
     return k;

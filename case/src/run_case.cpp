@@ -198,7 +198,7 @@ CaseKeys<RunCase> make_run_case_keys() {
               "softened tooth by tooth until it has dissipated the fracture energy (docs/fracture_law.md; the "
               "crack-tip keys are then not used)")
       .real("fracture_energy", [](auto& c) -> auto& { return c.sawtooth.fracture_energy; },
-            "> 0, finite, with law = \"sawtooth\" (required there); 0 with \"brittle\"",
+            "0 < fracture_energy <= 1 with law = \"sawtooth\" (required there); 0 with \"brittle\"",
             "G_f / (E R), the energy per unit crack area of the saw-tooth law", {}, "`0` (none)")
       .real("sawtooth_reduction", [](auto& c) -> auto& { return c.sawtooth.teeth.reduction; }, "> 1, finite",
             "saw-tooth law: each tooth's stiffness over the next's")
@@ -250,15 +250,18 @@ CaseKeys<RunCase> make_run_case_keys() {
         if (c.fracture_law == lt::FractureLaw::sawtooth) {
           if (!c.fracture_enabled)
             fracture.fail("law = \"sawtooth\", allowed: only with enabled = true");
-          if (!(std::isfinite(g_f) && g_f > 0.0))
+          // G_f/(E R) <= 1: G_f/E, a length, at most the domain's radius (rocks: G_f/E ~ 1e-8 m);
+          // above it is a G_f in J/m^2 typed into a dimensionless table.
+          if (!(g_f > 0.0 && g_f <= 1.0))
             fracture.fail("fracture_energy = " + core::format_value(g_f) +
-                          ", allowed: > 0, finite with law = \"sawtooth\" (required there)");
+                          ", allowed: 0 < fracture_energy <= 1 with law = \"sawtooth\" (required there; G_f/(E R), "
+                          "so a value in J/m^2 is refused)");
           const double a = c.sawtooth.teeth.reduction;
           if (!(std::isfinite(a) && a > 1.0))
             fracture.fail("sawtooth_reduction = " + core::format_value(a) + ", allowed: > 1, finite");
-          const double k = c.sawtooth.strength_factor;
-          if (!(std::isfinite(k) && k > 0.0))
-            fracture.fail("sawtooth_strength_factor = " + core::format_value(k) + ", allowed: > 0, finite");
+          const double kappa = c.sawtooth.strength_factor;
+          if (!(std::isfinite(kappa) && kappa > 0.0))
+            fracture.fail("sawtooth_strength_factor = " + core::format_value(kappa) + ", allowed: > 0, finite");
         } else if (g_f != 0.0) {
           fracture.fail("fracture_energy = " + core::format_value(g_f) +
                         ", allowed: 0 with law = \"brittle\" (a fracture energy belongs to law = \"sawtooth\")");

@@ -129,4 +129,18 @@ void StateReader::get(std::string_view tag, std::vector<bool>& flags) {
   for (std::size_t k = 0; k < bytes.size(); ++k) flags[k] = bytes[k] != 0;
 }
 
+void check_compressed_pattern(const int* outer, const int* inner, std::int64_t n_rows, std::int64_t n_cols,
+                              std::size_t n_inner, const std::string& source, std::string_view tag) {
+  const auto fail = [&](const std::string& why) {
+    throw InputError(source + ": at '" + std::string(tag) + "': " + why + " (damaged, or of another version)");
+  };
+  if (outer[0] != 0 || static_cast<std::size_t>(outer[n_cols]) != n_inner) fail("column pointers do not span the entries");
+  for (std::int64_t j = 0; j < n_cols; ++j)
+    if (outer[j + 1] < outer[j]) fail("column pointers decrease at column " + std::to_string(j));
+  for (std::int64_t j = 0; j < n_cols; ++j)
+    for (int k = outer[j]; k < outer[j + 1]; ++k)
+      if (inner[k] < 0 || inner[k] >= n_rows || (k > outer[j] && inner[k] <= inner[k - 1]))
+        fail("row index out of range or order in column " + std::to_string(j));
+}
+
 }  // namespace hm::core

@@ -154,12 +154,19 @@ TEST_CASE("Dimensionless parameters: each rule rejects its bad value with field,
   check_rejected_dimensionless([](D& d) { d.material.b = 1.01; }, "b = 1.01, allowed: 0 <= b <= 1");
   check_rejected_dimensionless([](D& d) { d.material.E_over_M = 0.0; }, "E_over_M = 0, allowed: E_over_M > 0");
   check_rejected_dimensionless([](D& d) { d.Q = -0.01; }, "Q = -0.01, allowed: 0 <= Q <= 1e+06");
-  check_rejected_dimensionless([](D& d) { d.iota = 0.0; }, "iota = 0, allowed: iota > 0");
+  check_rejected_dimensionless([](D& d) { d.iota = 0.0; }, "iota = 0, allowed: 0 < iota <= 1e+12");
+  check_rejected_dimensionless([](D& d) { d.iota = 1e13; }, "iota = 1e+13, allowed: 0 < iota <= 1e+12");
   check_rejected_dimensionless([](D& d) { d.R_i = 1.0; }, "R_i = 1, allowed: 0 <= R_i < 1");
   check_rejected_dimensionless([](D& d) { d.tensile_strength = 0.0; },
-                               "tensile_strength = 0, allowed: tensile_strength > 0");
+                               "tensile_strength = 0, allowed: 0 < tensile_strength <= 1 (over E, a strain at failure; "
+                               "a strength in Pa belongs in a case in SI units)");
   check_rejected_dimensionless([](D& d) { d.compressive_strength = -1e-3; },
-                               "compressive_strength = -0.001, allowed: compressive_strength > 0");
+                               "compressive_strength = -0.001, allowed: 0 < compressive_strength <= 1 (over E, a strain "
+                               "at failure; a strength in Pa belongs in a case in SI units)");
+  // A strength in Pa typed into the dimensionless table once ran silently without a break.
+  check_rejected_dimensionless([](D& d) { d.tensile_strength = 2e6; },
+                               "tensile_strength = 2e+06, allowed: 0 < tensile_strength <= 1 (over E, a strain at "
+                               "failure; a strength in Pa belongs in a case in SI units)");
   check_rejected_dimensionless([](D& d) { d.friction = -1.0; }, "friction = -1, allowed: friction >= 0");
   SECTION("point injection, R_i = 0, is allowed") {
     D d;

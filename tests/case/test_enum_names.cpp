@@ -55,7 +55,7 @@ TEST_CASE("Every named enum has one distinct name per value, parsed back to it",
   check_names<lt::StrengthDistribution>(3);
   check_names<lt::FractureLink>(2);
   check_names<lt::FractureKind>(2);
-  check_names<lt::BreakLoopStatus>(3);
+  check_names<lt::BreakLoopStatus>(4);
   check_names<lt::LoadingStatus>(5);
   check_names<hm::analytic::FailureMode>(3);
   check_names<hm::analytic::VolStrain>(2);

@@ -212,7 +212,7 @@ TEST_CASE("A fracturing borehole case of only the required keys runs to its end"
                             Catch::Contains("to try: [coupling] relaxation = \"anderson\", a smaller [numerics] dt_initial"));
 }
 
-TEST_CASE("A spring feedback, force scale, tolerance or in-situ stress beyond its plausibility bound is refused before the run",
+TEST_CASE("A spring feedback, force scale, tolerance, fracture permeability or in-situ stress beyond its plausibility bound is refused before the run",
           "[verification][cli]") {
   // Psi = 2^63 - 1 once crashed the run (a failed factorisation's snapshot; the crash itself is tested
   // on the solver, test_spd_solver.cpp); psi or xi = 1e12 failed the first solve, and a tolerance of
@@ -228,7 +228,9 @@ TEST_CASE("A spring feedback, force scale, tolerance or in-situ stress beyond it
            // S_H or p0 = 1e300 overflowed the rest state's loads into NaN at the first solve.
            {{"outer = \"free\"", "outer = \"free\"\nS_H = 1e300\nS_h = 1e-3"},
             "[mechanics] S_H = 1e+300, allowed: <= 1 (over E; the lattice is small-strain)"},
-           {{"outer = \"free\"", "outer = \"free\"\np0 = 2.0"}, "[mechanics] p0 = 2, allowed: <= 1 (over E"}}) {
+           {{"outer = \"free\"", "outer = \"free\"\np0 = 2.0"}, "[mechanics] p0 = 2, allowed: <= 1 (over E"},
+           // iota = 1e18 ran for minutes at N = 1000, 1e300 failed the first step.
+           {{"iota = 1.0", "iota = 1e18"}, "iota = 1e+18, allowed: 0 < iota <= 1e+12"}}) {
     dir.write("case.toml", hm::test::edited(base, {edit}));
     const auto r = run_hmlattice("run case.toml --out run", dir.path);
     INFO("stderr: " << r.err);
@@ -238,7 +240,7 @@ TEST_CASE("A spring feedback, force scale, tolerance or in-situ stress beyond it
     CHECK_FALSE(std::filesystem::exists(dir.path / "run"));
   }
   // At the bounds the case runs (its first step).
-  dir.write("case.toml", hm::test::edited(base, {{"psi = 1.3", "psi = 1e6"}, {"t_end = 0.0272", "t_end = 1e-5"},
+  dir.write("case.toml", hm::test::edited(base, {{"psi = 1.3", "psi = 1e6"}, {"iota = 1.0", "iota = 1e12"}, {"t_end = 0.0272", "t_end = 1e-5"},
                                                  {"times = [0.0045, 0.009, 0.0272]", "times = [1e-5]"}}));
   CHECK(run_hmlattice("run case.toml --out at_bound", dir.path).exit_code == 0);
 }

@@ -29,17 +29,18 @@ const char* long_fdm1d_case =
     "model = \"fdm1d\"\n[physics]\nQ = 0.01\nb = 0.5\n"
     "[numerics]\nn_r = 20000\ndt_initial = 1e-5\ndt_growth = 1.0\ndt_max = 1e-5\nt_end = 1.0\n[output]\ntimes = [1.0]\n";
 
-// Starts `command` (run or fdm1d) in the background, sends `signal` once the staged `rows_file` has 6
-// rows (t = 0 and five steps, flushed as they finish), waits; returns the exit status.
+// Starts `command` (run or fdm1d) in the background, sends `signal` once the staged `rows_file` has
+// `rows` rows (by default t = 0 and five steps, flushed as they finish), waits; returns the exit status.
 int run_and_signal(const TempDir& dir, const std::string& signal, const std::string& command = "run",
-                   const std::string& case_text = long_case(), const std::string& rows_file = "series.csv") {
+                   const std::string& case_text = long_case(), const std::string& rows_file = "series.csv",
+                   int rows = 6) {
   dir.write("case.toml", case_text);
   std::string script = "'";  // appended step by step: GCC 12 warns falsely (-Wrestrict) on "'" + string
   script += HMLATTICE_EXE;
   script += "' " + command + " case.toml --out run > out.txt 2> err.txt & pid=$!\n"
             "for i in $(seq 1200); do\n"
             "  n=$(cat .hmlattice-staging-*/" + rows_file + " 2>/dev/null | wc -l)\n"
-            "  [ \"$n\" -ge 7 ] && break\n"
+            "  [ \"$n\" -ge " + std::to_string(rows + 1) + " ] && break\n"
             "  sleep 0.05\n"
             "done\n"
             "kill -" + signal + " $pid\nwait $pid\necho $? > rc.txt\n";
@@ -146,6 +147,34 @@ TEST_CASE("A killed run's staging folder is reported by the next run beside it, 
   CHECK(count_lines(slurp(staging / "series.csv")) == flushed + 4);
   CHECK_THAT(slurp(staging / "status.toml"), Catch::Contains("last_step = " + std::to_string(flushed + 2) + "\n") &&
                                                  Catch::Contains("resume = \"hmlattice run --resume " + staging.string()));
+}
+
+TEST_CASE("A Ctrl-C inside a long step undoes that step at once, and the resumed run is bitwise the uninterrupted one",
+          "[case][cli]") {
+  // One step of the Fig. 12 quick case at N = 4000 straight to t* = 0.0045: ~45 coupling passes that
+  // break ~1500 beams, several seconds. The signal comes as soon as the t = 0 row is written.
+  const std::string one_long_step = hm::test::edited(
+      long_case(), {{"n_particles = 3000", "n_particles = 4000"}, {"dt_initial = 1e-5", "dt_initial = 0.0045"},
+                    {"dt_max = 5e-4", "dt_max = 0.0045"}, {"t_end = 0.0272", "t_end = 0.0045"},
+                    {"times = [0.0045, 0.009, 0.0272]", "times = [0.0045]"}, {"vtk = true", "vtk = false"}});
+  TempDir dir("run-interrupt-in-step");
+  CHECK(run_and_signal(dir, "INT", "run", one_long_step, "series.csv", 1) == 130);
+  const std::string err = slurp(dir.path / "err.txt");
+  INFO(err);
+  CHECK(count_lines(err) == 1);
+  // Had it waited for the step, the step would be in series.csv; it was undone: only t = 0 is there.
+  CHECK_THAT(err, Catch::Contains("interrupted by SIGINT") && Catch::Contains("the 0 steps done"));
+  CHECK(count_lines(slurp(dir.path / "run/series.csv")) == 2);
+  CHECK(count_lines(slurp(dir.path / "run/breaks.csv")) == 1);
+  const auto resumed = hm::test::run_hmlattice("run --resume run", dir.path);
+  INFO(resumed.err);
+  REQUIRE(resumed.exit_code == 0);
+  dir.write("case.toml", one_long_step);
+  REQUIRE(hm::test::run_hmlattice("run case.toml --out whole", dir.path).exit_code == 0);
+  for (const std::string file : {"series.csv", "breaks.csv", "radial.csv", "fracture_summary.csv", "breakdown.csv"}) {
+    INFO(file);
+    CHECK(slurp(dir.path / "run" / file) == slurp(dir.path / "whole" / file));
+  }
 }
 
 TEST_CASE("A second Ctrl-C ends the run at once and says where its files are", "[case][cli]") {

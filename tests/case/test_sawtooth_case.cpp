@@ -85,8 +85,11 @@ TEST_CASE("A saw-tooth run books each broken beam's G_f d in teeth.csv and repea
 TEST_CASE("A bad saw-tooth setting is one line of bad input naming [fracture] and the key", "[case][fracture]") {
   TempDir dir("sawtooth-bad");
   for (const auto& [fracture, message] : std::vector<std::pair<std::string, std::string>>{
-           {"law = \"sawtooth\"\n", "[fracture] fracture_energy = 0, allowed: > 0, finite with law = \"sawtooth\""},
-           {"law = \"sawtooth\"\nfracture_energy = -1e-9\n", "[fracture] fracture_energy = -1e-09, allowed: > 0"},
+           {"law = \"sawtooth\"\n",
+            "[fracture] fracture_energy = 0, allowed: 0 < fracture_energy <= 1 with law = \"sawtooth\""},
+           {"law = \"sawtooth\"\nfracture_energy = -1e-9\n", "[fracture] fracture_energy = -1e-09, allowed: 0 <"},
+           // A G_f in J/m^2 typed into the dimensionless table.
+           {"law = \"sawtooth\"\nfracture_energy = 100\n", "[fracture] fracture_energy = 100, allowed: 0 < fracture_energy <= 1"},
            {"fracture_energy = 1e-9\n", "[fracture] fracture_energy = 1e-09, allowed: 0 with law = \"brittle\""},
            {"law = \"cohesive\"\n", "[fracture] law = 'cohesive', allowed: brittle, sawtooth"},
            {"law = \"sawtooth\"\nfracture_energy = 1e-9\nsawtooth_reduction = 1.0\n",

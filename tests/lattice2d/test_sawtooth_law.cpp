@@ -2,6 +2,7 @@
 // taken through its teeth by displacement control doing the work G_f d that the law books for it.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -65,6 +66,23 @@ TEST_CASE("A softened beam's rank-3 downdate leaves the factor equal to the asse
   const MechanicsSummary broken = mechanics.solve();
   REQUIRE(broken.is_converged());
   CHECK(broken.equilibrium_residual < 1e-10);
+
+  // All-round compression instead: the softened beams are shortened, so they close (their normal
+  // springs unsoftened by rank-1 updates); the factor still agrees with the beams' constants.
+  BoundaryConditions compressed = bc;
+  compressed.outer_pressure = 1e-4;
+  BeamMechanics squeezed(lattice, calibrated_beam_parameters(), compressed);
+  REQUIRE(squeezed.solve().is_converged());
+  for (int f : soft) squeezed.soften_beam(f, 0.5);
+  const MechanicsSummary closed = squeezed.solve();
+  REQUIRE(closed.is_converged());
+  CHECK(closed.equilibrium_residual < 1e-10);
+  for (int f : soft) CHECK(squeezed.is_closed(f));
+  squeezed.soften_beam(e, 0.125);  // a closed beam softens in bending only
+  squeezed.break_beam(soft[1]);     // a closed beam breaks into a contact
+  const MechanicsSummary after = squeezed.solve();
+  REQUIRE(after.is_converged());
+  CHECK(after.equilibrium_residual < 1e-10);
 
   CHECK_THROWS_AS(mechanics.soften_beam(e, 0.25), hm::InputError);      // would stiffen it
   CHECK_THROWS_AS(mechanics.soften_beam(e, 0.0), hm::InputError);       // zero is a break
@@ -146,6 +164,61 @@ TEST_CASE("One beam pulled through its teeth does the work G_f d that the law di
     CHECK(law.dissipated_energy() == Approx(g_f * d).epsilon(1e-12));
     CHECK(booked == Approx(g_f * d).epsilon(1e-12));
     CHECK(work == Approx(g_f * d).epsilon(1e-7));
+  }
+}
+
+TEST_CASE("A softened beam that is shortened closes: its normal stiffness is unsoftened, its bending stays softened",
+          "[lattice2d][fracture]") {
+  // Every dof held (rotations too, but for one far particle's: the system must not be empty), beam e's
+  // particle j moved by (along, across) delta in the beam's axes and its other beams cut: e's end
+  // displacements are exactly prescribed, so its normal force is
+  // k delta along and its shear proportional to k_omega delta across. Against the unsoftened beam at
+  // the same displacement: a closed (shortened) beam has the full normal force and s times the shear,
+  // an open (lengthened) one s times both. The equilibrium residual re-evaluates every beam from its
+  // constants, independently of the factor the solve used: round-off shows the rank-1 updates of each
+  // closing and opening agree with them (the factor itself is checked under all-round compression below).
+  const Lattice lattice = square();
+  const BeamParameters parameters = calibrated_beam_parameters();
+  const int e = central_beam(lattice);
+  const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
+  const Eigen::Vector2d n = lattice.direction.col(e), t(-n.y(), n.x());
+  const double delta = 1e-4;
+  const auto forces = [&](double along, double across, const std::vector<double>& factors, bool break_it) {
+    BoundaryConditions bc;
+    const Eigen::Vector2d u = delta * (along * n + across * t);
+    const int far = (i == 0 || j == 0) ? 1 + std::max(i, j) : 0;
+    for (int p = 0; p < lattice.n_particles(); ++p)
+      for (int c = 0; c < 3; ++c)
+        if (p != far || c < 2) bc.prescribed.push_back({p, c, p == j && c < 2 ? u[c] : 0.0});
+    BeamMechanics mechanics(lattice, parameters, bc);
+    for (int f = 0; f < lattice.n_beams(); ++f) {
+      const auto& b = lattice.beams[static_cast<std::size_t>(f)];
+      if (f != e && (b[0] == j || b[1] == j)) mechanics.break_beam(f);
+    }
+    // Softened in steps, solved after each (so later steps may soften a closed beam), broken last.
+    for (double s : factors) {
+      mechanics.soften_beam(e, s);
+      REQUIRE(mechanics.solve().equilibrium_residual < 1e-10);
+    }
+    if (break_it) mechanics.break_beam(e);
+    const MechanicsSummary solved = mechanics.solve();
+    REQUIRE(solved.is_converged());
+    CHECK(solved.equilibrium_residual < 1e-10);
+    if (!factors.empty() && !break_it) CHECK(mechanics.is_closed(e) == (along < 0.0));
+    return mechanics.beam_forces()[static_cast<std::size_t>(e)];
+  };
+  for (const double along : {-1.0, 1.0}) {
+    INFO((along < 0 ? "shortened" : "lengthened"));
+    const BeamForce unsoftened = forces(along, 0.5, {}, false);
+    REQUIRE(std::abs(unsoftened.shear) > 1e-3 * std::abs(unsoftened.normal));
+    const double s = 0.125;
+    const BeamForce softened = forces(along, 0.5, {0.5, 0.25, s}, false);
+    CHECK(softened.normal == Approx((along < 0 ? 1.0 : s) * unsoftened.normal).epsilon(1e-10));
+    CHECK(softened.shear == Approx(s * unsoftened.shear).epsilon(1e-10));
+    // Broken after softening: a contact (shortened) has the unsoftened normal spring, an open beam nothing.
+    const BeamForce broken = forces(along, 0.5, {0.5, s}, true);
+    CHECK(broken.normal == Approx(along < 0 ? unsoftened.normal : 0.0).epsilon(1e-10));
+    CHECK(std::abs(broken.shear) < 1e-12 * std::abs(unsoftened.normal));  // a contact pushes along the beam only
   }
 }
 

@@ -28,6 +28,7 @@ const std::string lattice_case =
 // Values that once slipped through somewhere (wrapping, overflow, empty, wrong type), and plain ones.
 const std::vector<std::string> values = {
     "-1", "0", "0.5", "2", "1e308", "-1e308", "nan", "inf", "-inf", "4294967696", "9223372036854775807",
+    "9223372036854775808", "-9223372036854775809", "99999999999999999999",
     "1e-320", "\"\"", "\"x\"", "[1, 2]", "{ a = 1 }", "true", "\"" + std::string(3000, 'y') + "\"", "0x10", "1_000"};
 
 std::string mutate(const std::string& text, std::mt19937& rng) {
@@ -115,5 +116,34 @@ TEST_CASE("Fuzzed command lines end as a valid result or as one line of bad inpu
     const bool bad_input = r.exit_code == 2 && count_lines(r.err) == 1 && r.out.empty();
     CHECK((valid || bad_input));
     CHECK(dir.is_empty());
+  }
+}
+
+TEST_CASE("Fuzzed sweep tables end as the expanded cases or as one line of bad input", "[verification][cli][fuzz]") {
+  TempDir dir("fuzz-sweeps");
+  std::mt19937 rng(5);
+  // One swept key of each kind: a real, a bounded real, an integer and a choice; the case's own
+  // values of the swept keys are mutated too (line 3 of the base is b's).
+  const std::string base = fdm1d_case + "[sweep]\n\"physics.Q\" = [0.001, 0.01]\n\"physics.b\" = [0.2, 0.8]\n"
+                                        "\"numerics.n_r\" = [40, 80]\n";
+  const std::string huge_list = [] {  // 1000 values: two such keys give 1e6 combinations, over the default cap
+    std::string list = "[";
+    for (int k = 1; k <= 1000; ++k) list += std::to_string(k) + (k < 1000 ? ", " : "]");
+    return list;
+  }();
+  for (int i = 0; i < 120; ++i) {
+    std::string input = mutate(base, rng);
+    if (i % 10 == 0)  // a sweep far past the cap, which must be refused before anything is written
+      input += "\"numerics.n_r\" = " + huge_list + "\n\"numerics.dt_growth\" = " + huge_list + "\n";
+    dir.write("case.toml", input);
+    const fs::path out = dir.path / ("sweep" + std::to_string(i));
+    const auto r = hm::test::run_hmlattice("sweep expand case.toml --out " + out.filename().string(), dir.path,
+                                           "ulimit -t 60; ");
+    INFO("input:\n" << input << "\nexit " << r.exit_code << ", stderr: " << r.err);
+    const bool expanded = r.exit_code == 0 && fs::exists(out / "index.csv");
+    const bool bad_input = r.exit_code == 2 && count_lines(r.err) == 1 && !fs::exists(out);
+    CHECK((expanded || bad_input));
+    CHECK_FALSE(has_leftovers(dir.path));
+    fs::remove_all(out);
   }
 }

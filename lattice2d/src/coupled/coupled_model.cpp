@@ -263,6 +263,12 @@ bool CoupledModel::iterate(double dt, PassGuess& guess, DualGraph& dual, Coupled
   relaxation_->start_step();
   int last_break_pass = 0;  // at_convergence: max_iterations counts from here
   for (int k = 1; k - last_break_pass <= options_.max_iterations; ++k) {
+    if (interrupt_ && interrupt_()) {
+      summary.status = CoupledStatus::interrupted;
+      summary.message = "interrupted in the step to t = " + hm::core::format_value(summary.time) + " at pass " +
+                        std::to_string(k) + " (the step is undone)";
+      return false;
+    }
     summary.iterations = k;
     int breaks_this_pass = 0;
     if (!solve_mechanics(k, guess, check_every_pass, breaks_this_pass, summary)) return false;
@@ -318,10 +324,12 @@ bool CoupledModel::solve_mechanics(int pass, const PassGuess& guess, bool check_
 }
 
 bool CoupledModel::break_beams(int pass, int& n_breaks, CoupledStepSummary& summary) {
+  BreakLoopOptions loop = fracture_->options;
+  if (pass > 0) loop.interrupted = interrupt_;  // a step can be undone; the settling at t = 0 (pass 0) is not
   const BreakLoopSummary bs =
       fracture_->sawtooth ? break_until_stable(*mechanics_, reference_dual_, fracture_->strengths, *fracture_->sawtooth,
-                                               fracture_->options, summary.time, break_log_, tooth_log_)
-                          : break_until_stable(*mechanics_, reference_dual_, fracture_->strengths, fracture_->options,
+                                               loop, summary.time, break_log_, tooth_log_)
+                          : break_until_stable(*mechanics_, reference_dual_, fracture_->strengths, loop,
                                                summary.time, break_log_);
   summary.mechanics_seconds += bs.solve_seconds;
   summary.stress_seconds += bs.stress_seconds;
@@ -333,6 +341,12 @@ bool CoupledModel::break_beams(int pass, int& n_breaks, CoupledStepSummary& summ
   if (summary.first_event_ratio == 0.0) summary.first_event_ratio = bs.first_ratio;
   summary.n_breaks += bs.n_breaks;
   summary.n_teeth += bs.n_teeth;
+  if (bs.status == BreakLoopStatus::interrupted) {
+    summary.status = CoupledStatus::interrupted;
+    summary.message = "interrupted in the step to t = " + hm::core::format_value(summary.time) + " at pass " +
+                      std::to_string(pass) + ", " + bs.message + " (the step is undone)";
+    return false;
+  }
   if (!bs.is_stable()) {
     summary.status = CoupledStatus::solver_failure;
     summary.message = "break loop at t = " + hm::core::format_value(summary.time) + ", pass " +
@@ -362,7 +376,8 @@ bool CoupledModel::solve_flow(double dt, int pass, const Eigen::VectorXd& u, Dua
 }
 
 void CoupledModel::finish_step(double dt, bool converged, DualGraph dual, CoupledStepSummary& summary) {
-  if (summary.status != CoupledStatus::solver_failure && summary.status != CoupledStatus::overshoot) {
+  if (summary.status != CoupledStatus::solver_failure && summary.status != CoupledStatus::overshoot &&
+      summary.status != CoupledStatus::interrupted) {
     if (converged) {
       summary.status = CoupledStatus::converged;
     } else if (options_.accept_unconverged) {
@@ -425,6 +440,12 @@ CoupledRunSummary CoupledModel::run(const TimeStepping& stepping, const Observer
     c.dt_nominal = stepping.dt_initial;
     if (observer) observer(*this, CoupledStepSummary{}, true);
   }
+  // A restored cursor must fit this case's stepping (a damaged checkpoint would step backwards or
+  // read past the output times).
+  if (c.next_output >= outputs.size() || !(c.dt_nominal > 0.0) || !(time() >= 0.0) || time() > stepping.t_end)
+    throw InputError("run: the restored state (t = " + hm::core::format_value(time()) + ", dt = " +
+                     hm::core::format_value(c.dt_nominal) + ", output " + std::to_string(c.next_output) + " of " +
+                     std::to_string(outputs.size()) + ") does not fit the case's stepping: a damaged checkpoint");
   run.status = CoupledStatus::converged;
   run.message.clear();
   while (time() < stepping.t_end - snap) {
@@ -437,6 +458,8 @@ CoupledRunSummary CoupledModel::run(const TimeStepping& stepping, const Observer
     const auto tolerance = [&](int halvings) {
       return halvings < stepping.max_step_halvings ? stepping.overshoot_tolerance : 0.0;
     };
+    // An interrupted step leaves no trace, not even in the counters: a resumed run redoes it whole.
+    const RunCursor before = c;
     CoupledStepSummary s = step(dt, tolerance(0));
     run.total_iterations += s.iterations;
     for (int h = 0; (s.status == CoupledStatus::not_converged || s.status == CoupledStatus::overshoot) &&
@@ -447,6 +470,12 @@ CoupledRunSummary CoupledModel::run(const TimeStepping& stepping, const Observer
       ++run.n_step_halvings;
       s = step(dt, tolerance(h + 1));
       run.total_iterations += s.iterations;
+    }
+    if (s.status == CoupledStatus::interrupted) {
+      c = before;
+      run.status = s.status;
+      run.message = s.message;
+      break;
     }
     run.status = s.status;
     if (!s.is_ok()) {
@@ -612,9 +641,18 @@ void CoupledModel::restore_model_state(core::StateReader& r) {
     throw InputError(r.source() + ": a state of another lattice (" + std::to_string(particles) + " particles, " +
                      std::to_string(beams) + " beams; this one has " + std::to_string(lattice().n_particles()) +
                      ", " + std::to_string(lattice().n_beams()) + ")");
+  // Sizes and indices are checked against this lattice before anything indexes with them: a damaged
+  // checkpoint whose checksum still matches is refused, not followed out of an array.
+  const auto check = [&](bool ok, const char* tag) {
+    if (!ok) throw InputError(r.source() + ": at '" + tag + "': not a state of this lattice (damaged or of another case)");
+  };
+  const Eigen::Index n_dofs = 3 * lattice().n_particles();
   mechanics_->restore_state(r);
   flow_->restore_state(r);
   transfer_history(r, *this);
+  check(displacement_.size() == n_dofs, "model.displacement");
+  check(previous_displacement_.size() == 0 || previous_displacement_.size() == n_dofs, "model.previous_displacement");
+  check(previous_pressure_.size() == 0 || previous_pressure_.size() == flow_->pressure().size(), "model.previous_pressure");
   r.get("model.at_rest", at_rest_);
   bool fracture = false;
   r.get("model.fracture", fracture);
@@ -623,11 +661,19 @@ void CoupledModel::restore_model_state(core::StateReader& r) {
   if (fracture_) {
     r.get("strengths.tensile", fracture_->strengths.tensile);
     r.get("strengths.compressive", fracture_->strengths.compressive);
+    check(fracture_->strengths.tensile.size() == beams, "strengths.tensile");
+    check(fracture_->strengths.compressive.size() == beams, "strengths.compressive");
   }
   break_log_ = restore_break_log(r);
+  // Each logged break names a broken beam of this lattice and its particles.
+  for (const BreakEvent& e : break_log_)
+    check(e.beam >= 0 && e.beam < beams && mechanics_->states()[static_cast<std::size_t>(e.beam)] != BeamState::intact &&
+              lattice().beams[static_cast<std::size_t>(e.beam)] == std::array<int, 2>{e.particle_i, e.particle_j},
+          "breaks.ints");
   if (sawtooth_law()) {
     fracture_->sawtooth->restore_state(r);
     tooth_log_ = restore_tooth_log(r);
+    for (const ToothEvent& e : tooth_log_) check(e.beam >= 0 && e.beam < beams, "teeth.ints");
   }
 }
 

@@ -128,6 +128,11 @@ BreakLoopSummary run_break_loop(BeamMechanics& mechanics, const DualGraph& dual,
   FailureScan scan(mechanics.lattice(), dual, options.crack_tip, mechanics.states(), law);
   std::vector<BeamForce> forces;  // the connection forces of each solve, storage reused
   while (true) {
+    if (options.interrupted && options.interrupted()) {
+      summary.status = BreakLoopStatus::interrupted;
+      summary.message = "interrupted after " + std::to_string(summary.n_breaks) + " breaks";
+      break;
+    }
     const MechanicsSummary solved = mechanics.solve(false);  // no equilibrium residual: not read here
     summary.solve_seconds += solved.solve_seconds;
     ++summary.n_solves;

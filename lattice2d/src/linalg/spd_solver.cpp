@@ -326,6 +326,11 @@ void CholmodSolver::restore_state(core::StateReader& r) {
   r.get("cholmod.has_factor", has_factor);
   // The ordering is a function of the pattern: analysing the same one gives the same symbolic factor.
   const auto n_rows = static_cast<Eigen::Index>(impl_->analysed_outer.size()) - 1;
+  if (n_rows != matrix_.rows())
+    throw InputError(r.source() + ": at 'cholmod.analysed_outer': a pattern of " + std::to_string(n_rows) +
+                     " rows for a matrix of " + std::to_string(matrix_.rows()));
+  core::check_compressed_pattern(impl_->analysed_outer.data(), impl_->analysed_inner.data(), n_rows, n_rows,
+                                 impl_->analysed_inner.size(), r.source(), "cholmod.analysed_inner");
   const std::vector<double> ones(impl_->analysed_inner.size(), 1.0);
   const Matrix analysed = Eigen::Map<const Matrix>(n_rows, n_rows, static_cast<Eigen::Index>(ones.size()),
                                                    impl_->analysed_outer.data(), impl_->analysed_inner.data(),
@@ -374,10 +379,13 @@ void CholmodSolver::restore_state(core::StateReader& r) {
   if (has_forward) {
     std::vector<double> y;
     r.get("forward.y", y);
+    if (static_cast<Eigen::Index>(y.size()) != matrix_.rows())
+      throw InputError(r.source() + ": at 'forward.y': wrong size");
     impl_->forward.reset(cholmod_allocate_dense(y.size(), 1, y.size(), CHOLMOD_REAL, c));
     if (!impl_->forward) throw std::runtime_error("restoring the mechanics solver: out of memory");
     copy_into(impl_->forward->x, y);
     r.get("forward.b", impl_->forward_b);
+    if (impl_->forward_b.size() != matrix_.rows()) throw InputError(r.source() + ": at 'forward.b': wrong size");
   }
 }
 

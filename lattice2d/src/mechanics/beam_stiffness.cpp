@@ -21,6 +21,8 @@ void BeamParameters::validate() const {
   if (scaling < 0 || scaling > static_cast<int>(StiffnessScaling::voronoi_facet))
     throw InputError("stiffness_scaling = " + std::to_string(scaling) + ", allowed: uniform, voronoi_facet");
   require_closed(facet_floor, "facet_floor", 0.0, 1.0 / std::sqrt(3.0));
+  if (!(bending_factor > 0.0 && bending_factor <= 1.0))
+    throw InputError("bending_factor = " + format_value(bending_factor) + ", allowed: 0 < bending_factor <= 1");
 }
 
 namespace {
@@ -64,7 +66,7 @@ BeamParameters beam_parameters_for(const Lattice& lattice, const BeamParameters&
 }
 
 double BeamParameters::rotational_stiffness() const {
-  return normal_stiffness / (2.0 / (aspect * aspect) + 4.0 * (1.0 + beam_poisson));
+  return bending_factor * normal_stiffness / (2.0 / (aspect * aspect) + 4.0 * (1.0 + beam_poisson));
 }
 
 double BeamParameters::gamma() const { return aspect * aspect * (1.0 + beam_poisson) / 6.0; }

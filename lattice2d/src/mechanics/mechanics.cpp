@@ -160,6 +160,7 @@ BeamMechanics::BeamMechanics(Lattice lattice, const BeamParameters& parameters, 
   for (int e = 0; e < lattice_.n_beams(); ++e)
     normal_stiffness_[static_cast<std::size_t>(e)] = beam_parameters_for(lattice_, parameters_, e).normal_stiffness;
   softening_.assign(static_cast<std::size_t>(lattice_.n_beams()), 1.0);
+  closed_.assign(static_cast<std::size_t>(lattice_.n_beams()), false);
   detached_.assign(static_cast<std::size_t>(n_p), false);
 
   // 1. Held degrees of freedom: supports, boundary strain, explicit list (later overrides earlier).
@@ -351,12 +352,19 @@ void BeamMechanics::change_state(int beam, BeamState to) {
   // K_e(from) - K_e(to) (or the reverse) is a subset of the columns of beam_element_factor: the
   // normal spring (0) and the bending (1, 2). An intact beam carries its softening factor on all
   // three; a contact has the unsoftened normal spring (a closed crack transmits the rock's stiffness).
+  // A closed softened beam already has the unsoftened normal spring.
   const double softening = softening_[static_cast<std::size_t>(beam)];
+  const double normal = closed_[static_cast<std::size_t>(beam)] ? 1.0 : softening;
   if (from == BeamState::intact && to == BeamState::contact) {
     modify_beam(beam, {1, 2}, softening, -1);
-    if (softening != 1.0) modify_beam(beam, {0}, 1.0 - softening, +1);
+    if (normal != 1.0) modify_beam(beam, {0}, 1.0 - normal, +1);
   } else if (from == BeamState::intact && to == BeamState::open) {
-    modify_beam(beam, {0, 1, 2}, softening, -1);
+    if (normal == softening) {
+      modify_beam(beam, {0, 1, 2}, softening, -1);
+    } else {
+      modify_beam(beam, {0}, normal, -1);
+      modify_beam(beam, {1, 2}, softening, -1);
+    }
   } else if (from == BeamState::contact && to == BeamState::open) {
     modify_beam(beam, {0}, 1.0, -1);
   } else if (from == BeamState::open && to == BeamState::contact) {
@@ -366,7 +374,9 @@ void BeamMechanics::change_state(int beam, BeamState to) {
   }
   if (from == BeamState::intact) {
     broken_.push_back(beam);
+    if (softening != 1.0) softened_.erase(std::lower_bound(softened_.begin(), softened_.end(), beam));
     softening_[static_cast<std::size_t>(beam)] = 1.0;
+    closed_[static_cast<std::size_t>(beam)] = false;
   }
   states_[static_cast<std::size_t>(beam)] = to;
 }
@@ -380,7 +390,12 @@ void BeamMechanics::soften_beam(int beam, double stiffness_factor) {
   if (!(stiffness_factor > 0.0 && stiffness_factor < now))
     throw hm::InputError("stiffness_factor = " + hm::core::format_value(stiffness_factor) +
                          ", allowed: 0 < stiffness_factor < the beam's current " + hm::core::format_value(now));
-  modify_beam(beam, {0, 1, 2}, now - stiffness_factor, -1);
+  // A closed beam keeps its unsoftened normal spring: only its bending softens.
+  if (closed_[static_cast<std::size_t>(beam)])
+    modify_beam(beam, {1, 2}, now - stiffness_factor, -1);
+  else
+    modify_beam(beam, {0, 1, 2}, now - stiffness_factor, -1);
+  if (now == 1.0) softened_.insert(std::lower_bound(softened_.begin(), softened_.end(), beam), beam);
   softening_[static_cast<std::size_t>(beam)] = stiffness_factor;
 }
 
@@ -603,7 +618,13 @@ void BeamMechanics::set_external_forces(const Eigen::VectorXd& forces) {
 BeamParameters BeamMechanics::beam_parameters(int beam) const {
   BeamParameters p = parameters_;
   // Times 1 for every beam of a brittle lattice: bit for bit the unsoftened constants.
-  p.normal_stiffness = normal_stiffness_[static_cast<std::size_t>(beam)] * softening_[static_cast<std::size_t>(beam)];
+  const auto k = static_cast<std::size_t>(beam);
+  if (closed_[k]) {  // a closed crack: the unsoftened normal spring, the softened bending
+    p.normal_stiffness = normal_stiffness_[k];
+    p.bending_factor = softening_[k];
+  } else {
+    p.normal_stiffness = normal_stiffness_[k] * softening_[k];
+  }
   return p;
 }
 
@@ -639,6 +660,20 @@ MechanicsSummary BeamMechanics::solve(bool equilibrium_check) {
         change_state(e, to);
         ++changes;
       }
+    }
+    // The same for softened intact beams: a shortened one is closed (its normal spring unsoftened,
+    // the difference (1 - s) k_n added as a rank-1 update), a lengthened one open again.
+    for (int e : softened_) {
+      const auto k = static_cast<std::size_t>(e);
+      const auto [i, j] = lattice_.beams[k];
+      if (detached_[static_cast<std::size_t>(i)] || detached_[static_cast<std::size_t>(j)]) continue;
+      const Eigen::Vector2d du(raw_[dof_index(j, 0)] - raw_[dof_index(i, 0)], raw_[dof_index(j, 1)] - raw_[dof_index(i, 1)]);
+      const double elongation = du.dot(lattice_.direction.col(e));
+      const bool close = !closed_[k] && elongation < -tol, open = closed_[k] && elongation > tol;
+      if (!close && !open) continue;
+      modify_beam(e, {0}, 1.0 - softening_[k], close ? +1 : -1);
+      closed_[k] = close;
+      ++changes;
     }
     summary.n_contact_changes += changes;
     if (changes == 0) {
@@ -725,41 +760,92 @@ void BeamMechanics::save_state(core::StateWriter& w) const {
   w.put("mechanics.broken", broken_);
   w.put("mechanics.springs", springs_);
   w.put("mechanics.softening", softening_);
+  w.put("mechanics.closed", closed_);
   w.put("mechanics.solver", solver_->name());
   solver_->save_state(w);
 }
 
 void BeamMechanics::restore_state(core::StateReader& r) {
   const auto n_dofs = static_cast<std::size_t>(3 * lattice_.n_particles());
+  const auto n_beams = states_.size();
+  // Every count and index is checked against this lattice before it is used: a damaged checkpoint
+  // whose checksum still matches must be refused, not followed out of an array.
   const auto check = [&](bool ok, const char* tag) {
-    if (!ok) throw InputError(r.source() + ": at '" + tag + "': a state of another lattice");
+    if (!ok) throw InputError(r.source() + ": at '" + tag + "': not a state of this lattice (damaged or of another case)");
   };
+  const auto sized = [&](const Eigen::VectorXd& v, std::size_t n) { return static_cast<std::size_t>(v.size()) == n; };
   std::string states;
   r.get("mechanics.states", states);
-  check(states.size() == states_.size(), "mechanics.states");
+  check(states.size() == n_beams, "mechanics.states");
+  for (const char b : states)
+    check(b == static_cast<char>(BeamState::intact) || b == static_cast<char>(BeamState::contact) ||
+              b == static_cast<char>(BeamState::open),
+          "mechanics.states");
   std::transform(states.begin(), states.end(), states_.begin(), [](char b) { return static_cast<BeamState>(b); });
   r.get("mechanics.held", held_);
   check(held_.size() == n_dofs, "mechanics.held");
   r.get("mechanics.held_value", held_value_);
+  check(sized(held_value_, n_dofs), "mechanics.held_value");
   r.get("mechanics.detached", detached_);
+  check(detached_.size() == static_cast<std::size_t>(lattice_.n_particles()), "mechanics.detached");
   r.get("mechanics.n_detached", n_detached_);
+  check(n_detached_ >= 0 && n_detached_ <= lattice_.n_particles(), "mechanics.n_detached");
   r.get("mechanics.pinned_particle", pinned_particle_);
+  check(pinned_particle_ >= -1 && pinned_particle_ < lattice_.n_particles(), "mechanics.pinned_particle");
   r.get("mechanics.free_index", free_index_);
   r.get("mechanics.free_dofs", free_dofs_);
+  // The numbering of the free dofs is a function of the held ones (setup_system).
+  check(free_index_.size() == n_dofs, "mechanics.free_index");
+  for (std::size_t dof = 0, free = 0; dof < n_dofs; ++dof) {
+    check(free_index_[dof] == (held_[dof] ? -1 : static_cast<int>(free)), "mechanics.free_index");
+    if (!held_[dof]) {
+      check(free < free_dofs_.size() && free_dofs_[free] == static_cast<int>(dof), "mechanics.free_dofs");
+      ++free;
+    }
+  }
+  check(free_dofs_.size() == static_cast<std::size_t>(std::count(held_.begin(), held_.end(), false)),
+        "mechanics.free_dofs");
   r.get("mechanics.pressure_loads", pressure_loads_);
+  check(sized(pressure_loads_, n_dofs), "mechanics.pressure_loads");
   r.get("mechanics.extra_loads", extra_loads_);
+  check(sized(extra_loads_, n_dofs), "mechanics.extra_loads");
   r.get("mechanics.held_term", held_term_);
+  check(sized(held_term_, n_dofs), "mechanics.held_term");
   r.get("mechanics.raw", raw_);
+  check(sized(raw_, n_dofs), "mechanics.raw");
   r.get("mechanics.displacement", displacement_);
-  check(displacement_.size() == static_cast<Eigen::Index>(n_dofs), "mechanics.displacement");
+  check(sized(displacement_, n_dofs), "mechanics.displacement");
   r.get("mechanics.broken", broken_);
+  // The broken beams, each once, are exactly those not intact.
+  std::vector<bool> listed(n_beams, false);
+  for (const int e : broken_) {
+    check(e >= 0 && static_cast<std::size_t>(e) < n_beams && !listed[static_cast<std::size_t>(e)] &&
+              states_[static_cast<std::size_t>(e)] != BeamState::intact,
+          "mechanics.broken");
+    listed[static_cast<std::size_t>(e)] = true;
+  }
+  check(broken_.size() == static_cast<std::size_t>(std::count_if(states_.begin(), states_.end(), [](BeamState b) {
+          return b != BeamState::intact;
+        })),
+        "mechanics.broken");
   r.get("mechanics.springs", springs_);
+  check(springs_.size() == 0 || sized(springs_, n_beams), "mechanics.springs");
   r.get("mechanics.softening", softening_);
-  check(softening_.size() == states_.size(), "mechanics.softening");
+  check(softening_.size() == n_beams, "mechanics.softening");
+  r.get("mechanics.closed", closed_);
+  check(closed_.size() == n_beams, "mechanics.closed");
+  softened_.clear();
+  for (std::size_t e = 0; e < n_beams; ++e) {
+    const bool softened = states_[e] == BeamState::intact && softening_[e] != 1.0;
+    check(softening_[e] > 0.0 && softening_[e] <= 1.0 && (softened || (!closed_[e] && softening_[e] == 1.0)),
+          "mechanics.softening");
+    if (softened) softened_.push_back(static_cast<int>(e));
+  }
   std::string solver;
   r.get("mechanics.solver", solver);
   check(solver == solver_->name(), "mechanics.solver");
   solver_->restore_state(r);
+  check(solver_->matrix().rows() == static_cast<Eigen::Index>(free_dofs_.size()), "cholmod.matrix");
 }
 
 }  // namespace hm::lattice2d

@@ -31,14 +31,21 @@ struct DimensionlessParameters {
   PoroelasticParameters material;  ///< nu, b, E/M, vol_strain
   /// Q = mu q/(k E), dimensionless injection rate (Eq. 14). Allowed: 0 <= Q <= 1e6.
   double Q = 0.01;
-  /// iota = k_f/k, fracture permeability enhancement (Section 2.2). Allowed: > 0.
+  /// iota = k_f/k, fracture permeability enhancement (Section 2.2). Allowed: 0 < iota <= kMaxIota.
   double iota = 1.0;
+  /// A fracture of k_f ~ 1e-8 m^2 (a cubic-law aperture of ~0.3 mm) in a nanodarcy shale (k ~ 1e-20
+  /// m^2); the paper's largest is 1e6. Beyond it the flow matrix's conductances span more digits than
+  /// a double has (1e18 ran for minutes at N = 1000, 1e300 fails the first step).
+  static constexpr double kMaxIota = 1e12;
   /// R_i/R, borehole radius (Table 1: 0.138); 0 for point injection. Allowed: 0 <= R_i < 1.
   double R_i = 0.138;
-  /// T_u/E, tensile strength (Table 1: 2e-4). Allowed: > 0.
+  /// T_u/E, tensile strength (Table 1: 2e-4). Allowed: 0 < tensile_strength <= kMaxStrength.
   double tensile_strength = 2e-4;
-  /// C_u/E, uniaxial compressive strength (Table 1: 3.33e-3). Allowed: > 0.
+  /// C_u/E, uniaxial compressive strength (Table 1: 3.33e-3). Allowed: 0 < compressive_strength <= kMaxStrength.
   double compressive_strength = 3.33e-3;
+  /// A strength over E is the strain at failure: rocks fail at 1e-4 ... 1e-2, and above 1 the
+  /// small-strain lattice means nothing. A larger value is a strength in Pa typed into this table.
+  static constexpr double kMaxStrength = 1.0;
   /// mu_i, internal friction coefficient of Eq. 11 (Table 1: 0.9). Allowed: >= 0.
   double friction = 0.9;
   /// E/K_w, the fluid's compressibility in units of the rock's (Table 1: 1e10/2.2e9); it enters E/M

@@ -123,6 +123,13 @@ class StateReader {
   std::size_t position_ = 0, end_ = 0;
 };
 
+/// Throws hm::InputError naming `source` and `tag` unless (outer, inner) is a compressed-column
+/// pattern of an n_rows x n_cols matrix: outer starts at 0, never decreases and ends at inner's
+/// size; each column's row indices are in range and increasing. A damaged checkpoint whose checksum
+/// still matches is refused here, before a solver follows an index out of its arrays.
+void check_compressed_pattern(const int* outer, const int* inner, std::int64_t n_rows, std::int64_t n_cols,
+                              std::size_t n_inner, const std::string& source, std::string_view tag);
+
 // ------------------------------------------------------------------------------------------------
 
 template <class T>
@@ -151,12 +158,15 @@ void StateReader::get_sparse(std::string_view tag, Sparse& a) {
   std::int64_t rows = 0, cols = 0;
   get(t + ".rows", rows);
   get(t + ".cols", cols);
+  if (rows < 0 || cols < 0 || rows > std::int64_t{1} << 31 || cols > std::int64_t{1} << 31)
+    fail(tag, "a matrix of " + std::to_string(rows) + " x " + std::to_string(cols));
   a.resize(static_cast<typename Sparse::Index>(rows), static_cast<typename Sparse::Index>(cols));
   a.makeCompressed();
   get_array(t + ".outer", a.outerIndexPtr(), static_cast<std::size_t>(a.outerSize() + 1));
   const std::size_t nnz = next_count(t + ".inner", 'i', sizeof(int));
   a.resizeNonZeros(static_cast<typename Sparse::Index>(nnz));
   get_array(t + ".inner", a.innerIndexPtr(), nnz);
+  check_compressed_pattern(a.outerIndexPtr(), a.innerIndexPtr(), rows, cols, nnz, source_, tag);
   get_array(t + ".values", a.valuePtr(), nnz);
 }
 

@@ -148,7 +148,7 @@ enum class CoupledStatus {
   accepted_unconverged,  ///< max_iterations hit and accept_unconverged set
   not_converged,   ///< max_iterations hit: the step was not taken
   solver_failure,  ///< the mechanics or the flow solve failed: the step was not taken
-  interrupted,     ///< run() stopped between steps because its stop request said so
+  interrupted,     ///< run() stopped: between steps (its stop request) or within one, undone (set_interrupt)
   overshoot,       ///< its first break was above 1 + overshoot_tolerance: the step was not taken
 };
 constexpr auto enum_names(CoupledStatus) {
@@ -300,6 +300,11 @@ class CoupledModel {
   /// (trial, size n_unknowns) and displacement: for studies of the iteration itself (Fig. 8).
   using PassObserver = std::function<void(int pass, const Eigen::VectorXd& pressure, const Eigen::VectorXd& displacement)>;
   void set_pass_observer(PassObserver observer) { pass_observer_ = std::move(observer); }
+  /// Asked between coupling passes and between the break loop's solves (empty: never): when it returns
+  /// true, the step in progress is undone (as a failed attempt is) and run() ends as interrupted at
+  /// the last accepted step, so a Ctrl-C need not wait for a long step; the state is a step's, and a
+  /// checkpoint of it continues bitwise. The settling at t = 0 is not interrupted.
+  void set_interrupt(std::function<bool()> requested) { interrupt_ = std::move(requested); }
 
   double time() const { return flow_->time(); }
   const Lattice& lattice() const { return mechanics_->lattice(); }
@@ -364,6 +369,7 @@ class CoupledModel {
   Eigen::VectorXd previous_displacement_;
   double previous_dt_ = 0.0;
   PassObserver pass_observer_;
+  std::function<bool()> interrupt_;
   std::unique_ptr<PassRelaxation> relaxation_;
   struct FractureSetup {
     BeamStrengths strengths;

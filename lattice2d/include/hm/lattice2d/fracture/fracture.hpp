@@ -43,6 +43,9 @@ struct BreakLoopOptions {
   /// is reported (status break_cap), never thrown. Our choice 1e6 (more than the beams of the paper's
   /// largest lattice). Allowed: >= 1.
   int max_breaks = 1000000;
+  /// Asked before each solve (empty: never): when it returns true the loop ends at once with status
+  /// interrupted, so that a user's Ctrl-C does not wait for thousands of breaks. The caller undoes them.
+  std::function<bool()> interrupted;
 
   /// Throws hm::InputError "break_loop.field = value, allowed: rule".
   void validate() const;
@@ -53,11 +56,12 @@ enum class BreakLoopStatus {
   stable,        ///< no intact beam has failure ratio >= 1 at the final solve
   break_cap,     ///< max_breaks beams broken, the last solve may still have failing beams
   solve_failed,  ///< a mechanical solve did not converge (linear solver or contact set); see message
+  interrupted,   ///< BreakLoopOptions::interrupted said so: the loop stopped between two solves
 };
 constexpr auto enum_names(BreakLoopStatus) {
   return core::enum_table<BreakLoopStatus>({
       {BreakLoopStatus::stable, "stable"}, {BreakLoopStatus::break_cap, "break_cap"},
-      {BreakLoopStatus::solve_failed, "solve_failed"}});
+      {BreakLoopStatus::solve_failed, "solve_failed"}, {BreakLoopStatus::interrupted, "interrupted"}});
 }
 
 /// What one break loop did (Ceres' Summary in small).

@@ -62,9 +62,13 @@ struct BeamParameters {
   /// voronoi_facet only: floor on d/L in the factor, so that the beams of nearly co-circular
   /// quadrilaterals (d -> 0) keep a little stiffness. Allowed: 0 <= facet_floor <= 1/sqrt(3).
   double facet_floor = 0.0;
+  /// k_omega's own factor, on top of k_n's: 1 except for a softened beam whose crack has closed, whose
+  /// normal stiffness is the unsoftened k_n again while its bending stays softened (BeamMechanics).
+  /// Allowed: 0 < bending_factor <= 1.
+  double bending_factor = 1.0;
 
   void validate() const;
-  /// k_omega = k_n (2/a^2 + 4 (1 + nu0))^-1 (text after Eq. 4).
+  /// k_omega = bending_factor k_n (2/a^2 + 4 (1 + nu0))^-1 (text after Eq. 4).
   double rotational_stiffness() const;
   /// gamma = a^2 (1 + nu0) / 6 (text after Eq. 4).
   double gamma() const;

@@ -165,8 +165,12 @@ class BeamMechanics {
   /// the bending k_omega, Eq. 4) becomes stiffness_factor times the unsoftened one, by a rank-3
   /// downdate of the kept factor. Allowed: 0 < stiffness_factor < the current factor (a beam only
   /// softens); throws hm::InputError otherwise, for a bad index or a broken beam. When the beam
-  /// later breaks, its contact has the unsoftened k_n (Eqs. 9-10).
+  /// later breaks, its contact has the unsoftened k_n (Eqs. 9-10). While a softened beam is shortened
+  /// (its crack closed: the contact active set of solve() decides, as for broken beams), its normal
+  /// stiffness is the unsoftened k_n and only its bending stays softened.
   void soften_beam(int beam, double stiffness_factor);
+  /// True while softened beam `beam` is closed (normal stiffness unsoftened; see soften_beam).
+  bool is_closed(int beam) const { return closed_[static_cast<std::size_t>(beam)]; }
   /// The stiffness of intact beam `beam` over its unsoftened stiffness (1 unless softened; 1 for a
   /// broken beam, whose contact is unsoftened).
   double stiffness_factor(int beam) const { return softening_[static_cast<std::size_t>(beam)]; }
@@ -232,6 +236,8 @@ class BeamMechanics {
   std::vector<BeamState> states_;
   std::vector<double> normal_stiffness_;  // per beam: beam_parameters_for(...).normal_stiffness (facet scaling)
   std::vector<double> softening_;         // per beam: stiffness over the unsoftened one (soften_beam)
+  std::vector<bool> closed_;              // per beam: softened, intact and shortened (normal unsoftened)
+  std::vector<int> softened_;             // the intact softened beams, in index order (the closure loop's)
   std::vector<bool> held_;       // per dof
   Eigen::VectorXd held_value_;   // per dof (0 where free)
   std::vector<bool> detached_;   // per particle

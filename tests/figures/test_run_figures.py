@@ -1,0 +1,98 @@
+"""The fracture-pressure figures (Figs. 12, 14, 16, 17) describe the run they draw: the setting comes from
+its config.toml (a Q = 0.003 run is titled Q = 0.003, not the paper's 0.01), an in-situ field is named, a
+run that stopped early is marked INCOMPLETE, a run without a snapshot is refused with one line, and a
+folder of the wrong kind is refused with one line instead of a traceback.
+
+Run: /usr/bin/python3 tests/figures/test_run_figures.py HMLATTICE (CTest runs it)."""
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+FIGURES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "figures")
+sys.path.insert(0, FIGURES)
+import hmplot  # noqa: E402
+
+HMLATTICE = sys.argv.pop(1) if len(sys.argv) > 1 else "build/hmlattice"
+
+# A small fracturing annulus (N = 600) under an anisotropic in-situ field, to two output times: 34 steps
+# (the first output time is step 30), ~1 s.
+CASE = """model = "lattice2d"
+[physics]
+Q = 0.003
+b = 0.2
+iota = 1000
+[lattice]
+domain = "annulus"
+n_particles = 600
+seed = 4
+[mechanics]
+S_H = 3e-4
+S_h = 1e-4
+theta_H = 30
+[numerics]
+t_end = 0.002
+[fracture]
+enabled = true
+[output]
+times = [0.001, 0.002]
+"""
+
+
+def run(args, cwd):
+    return subprocess.run(args, cwd=cwd, capture_output=True, text=True)
+
+
+class RunFigures(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.dir = tempfile.TemporaryDirectory(prefix="hmlattice-test-figures-")
+        with open(os.path.join(cls.dir.name, "case.toml"), "w") as f:
+            f.write(CASE)
+        for args in (["run", "case.toml", "--out", "whole"],
+                     # stopped before the first output time: no snapshot at all
+                     ["run", "case.toml", "--out", "early", "--stop-after-steps", "2"]):
+            r = run([HMLATTICE] + args, cls.dir.name)
+            assert r.returncode == 0, r.stderr
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.dir.cleanup()
+
+    def script(self, name, data, out):
+        return run([sys.executable, os.path.join(FIGURES, name), "--data", data, "--out", out], self.dir.name)
+
+    def test_the_setting_is_the_runs(self):
+        setting = hmplot.run_setting(os.path.join(self.dir.name, "whole"))
+        for part in ("$Q = 0.003$", "$\\iota = 1000$", "$b = 0.2$", "$N = 600$", "seed 4",
+                     "$S_H = 3 \\times 10^{-4}$", "$S_h = 10^{-4}$", "$\\theta_H = 30°$"):
+            self.assertIn(part, setting)
+        r = self.script("fig12_fracture_pressure.py", "whole", "fig")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("fig12: b = 0.2: 2 snapshots\n", r.stdout)
+        self.assertTrue(os.path.getsize(os.path.join(self.dir.name, "fig", "fig12_fracture_pressure.png")) > 10000)
+
+    def test_an_incomplete_run_is_marked_and_one_without_snapshots_refused(self):
+        r = run([HMLATTICE, "run", "case.toml", "--out", "part", "--stop-after-steps", "31"], self.dir.name)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertFalse(hmplot.run_is_complete(os.path.join(self.dir.name, "part")))
+        self.assertTrue(hmplot.run_is_complete(os.path.join(self.dir.name, "whole")))
+        r = self.script("fig14_fracture_pressure.py", "part", "fig_part")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("(INCOMPLETE run)", r.stdout)
+        r = self.script("fig16_fracture_pressure.py", "early", "fig_early")
+        self.assertNotEqual(r.returncode, 0)
+        self.assertEqual(r.stderr.count("\n"), 1, r.stderr)
+        self.assertIn("nothing to draw", r.stderr)
+
+    def test_a_folder_of_another_kind_is_one_line(self):
+        r = self.script("fig10_fdm1d_pressure_displacement.py", "whole", "fig10")
+        self.assertNotEqual(r.returncode, 0)
+        self.assertEqual(r.stderr.count("\n"), 1, r.stderr)
+        self.assertIn("profiles.csv: no such file", r.stderr)
+        self.assertNotIn("Traceback", r.stderr)
+
+
+if __name__ == "__main__":
+    unittest.main()
