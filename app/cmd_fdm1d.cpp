@@ -1,4 +1,4 @@
-// hmlattice fdm1d <case.toml> [--out DIR] [--overwrite]
+// hmlattice fdm1d <case.toml> [--set table.key=value ...] [--out DIR] [--overwrite]
 //
 // Runs the radial 1D poroelastic model of the paper's Appendix A (monolithic implicit Euler) on a
 // case file and writes, into DIR (default out/<case name>):
@@ -26,15 +26,17 @@ namespace hm::app {
 void add_fdm1d_command(CLI::App& app, int& exit_code, const std::string& command_line) {
   struct Args {
     std::string case_file, out;
+    std::vector<std::string> set;  // --set table.key=value
     bool overwrite = false;
   };
   auto a = std::make_shared<Args>();
   auto* cmd = app.add_subcommand("fdm1d", "Run the radial 1D finite-difference model (Appendix A) on a case");
   cmd->add_option("case", a->case_file, "case file (TOML), e.g. cases/fig10_fdm1d_b0.5.toml")->required();
   add_output_options(*cmd, a->out, a->overwrite);
+  add_set_option(*cmd, a->set);
   cmd->callback([a, &exit_code, command_line] {
     // 1. Read and validate everything, the output folder included, before computing.
-    const cases::Fdm1dCase c = cases::read_fdm1d_case(a->case_file);
+    const cases::Fdm1dCase c = cases::read_fdm1d_case(a->case_file, a->set);
     core::ResultFolder out(output_folder(a->out, a->case_file), "--out", a->overwrite, command_line);
     const auto& p = c.physics.parameters;
     std::cout << "fdm1d: Q = " << p.Q << ", b = " << p.material.b << ", nu = " << p.material.nu

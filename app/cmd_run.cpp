@@ -1,4 +1,5 @@
-// hmlattice run <case.toml> [--out DIR] [--overwrite] [--checkpoint-every SECONDS] [--stop-after-steps N]
+// hmlattice run <case.toml> [--set table.key=value ...] [--out DIR] [--overwrite] [--checkpoint-every SECONDS]
+//               [--stop-after-steps N]
 // hmlattice run --resume DIR
 //
 // Runs the two-way coupled 2D lattice model of Sections 2.1-2.3 (beam mechanics + dual-graph flow,
@@ -55,6 +56,7 @@ int remaining_steps(double t, double dt, const lattice2d::TimeStepping& s) {
 
 struct RunArgs {
   std::string case_file, out, resume;
+  std::vector<std::string> set;  // --set table.key=value
   bool overwrite = false;
   double checkpoint_seconds = 300.0;
   int stop_after_steps = -1;
@@ -68,7 +70,8 @@ void run_case(const RunArgs& a, int& exit_code, const std::string& command_line)
       resuming ? std::make_unique<core::ResultFolder>(core::ResultFolder::Resume{}, a.resume, "--resume", command_line)
                : std::make_unique<core::ResultFolder>(output_folder(a.out, a.case_file), "--out", a.overwrite,
                                                       command_line);
-  const cases::RunCase c = cases::read_run_case(resuming ? out->path() / "config.toml" : std::filesystem::path(a.case_file));
+  const cases::RunCase c = resuming ? cases::read_run_case(out->path() / "config.toml")
+                                    : cases::read_run_case(a.case_file, a.set);
   const std::string case_text = cases::run_case_to_toml(c, "");
   const auto& p = c.physics.parameters;
   std::cout << "run: Q = " << p.Q << ", b = " << p.material.b << ", E/M = " << p.material.E_over_M
@@ -121,6 +124,12 @@ void run_case(const RunArgs& a, int& exit_code, const std::string& command_line)
   const core::InterruptRequest interrupt;
   model->set_interrupt([&] { return interrupt.signal() != 0; });
   int step = first_step;
+  // A long step (thousands of breaks at N = 1e5) reports its passes on the same throttled line.
+  model->set_pass_observer([&](int pass, const Eigen::VectorXd&, const Eigen::VectorXd&) {
+    progress.update(model->time(), c.stepping.t_end,
+                    "step " + std::to_string(step + 1) + " in progress: pass " + std::to_string(pass) + ", broken " +
+                        std::to_string(model->n_broken()));
+  });
   int checkpoint_step = resuming ? first_step : -1;
   double checkpoint_t = model->time();
   auto last_checkpoint = std::chrono::steady_clock::now();
@@ -231,7 +240,8 @@ void add_run_command(CLI::App& app, int& exit_code, const std::string& command_l
   add_output_options(*cmd, a->out, a->overwrite);
   auto* resume = cmd->add_option("--resume", a->resume,
                                  "continue the run in this folder (one that stopped before t_end) from its checkpoint");
-  resume->excludes(file)->excludes("--out")->excludes("--overwrite");
+  add_set_option(*cmd, a->set);
+  resume->excludes(file)->excludes("--out")->excludes("--overwrite")->excludes("--set");
   cmd->add_option("--checkpoint-every", a->checkpoint_seconds,
                   "write a checkpoint at least every this many seconds of wall time (and at each output time; 0: every step)")
       ->check(finite_between(0.0, 1e9))

@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace hm::app {
 
@@ -22,6 +23,9 @@ CLI::Validator finite_between(double lo, double hi);
 
 /// Adds --out DIR and --overwrite to a command that writes a result folder.
 void add_output_options(CLI::App& cmd, std::string& out, bool& overwrite);
+/// Adds --set table.key=value (repeatable): a key of the case changed on the command line, validated
+/// as the file's own (CaseFile), and written into the resolved config.toml like the file's.
+void add_set_option(CLI::App& cmd, std::vector<std::string>& set);
 /// The result folder of a case: `out` if given, otherwise out/<case file name without extension>.
 std::filesystem::path output_folder(const std::string& out, const std::string& case_file);
 

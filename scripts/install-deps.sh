@@ -9,7 +9,7 @@ packages=(
   g++ cmake make pkg-config
   libeigen3-dev libgsl-dev libboost-dev libcgal-dev libsuitesparse-dev
   libtoml11-dev libcli11-dev nlohmann-json3-dev catch2 libbenchmark-dev
-  python3-matplotlib python3-numpy python3-meshio
+  python3-matplotlib python3-numpy python3-meshio python3-pandas python3-pytest
   libopenblas0-pthread  # BLAS/LAPACK behind CHOLMOD's supernodal factorisation: ~1.4-3x faster at N = 1e5
 )
 packages+=("$@")
@@ -21,18 +21,34 @@ for p in "${packages[@]}"; do
   fi
 done
 
+sudo=""
+if [ "$(id -u)" -ne 0 ] && command -v sudo >/dev/null; then sudo=sudo; fi
+
 if [ ${#missing[@]} -eq 0 ]; then
   echo "install-deps: all ${#packages[@]} packages present"
-  exit 0
+else
+  echo "install-deps: installing ${missing[*]}"
+  if [ "$(id -u)" -ne 0 ] && [ -z "$sudo" ]; then
+    echo "install-deps: not root and no sudo; install: ${missing[*]}" >&2
+    exit 1
+  fi
+  export DEBIAN_FRONTEND=noninteractive
+  $sudo apt-get update -qq
+  $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+  echo "install-deps: done"
 fi
 
-echo "install-deps: installing ${missing[*]}"
-sudo=""
-if [ "$(id -u)" -ne 0 ]; then
-  command -v sudo >/dev/null || { echo "install-deps: not root and no sudo; install: ${missing[*]}" >&2; exit 1; }
-  sudo=sudo
+# `import hmlattice` in Debian's python3: a .pth file in /usr/local's site-packages naming this
+# checkout's python/ (the last checkout set up wins; `cmake --install` installs a copy instead).
+site=$(/usr/bin/python3 -c 'import site; print(site.getsitepackages()[0])')
+pth="$site/hmlattice.pth"
+here=$(cd "$(dirname "$0")/.." && pwd)/python
+if [ "$(cat "$pth" 2>/dev/null)" != "$here" ]; then
+  if [ "$(id -u)" -eq 0 ] || [ -n "$sudo" ]; then
+    $sudo mkdir -p "$site"
+    echo "$here" | $sudo tee "$pth" >/dev/null
+    echo "install-deps: import hmlattice now finds $here ($pth)"
+  else
+    echo "install-deps: not root: for import hmlattice, set PYTHONPATH=$here" >&2
+  fi
 fi
-export DEBIAN_FRONTEND=noninteractive
-$sudo apt-get update -qq
-$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
-echo "install-deps: done"

@@ -152,7 +152,7 @@ std::string one_line_toml_error(const std::string& path, const std::string& what
 
 }  // namespace
 
-CaseFile::CaseFile(const std::filesystem::path& path) : path_(path) {
+CaseFile::CaseFile(const std::filesystem::path& path, const std::vector<std::string>& overrides) : path_(path) {
   std::error_code error;  // a dangling link or a link loop is bad input too, not a crash
   const bool is_file = std::filesystem::is_regular_file(path, error);
   if (error && error != std::errc::no_such_file_or_directory)
@@ -164,6 +164,32 @@ CaseFile::CaseFile(const std::filesystem::path& path) : path_(path) {
     throw InputError(one_line_toml_error(path.string(), e.what()));
   } catch (const std::runtime_error& e) {
     throw InputError(path.string() + ": cannot read: " + e.what());
+  }
+  for (const std::string& item : overrides) {
+    const auto fail = [&](const std::string& why) {
+      throw InputError("--set " + core::echo(item) + ": " + why +
+                       ", allowed: table.key=value with a TOML value (e.g. physics.Q=3e-3, fracture.law=\"sawtooth\")");
+    };
+    const auto eq = item.find('=');
+    const std::string name = item.substr(0, eq);
+    const auto dot = name.find('.');
+    if (eq == std::string::npos || dot == std::string::npos || dot == 0 || dot + 1 == name.size() ||
+        name.find('.', dot + 1) != std::string::npos)
+      fail("not of the form table.key=value");
+    const std::string table = name.substr(0, dot), key = name.substr(dot + 1);
+    toml::value parsed;
+    try {
+      std::istringstream in("value = " + item.substr(eq + 1) + "\n");
+      parsed = toml::parse(in, "--set " + name);
+    } catch (const toml::syntax_error& e) {
+      fail("the value is not TOML (" + one_line_toml_error("--set " + name, e.what()) + ")");
+    }
+    if (!root_.is_table()) root_ = toml::table{};
+    toml::value& t = root_.as_table()[table];
+    if (t.is_uninitialized()) t = toml::table{};
+    if (!t.is_table()) fail("'" + table + "' is not a table of the case");
+    t.as_table()[key] = parsed.as_table().at("value");
+    overridden_ = true;
   }
 }
 

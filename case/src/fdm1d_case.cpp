@@ -58,8 +58,8 @@ const CaseKeys<Fdm1dCase>& fdm1d_case_keys() {
   return keys;
 }
 
-Fdm1dCase read_fdm1d_case(const std::filesystem::path& file) {
-  CaseFile cf(file);
+Fdm1dCase read_fdm1d_case(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
+  CaseFile cf(file, overrides);
   CaseTable root = cf.root();
   const std::string model = root.get_string("model", "fdm1d");
   if (model != "fdm1d") root.fail("model = \"" + model + "\", allowed: \"fdm1d\" (this command runs the 1D model)");

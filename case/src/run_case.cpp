@@ -294,8 +294,8 @@ const CaseKeys<RunCase>& run_case_keys() {
   return keys;
 }
 
-RunCase read_run_case(const std::filesystem::path& file) {
-  CaseFile cf(file);
+RunCase read_run_case(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
+  CaseFile cf(file, overrides);
   CaseTable root = cf.root();
   const std::string model = root.get_string("model", "lattice2d");
   if (model != "lattice2d")

@@ -349,3 +349,48 @@ TEST_CASE("A fracturing borehole run writes the break log, breakdown and fractur
   CHECK_THAT(r2.err, Catch::Contains("run folder = nowhere has no config.toml"));
   CHECK(hm::test::slurp(dir.path / "run" / "config.toml") == reconfigured);
 }
+
+TEST_CASE("A key changed with --set is as the file would have it, validated like it, and kept in config.toml", "[case][cli]") {
+  TempDir dir("cli-run-set");
+  const std::string base = hm::test::short_fig12_case("2e-5");
+  dir.write("case.toml", base);
+  dir.write("edited.toml", hm::test::edited(base, {{"\nQ = 0.01\n", "\nQ = 0.003\n"}, {"\niota = 1.0\n", "\niota = 1000\n"}}));
+  // Given before the case file too: each --set takes one value.
+  const auto set = run_hmlattice("run --set physics.Q=0.003 case.toml --set physics.iota=1e3 --out set", dir.path);
+  INFO(set.err);
+  REQUIRE(set.exit_code == 0);
+  REQUIRE(run_hmlattice("run edited.toml --out edited", dir.path).exit_code == 0);
+  CHECK(hm::test::slurp(dir.path / "set/series.csv") == hm::test::slurp(dir.path / "edited/series.csv"));
+  CHECK(hm::test::slurp(dir.path / "set/breaks.csv") == hm::test::slurp(dir.path / "edited/breaks.csv"));
+  const std::string config = hm::test::slurp(dir.path / "set/config.toml");
+  CHECK_THAT(config, Catch::Contains("\nQ = 0.003\n") && Catch::Contains("\niota = 1000\n"));
+  // The resolved config reruns the changed case.
+  REQUIRE(run_hmlattice("run set/config.toml --out rerun", dir.path).exit_code == 0);
+  CHECK(hm::test::slurp(dir.path / "rerun/series.csv") == hm::test::slurp(dir.path / "set/series.csv"));
+
+  for (const auto& [arg, message] : std::vector<std::pair<std::string, std::string>>{
+           {"--set physics.Q=2e6", "case.toml with --set: [physics] Q = 2e+06, allowed: 0 <= Q <= 1e+06"},
+           {"--set physics.bogus=1", "case.toml with --set: [physics] unknown key 'bogus'"},
+           {"--set physicsQ=1", "--set physicsQ=1: not of the form table.key=value"},
+           {"--set 'output.times=[1e-5'", "--set output.times=[1e-5: the value is not TOML"},
+           {"--set physics.Q=nan", "[physics] Q = nan"}}) {
+    const auto r = run_hmlattice("run case.toml " + arg + " --out bad", dir.path);
+    INFO(arg << ": " << r.err);
+    CHECK(r.exit_code == 2);
+    CHECK(count_lines(r.err) == 1);
+    CHECK_THAT(r.err, Catch::Contains(message));
+    CHECK_FALSE(std::filesystem::exists(dir.path / "bad"));
+  }
+  // A resumed run continues its own case.
+  const auto resumed = run_hmlattice("run --resume set --set physics.Q=1", dir.path);
+  CHECK(resumed.exit_code == 2);
+  CHECK_THAT(resumed.err, Catch::Contains("--resume excludes --set"));
+  // fdm1d takes it too.
+  const auto fdm1d = run_hmlattice("fdm1d " + std::string(HM_SOURCE_DIR) +
+                                       "/cases/fdm1d_b0.2.toml --set numerics.n_r=40 --set numerics.t_end=0.03 "
+                                       "--set output.times=[0.01,0.03] --out f",
+                                   dir.path);
+  INFO(fdm1d.err);
+  REQUIRE(fdm1d.exit_code == 0);
+  CHECK_THAT(hm::test::slurp(dir.path / "f/config.toml"), Catch::Contains("\nn_r = 40\n") && Catch::Contains("t_end = 0.03\n"));
+}

@@ -422,14 +422,18 @@ void BeamMechanics::remove_normal_spring(int beam) {
   solver_->modify(W, -1);
 }
 
+double BeamMechanics::elongation(int beam) const {
+  const auto [i, j] = lattice_.beams[static_cast<std::size_t>(beam)];
+  const Eigen::Vector2d du(raw_[dof_index(j, 0)] - raw_[dof_index(i, 0)], raw_[dof_index(j, 1)] - raw_[dof_index(i, 1)]);
+  return du.dot(lattice_.direction.col(beam));
+}
+
 BeamState BeamMechanics::break_beam(int beam) {
   if (beam < 0 || beam >= lattice_.n_beams())
     throw hm::InputError("beam = " + std::to_string(beam) + ", allowed: 0 <= beam < " + std::to_string(lattice_.n_beams()));
   if (states_[static_cast<std::size_t>(beam)] != BeamState::intact) return states_[static_cast<std::size_t>(beam)];
   const auto [i, j] = lattice_.beams[static_cast<std::size_t>(beam)];
-  const Eigen::Vector2d du(raw_[dof_index(j, 0)] - raw_[dof_index(i, 0)], raw_[dof_index(j, 1)] - raw_[dof_index(i, 1)]);
-  const BeamState to = contact_state(BeamState::intact, du.dot(lattice_.direction.col(beam)), 0.0);
-  change_state(beam, to);
+  change_state(beam, contact_state(BeamState::intact, elongation(beam), 0.0));
   if (broken_spring_ == BrokenBeamSpring::drop && springs_.size() > 0 && springs_[beam] > 0.0)
     remove_normal_spring(beam);
   check_detachment(i, j);
@@ -653,9 +657,7 @@ MechanicsSummary BeamMechanics::solve(bool equilibrium_check) {
     for (int e : broken_) {
       const auto [i, j] = lattice_.beams[static_cast<std::size_t>(e)];
       if (detached_[static_cast<std::size_t>(i)] || detached_[static_cast<std::size_t>(j)]) continue;
-      const Eigen::Vector2d du(raw_[dof_index(j, 0)] - raw_[dof_index(i, 0)], raw_[dof_index(j, 1)] - raw_[dof_index(i, 1)]);
-      const double elongation = du.dot(lattice_.direction.col(e));
-      const BeamState s = states_[static_cast<std::size_t>(e)], to = contact_state(s, elongation, tol);
+      const BeamState s = states_[static_cast<std::size_t>(e)], to = contact_state(s, elongation(e), tol);
       if (to != s) {
         change_state(e, to);
         ++changes;
@@ -667,9 +669,8 @@ MechanicsSummary BeamMechanics::solve(bool equilibrium_check) {
       const auto k = static_cast<std::size_t>(e);
       const auto [i, j] = lattice_.beams[k];
       if (detached_[static_cast<std::size_t>(i)] || detached_[static_cast<std::size_t>(j)]) continue;
-      const Eigen::Vector2d du(raw_[dof_index(j, 0)] - raw_[dof_index(i, 0)], raw_[dof_index(j, 1)] - raw_[dof_index(i, 1)]);
-      const double elongation = du.dot(lattice_.direction.col(e));
-      const bool close = !closed_[k] && elongation < -tol, open = closed_[k] && elongation > tol;
+      const double stretch = elongation(e);
+      const bool close = !closed_[k] && stretch < -tol, open = closed_[k] && stretch > tol;
       if (!close && !open) continue;
       modify_beam(e, {0}, 1.0 - softening_[k], close ? +1 : -1);
       closed_[k] = close;
@@ -731,8 +732,7 @@ Eigen::VectorXd BeamMechanics::reactions() const {
     if (springs_[e] == 0.0) continue;
     const auto [i, j] = lattice_.beams[static_cast<std::size_t>(e)];
     const Eigen::Vector2d n = lattice_.direction.col(e);
-    const Eigen::Vector2d du(raw_[dof_index(j, 0)] - raw_[dof_index(i, 0)], raw_[dof_index(j, 1)] - raw_[dof_index(i, 1)]);
-    const Eigen::Vector2d f = springs_[e] * du.dot(n) * n;  // K u for the spring: -f on i, +f on j
+    const Eigen::Vector2d f = springs_[e] * elongation(e) * n;  // K u for the spring: -f on i, +f on j
     r[dof_index(i, 0)] -= f.x();
     r[dof_index(i, 1)] -= f.y();
     r[dof_index(j, 0)] += f.x();

@@ -55,14 +55,19 @@ class CaseTable {
 /// A parsed case file: the root table plus where it came from.
 class CaseFile {
  public:
-  /// Parses `path`; a missing file or malformed TOML is an InputError "<path>:<line>: ...".
-  explicit CaseFile(const std::filesystem::path& path);
-  CaseTable root() const { return CaseTable(root_, path_.string(), ""); }
+  /// Parses `path`; a missing file or malformed TOML is an InputError "<path>:<line>: ...". Each
+  /// override "table.key=value" (the command line's --set; value a TOML value, e.g. physics.Q=3e-3 or
+  /// output.times=[0.1,0.2]) then replaces or adds that key, before anything is read: the case is
+  /// validated as if the file had said it. A malformed override is an InputError naming it.
+  explicit CaseFile(const std::filesystem::path& path, const std::vector<std::string>& overrides = {});
+  /// Messages name the file, and "with --set" when the command line changed it.
+  CaseTable root() const { return CaseTable(root_, path_.string() + (overridden_ ? " with --set" : ""), ""); }
   const std::filesystem::path& path() const { return path_; }
 
  private:
   std::filesystem::path path_;
   toml::value root_;
+  bool overridden_ = false;
 };
 
 /// The physics of a case, from exactly one of [physics] (dimensionless, paper units) or

@@ -22,7 +22,7 @@ struct Fdm1dCase {
 const CaseKeys<Fdm1dCase>& fdm1d_case_keys();
 
 /// Reads and validates the whole case; throws hm::InputError "<file>: [table] key = value, allowed: ...".
-Fdm1dCase read_fdm1d_case(const std::filesystem::path& file);
+Fdm1dCase read_fdm1d_case(const std::filesystem::path& file, const std::vector<std::string>& overrides = {});
 
 /// The resolved case as TOML (itself a valid case file), with a [provenance] table.
 std::string fdm1d_case_to_toml(const Fdm1dCase& c, const std::string& provenance_toml);

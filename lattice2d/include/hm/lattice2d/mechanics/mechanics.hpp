@@ -222,6 +222,7 @@ class BeamMechanics {
   void setup_system();  // free-DOF map, reduced matrix, held-term vector, factorisation
   BeamParameters beam_parameters(int beam) const;  // = beam_parameters_for(lattice_, parameters_, beam), cached k_n
   void change_state(int beam, BeamState to);
+  double elongation(int beam) const;  // (u_j - u_i).n of the last solve: the contact active set's measure
   // sigma scale V_c V_c^T for columns c of the unsoftened intact element factor (rank <= 3).
   void modify_beam(int beam, const std::vector<int>& columns, double scale, int sigma);
   void check_detachment(int i, int j);
