@@ -520,7 +520,7 @@ def sweep_runs(data, key):
 
 
 def save(fig, out, name):
-    """Write <out>/<name>.png and .pdf (each completely or not at all) and close the figure."""
+    """Write <out>/<name>.png and .pdf (each completely or not at all), close the figure, say where."""
     if fig.get_layout_engine() is None:  # a figure may bring its own (constrained) layout
         fig.tight_layout()
     _prepare_out(out)
@@ -535,3 +535,4 @@ def save(fig, out, name):
     except OSError as e:
         _fail_writing(os.path.join(out, MARKER), e)
     plt.close(fig)
+    print(f"wrote {os.path.join(out, name)}.png and .pdf")

@@ -1,7 +1,8 @@
 """The fracture-pressure figures (Figs. 12, 14, 16, 17) describe the run they draw: the setting comes from
 its config.toml (a Q = 0.003 run is titled Q = 0.003, not the paper's 0.01), an in-situ field is named, a
-run that stopped early is marked INCOMPLETE, a run without a snapshot is refused with one line, and a
-folder of the wrong kind is refused with one line instead of a traceback.
+run that stopped early is marked INCOMPLETE, a run without a snapshot is refused with one line, a
+folder of the wrong kind is refused with one line instead of a traceback, and the script says where it
+wrote.
 
 Run: /usr/bin/python3 tests/figures/test_run_figures.py HMLATTICE (CTest runs it)."""
 import os
@@ -71,6 +72,7 @@ class RunFigures(unittest.TestCase):
         r = self.script("fig12_fracture_pressure.py", "whole", "fig")
         self.assertEqual(r.returncode, 0, r.stderr)
         self.assertIn("fig12: b = 0.2: 2 snapshots\n", r.stdout)
+        self.assertIn("wrote fig/fig12_fracture_pressure.png and .pdf\n", r.stdout)  # says where
         self.assertTrue(os.path.getsize(os.path.join(self.dir.name, "fig", "fig12_fracture_pressure.png")) > 10000)
 
     def test_an_incomplete_run_is_marked_and_one_without_snapshots_refused(self):
