@@ -158,6 +158,10 @@ CaseKeys<RunCase> make_run_case_keys() {
                   "\"`; `\"at_convergence\"` with [fracture] law = \"sawtooth\"")
       .choice("predictor", [](auto& c) -> auto& { return c.coupling.predictor; },
               "the first pass's guess: the last step's state or its linear extrapolation")
+      .choice("crack_stabiliser", [](auto& c) -> auto& { return c.coupling.crack_stabiliser; },
+              "with [flow] crack_coupling = \"full\": each crack's response to a uniform pressure in the flow "
+              "solve (same fixed point; without it a fluid-filled crack's passes stall or diverge), or none "
+              "(docs/coupling.md)")
       .check([](CaseTable&, CaseTable&, RunCase& c) { c.coupling.validate(); });
   k.table("numerics")
       .real("dt_initial", [](auto& c) -> auto& { return c.stepping.dt_initial; }, "> 0, finite, <= t_end", "first time step")

@@ -571,3 +571,53 @@ TEST_CASE("crack_coupling = full charges a crack's triangles with their whole ch
     CHECK(s.balance_error < 1e-12);
   }
 }
+
+TEST_CASE("The flow stabiliser leaves the fixed point unchanged and solves the low-rank system", "[lattice2d]") {
+  const Lattice lattice = make_lattice(DomainShape::disk, 700);
+  const DualGraph dual = build_dual_graph(lattice);
+  std::vector<bool> broken(lattice.beams.size(), false);
+  int n_broken = 0;  // a few interior beams near the centre: at least one crack
+  for (int e = 0; e < lattice.n_beams() && n_broken < 6; ++e) {
+    const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
+    if (lattice.beam_boundary[static_cast<std::size_t>(e)] != BoundaryTag::interior) continue;
+    if ((lattice.points.col(i) + lattice.points.col(j)).norm() > 0.3) continue;
+    broken[static_cast<std::size_t>(e)] = true, ++n_broken;
+  }
+  FlowParameters parameters;
+  parameters.b = 0.0;
+  parameters.crack_coupling = CrackCoupling::full;
+  parameters.Q = 1.0;
+  FlowNetwork network(lattice, dual, parameters);
+  network.set_broken(broken);
+  FlowStabiliser stabiliser;
+  stabiliser.modes = network.crack_modes();
+  REQUIRE(!stabiliser.modes.empty());
+  const Eigen::Index n = network.n_unknowns(), k = static_cast<Eigen::Index>(stabiliser.modes.size());
+  for (const auto& mode : stabiliser.modes)
+    for (int u : mode) CHECK(u < lattice.n_triangles());  // triangles only: the outer surface is no unknown
+  // A volume response on the cracks' triangles (where b = 0 with full coupling counts volume changes),
+  // positive and far above their storage, as a crack's compliance is.
+  stabiliser.volume_response = Eigen::MatrixXd::Zero(n, k);
+  for (Eigen::Index c = 0; c < k; ++c)
+    for (int u : stabiliser.modes[static_cast<std::size_t>(c)])
+      stabiliser.volume_response(u, c) = 1e-2 * (1.0 + 0.5 * std::sin(u + c));
+  const Eigen::VectorXd dV = Eigen::VectorXd::LinSpaced(n, -1e-7, 2e-7);
+  const double dt = 1e-3;
+  REQUIRE(network.solve(dt, dV).is_ok());
+  const Eigen::VectorXd p0 = network.trial_pressure();
+  // At p_ref = the plain solution the added terms cancel: the same pressure to round-off.
+  stabiliser.reference_pressure = p0;
+  REQUIRE(network.solve(dt, dV, &stabiliser).is_ok());
+  CHECK((network.trial_pressure() - p0).cwiseAbs().maxCoeff() <= 1e-10 * p0.cwiseAbs().maxCoeff());
+  // With p_ref = 0 it solves A p = rhs(dV) - V (W^T p): the plain solve with the volume change
+  // dV + V (W^T p) on the cracks' triangles gives the same p (W^T sums a mode's pressures).
+  stabiliser.reference_pressure = Eigen::VectorXd::Zero(n);
+  REQUIRE(network.solve(dt, dV, &stabiliser).is_ok());
+  const Eigen::VectorXd p = network.trial_pressure();
+  Eigen::VectorXd sums = Eigen::VectorXd::Zero(k);
+  for (Eigen::Index c = 0; c < k; ++c)
+    for (int u : stabiliser.modes[static_cast<std::size_t>(c)]) sums[c] += p[u];
+  CHECK((p - p0).cwiseAbs().maxCoeff() > 1e-3 * p0.cwiseAbs().maxCoeff());  // the term acted
+  REQUIRE(network.solve(dt, dV + stabiliser.volume_response * sums).is_ok());
+  CHECK((network.trial_pressure() - p).cwiseAbs().maxCoeff() <= 1e-9 * p.cwiseAbs().maxCoeff());
+}

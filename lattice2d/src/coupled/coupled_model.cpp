@@ -261,6 +261,7 @@ CoupledModel::PassGuess CoupledModel::predict(double dt) const {
 bool CoupledModel::iterate(double dt, PassGuess& guess, DualGraph& dual, CoupledStepSummary& summary) {
   const bool check_every_pass = fracture_ && options_.fracture_check == FractureCheck::every_pass;
   relaxation_->start_step();
+  bool stabiliser_stale = true;  // the crack stabiliser is linearised at the step's first state and after breaks
   int last_break_pass = 0;  // at_convergence: max_iterations counts from here
   for (int k = 1; k - last_break_pass <= options_.max_iterations; ++k) {
     if (interrupt_ && interrupt_()) {
@@ -272,8 +273,10 @@ bool CoupledModel::iterate(double dt, PassGuess& guess, DualGraph& dual, Coupled
     summary.iterations = k;
     int breaks_this_pass = 0;
     if (!solve_mechanics(k, guess, check_every_pass, breaks_this_pass, summary)) return false;
+    if (stabiliser_stale || breaks_this_pass > 0) update_crack_stabiliser();
+    stabiliser_stale = false;
     const Eigen::VectorXd& u = mechanics_->displacement();
-    if (!solve_flow(dt, k, u, dual, summary)) return false;
+    if (!solve_flow(dt, k, u, guess.pressure, dual, summary)) return false;
     const Eigen::VectorXd& p = flow_->trial_pressure();
     summary.pressure_residual = relative_change(p, guess.pressure, false);
     summary.displacement_residual = relative_change(u, guess.displacement, true);
@@ -290,6 +293,7 @@ bool CoupledModel::iterate(double dt, PassGuess& guess, DualGraph& dual, Coupled
       if (!break_beams(k, n_breaks, summary)) return false;
       if (n_breaks > 0) {
         guess.displacement = mechanics_->displacement();
+        stabiliser_stale = true;
         relaxation_->restart();
         last_break_pass = k;
         continue;
@@ -303,11 +307,8 @@ bool CoupledModel::iterate(double dt, PassGuess& guess, DualGraph& dual, Coupled
 bool CoupledModel::solve_mechanics(int pass, const PassGuess& guess, bool check_every_pass, int& n_breaks,
                                    CoupledStepSummary& summary) {
   // The pressure force of the guess (Eq. 17) and the undrained predictor's springs (Eq. 20).
-  const Lattice& l = lattice();
-  const bool full_crack_pressure = flow_->parameters().crack_coupling == CrackCoupling::full;
-  Eigen::VectorXd f = pressure_forces(l, reference_dual_, guess.pressure, flow_->parameters().b, options_.terms,
-                                      full_crack_pressure ? flow_->broken() : std::vector<bool>{});
-  if (options_.terms.psi > 0.0) f += spring_preload(l, mechanics_->normal_springs(), guess.displacement);
+  Eigen::VectorXd f = pressure_load(guess.pressure);
+  if (options_.terms.psi > 0.0) f += spring_preload(lattice(), mechanics_->normal_springs(), guess.displacement);
   mechanics_->set_external_forces(f);
   // Solve, then break one beam at a time until none fails (the stresses of the effective, i.e. beam,
   // forces; V_i of the undeformed dual like the rest of the linear mechanics).
@@ -357,8 +358,40 @@ bool CoupledModel::break_beams(int pass, int& n_breaks, CoupledStepSummary& summ
   return true;
 }
 
-bool CoupledModel::solve_flow(double dt, int pass, const Eigen::VectorXd& u, DualGraph& dual,
-                              CoupledStepSummary& summary) {
+Eigen::VectorXd CoupledModel::pressure_load(const Eigen::VectorXd& pressure) const {
+  const bool full_crack_pressure = flow_->parameters().crack_coupling == CrackCoupling::full;
+  return pressure_forces(lattice(), reference_dual_, pressure, flow_->parameters().b, options_.terms,
+                         full_crack_pressure ? flow_->broken() : std::vector<bool>{});
+}
+
+void CoupledModel::update_crack_stabiliser() {
+  crack_stabiliser_ = FlowStabiliser{};
+  if (flow_->parameters().crack_coupling != CrackCoupling::full ||
+      options_.crack_stabiliser != CrackStabiliser::uniform_pressure)
+    return;
+  crack_stabiliser_.modes = flow_->crack_modes();
+  const auto k = static_cast<Eigen::Index>(crack_stabiliser_.modes.size());
+  const Eigen::VectorXd& u = mechanics_->displacement();
+  crack_stabiliser_.volume_response = Eigen::MatrixXd::Zero(flow_->n_unknowns(), k);
+  for (Eigen::Index c = 0; c < k; ++c) {
+    Eigen::VectorXd unit = Eigen::VectorXd::Zero(flow_->n_unknowns());
+    for (int v : crack_stabiliser_.modes[static_cast<std::size_t>(c)]) unit[v] = 1.0;
+    const Eigen::VectorXd du = mechanics_->linear_response(pressure_load(unit));
+    const double largest = du.cwiseAbs().maxCoeff();
+    if (!(largest > 0.0)) continue;
+    // Areas are quadratic in the displacements: the central difference is their exact derivative
+    // (a step of 1e-6 R keeps the round-off of the areas far below the difference).
+    const double h = 1e-6 / largest;
+    const auto volumes = [&](double step) {
+      const Eigen::VectorXd moved = u + step * du;
+      return unknown_volumes(build_dual_graph(lattice(), positions(moved), reference_dual_.options));
+    };
+    crack_stabiliser_.volume_response.col(c) = flow_->deformation((volumes(h) - volumes(-h)) / (2 * h));
+  }
+}
+
+bool CoupledModel::solve_flow(double dt, int pass, const Eigen::VectorXd& u, const Eigen::VectorXd& pressure_guess,
+                              DualGraph& dual, CoupledStepSummary& summary) {
   // The deformed flow geometry, then the flow step with b (V^{n+1} - V^n).
   const auto tick = std::chrono::steady_clock::now();
   const Eigen::Matrix2Xd x = positions(u);
@@ -366,7 +399,9 @@ bool CoupledModel::solve_flow(double dt, int pass, const Eigen::VectorXd& u, Dua
   flow_->update_geometry(dual, x);
   const auto tock = std::chrono::steady_clock::now();
   summary.geometry_seconds += std::chrono::duration<double>(tock - tick).count();
-  summary.flow = flow_->solve(dt, unknown_volumes(dual) - volume_);
+  const bool stabilised = !crack_stabiliser_.modes.empty();
+  if (stabilised) crack_stabiliser_.reference_pressure = pressure_guess;
+  summary.flow = flow_->solve(dt, unknown_volumes(dual) - volume_, stabilised ? &crack_stabiliser_ : nullptr);
   summary.flow_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - tock).count();
   if (summary.flow.is_ok()) return true;
   summary.status = CoupledStatus::solver_failure;

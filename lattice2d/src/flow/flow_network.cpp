@@ -4,10 +4,12 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <stdexcept>
 #include <utility>
 
 #include <Eigen/CholmodSupport>
+#include <Eigen/LU>
 
 #include <Eigen/SparseCore>
 
@@ -238,6 +240,33 @@ void FlowNetwork::set_broken(const std::vector<bool>& broken) {
   factor_stale_ = true;
 }
 
+std::vector<std::vector<int>> FlowNetwork::crack_modes() const {
+  // Union-find over the broken beams' connections (the outer surface is not an unknown).
+  std::vector<int> parent(static_cast<std::size_t>(n_unknowns()));
+  std::iota(parent.begin(), parent.end(), 0);
+  auto root = [&](int u) {
+    while (parent[static_cast<std::size_t>(u)] != u) u = parent[static_cast<std::size_t>(u)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(u)])];
+    return u;
+  };
+  std::vector<char> on_crack(parent.size(), 0);
+  for (std::size_t e = 0; e < connections_.size(); ++e) {
+    if (!broken_[e]) continue;
+    const int s = connections_[e].s, t = connections_[e].t;
+    if (s >= 0) on_crack[static_cast<std::size_t>(s)] = 1;
+    if (t >= 0) on_crack[static_cast<std::size_t>(t)] = 1;
+    if (s >= 0 && t >= 0) parent[static_cast<std::size_t>(root(s))] = root(t);
+  }
+  std::vector<std::vector<int>> modes;
+  std::vector<int> mode_of(parent.size(), -1);
+  for (int u = 0; u < n_unknowns(); ++u) {
+    if (!on_crack[static_cast<std::size_t>(u)]) continue;
+    int& m = mode_of[static_cast<std::size_t>(root(u))];
+    if (m < 0) m = static_cast<int>(modes.size()), modes.emplace_back();
+    modes[static_cast<std::size_t>(m)].push_back(u);
+  }
+  return modes;
+}
+
 void FlowNetwork::set_pressure(const Eigen::VectorXd& pressure) {
   assert(pressure.size() == n_unknowns() && "one pressure per unknown");
   pressure_ = pressure;
@@ -361,23 +390,27 @@ std::string FlowNetwork::factorise_if_needed(double dt) {
   return factorise(dt);
 }
 
-FlowStepSummary FlowNetwork::solve(double dt, const Eigen::VectorXd& volume_change) {
-  if (!(dt > 0.0) || !std::isfinite(dt)) throw InputError("dt = " + format_value(dt) + ", allowed: > 0, finite");
-  assert((volume_change.size() == 0 || volume_change.size() == n_unknowns()) && "one volume change per unknown");
+Eigen::VectorXd FlowNetwork::solve_stabilised(const Eigen::VectorXd& rhs, const FlowStabiliser& stabiliser) {
+  // (A + V W^T) p = rhs + V W^T p_ref by Woodbury with A's factor: W^T x sums x over a mode's unknowns.
+  const Eigen::MatrixXd& V = stabiliser.volume_response;
+  const auto k = static_cast<Eigen::Index>(stabiliser.modes.size());
+  assert(V.cols() == k && V.rows() == n_unknowns() && "one volume response per mode");
+  auto mode_sums = [&](const Eigen::VectorXd& x) {
+    Eigen::VectorXd s = Eigen::VectorXd::Zero(k);
+    for (Eigen::Index c = 0; c < k; ++c)
+      for (int u : stabiliser.modes[static_cast<std::size_t>(c)]) s[c] += x[u];
+    return s;
+  };
+  const Eigen::VectorXd y = solver_->solve(rhs + V * mode_sums(stabiliser.reference_pressure));
+  Eigen::MatrixXd Z(V.rows(), k);
+  for (Eigen::Index c = 0; c < k; ++c) Z.col(c) = solver_->solve(Eigen::VectorXd(V.col(c)));
+  Eigen::MatrixXd capacitance = Eigen::MatrixXd::Identity(k, k);
+  for (Eigen::Index c = 0; c < k; ++c) capacitance.col(c) += mode_sums(Z.col(c));
+  return y - Z * capacitance.partialPivLu().solve(mode_sums(y));
+}
+
+Eigen::VectorXd FlowNetwork::deformation(const Eigen::VectorXd& volume_change) const {
   const int n = n_unknowns();
-  FlowStepSummary summary;
-  summary.time = totals_.time + dt;
-  summary.dt = dt;
-  summary.injected = parameters_.Q * dt;
-  has_trial_ = false;
-  const bool factor_current = factorised_dt_ == dt && !factor_stale_;  // reused as it is, no factorisation
-  summary.message = factorise_if_needed(dt);
-  if (!summary.message.empty()) return summary;
-
-  Eigen::VectorXd storage_coefficient(n);
-  storage_coefficient.head(n_triangles_) = parameters_.E_over_M * triangle_area_;
-  if (has_borehole_) storage_coefficient[n_triangles_] = borehole_storage_coefficient();
-
   // The b (V^{n+1} - V^n) terms; the borehole's is dropped when it is a plain flux boundary and not
   // weighted by b when the hole is taken as all fluid.
   Eigen::VectorXd deformation = volume_change.size() > 0 ? Eigen::VectorXd(parameters_.b * volume_change)
@@ -390,11 +423,38 @@ FlowStepSummary FlowNetwork::solve(double dt, const Eigen::VectorXd& volume_chan
     }
   if (has_borehole_) deformation[n_triangles_] = borehole_deformation_coefficient() *
                                                  (volume_change.size() > 0 ? volume_change[n_triangles_] : 0.0);
+  return deformation;
+}
+
+FlowStepSummary FlowNetwork::solve(double dt, const Eigen::VectorXd& volume_change, const FlowStabiliser* stabiliser) {
+  if (!(dt > 0.0) || !std::isfinite(dt)) throw InputError("dt = " + format_value(dt) + ", allowed: > 0, finite");
+  assert((volume_change.size() == 0 || volume_change.size() == n_unknowns()) && "one volume change per unknown");
+  const int n = n_unknowns();
+  FlowStepSummary summary;
+  summary.time = totals_.time + dt;
+  summary.dt = dt;
+  summary.injected = parameters_.Q * dt;
+  has_trial_ = false;
+  // The stabiliser's Woodbury solve needs the factor of the current matrix.
+  if (stabiliser && factor_stale_) factorise(dt);
+  const bool factor_current = factorised_dt_ == dt && !factor_stale_;  // reused as it is, no factorisation
+  summary.message = factorise_if_needed(dt);
+  if (!summary.message.empty()) return summary;
+
+  Eigen::VectorXd storage_coefficient(n);
+  storage_coefficient.head(n_triangles_) = parameters_.E_over_M * triangle_area_;
+  if (has_borehole_) storage_coefficient[n_triangles_] = borehole_storage_coefficient();
+
+  const Eigen::VectorXd deformation = this->deformation(volume_change);
   Eigen::VectorXd rhs = storage_coefficient.cwiseProduct(pressure_) - deformation;
   rhs[has_borehole_ ? n_triangles_ : source_triangle_] += summary.injected;
 
   summary.factorised = !factor_current && !factor_stale_;
-  trial_pressure_ = solver_->solve(rhs);
+  if (stabiliser) {
+    trial_pressure_ = solve_stabilised(rhs, *stabiliser);
+  } else {
+    trial_pressure_ = solver_->solve(rhs);
+  }
   if (factor_stale_) {
     // Conjugate gradients on the current matrix, preconditioned by the last factor
     // (reuse_factorisation). Measured on a fracturing annulus (N = 1e4): ~8 iterations per solve at

@@ -320,6 +320,18 @@ Eigen::VectorXd BeamMechanics::full_vector(const Eigen::VectorXd& x_free) const 
   return u;
 }
 
+Eigen::VectorXd BeamMechanics::linear_response(const Eigen::VectorXd& forces) const {
+  if (forces.size() != 3 * lattice_.n_particles())
+    throw hm::InputError("linear_response: " + std::to_string(forces.size()) + " forces, allowed: 3 per particle (" +
+                         std::to_string(3 * lattice_.n_particles()) + ")");
+  Eigen::VectorXd b(n_free_dofs());
+  for (std::size_t k = 0; k < free_dofs_.size(); ++k) b[static_cast<Eigen::Index>(k)] = forces[free_dofs_[k]];
+  const Eigen::VectorXd x = solver_->solve(b);
+  Eigen::VectorXd du = Eigen::VectorXd::Zero(forces.size());
+  for (std::size_t k = 0; k < free_dofs_.size(); ++k) du[free_dofs_[k]] = x[static_cast<Eigen::Index>(k)];
+  return du;
+}
+
 void BeamMechanics::modify_beam(int beam, const std::vector<int>& columns, double scale, int sigma) {
   // sigma scale V_c V_c^T for the columns c of the unsoftened intact factor: the reduced matrix by a
   // rank-|columns| modification, the held-DOF term K u_h by sigma scale V_c (V_c^T u_h).

@@ -69,6 +69,22 @@ constexpr auto enum_names(CouplingPredictor) {
       {CouplingPredictor::previous, "previous"}, {CouplingPredictor::linear, "linear"}});
 }
 
+/// What the flow solve of a pass knows of the cracks' compliance (FlowStabiliser, flow_network.hpp).
+enum class CrackStabiliser {
+  /// Nothing: the split as the paper iterates it. With fluid-filled cracks (CrackCoupling::full) at
+  /// small b the passes then stall or diverge: a crack's compliance is thousands of times its fluid's
+  /// storage (docs/coupling.md).
+  none,
+  /// Each connected crack's volume response to a uniform pressure on it, from the lattice's factor at
+  /// the step's state (one solve per crack, refreshed after breaks): the fixed point is unchanged, a
+  /// well-connected crack converges in a few passes. Used only with CrackCoupling::full.
+  uniform_pressure,
+};
+constexpr auto enum_names(CrackStabiliser) {
+  return core::enum_table<CrackStabiliser>(
+      {{CrackStabiliser::none, "none"}, {CrackStabiliser::uniform_pressure, "uniform_pressure"}});
+}
+
 /// The smallest coupling tolerance: a pass's relative change stalls at round-off (measured ~1e-11 for
 /// the pressure of the Fig. 12 quick case, whose passes then never converge).
 inline constexpr double kMinCouplingTolerance = 1e-10;
@@ -93,6 +109,8 @@ struct CouplingOptions {
   FractureCheck fracture_check = FractureCheck::every_pass;
   /// The first pass's guess. Default previous (the paper's loop).
   CouplingPredictor predictor = CouplingPredictor::previous;
+  /// The flow solve's knowledge of fluid-filled cracks (CrackCoupling::full only). Default uniform_pressure.
+  CrackStabiliser crack_stabiliser = CrackStabiliser::uniform_pressure;
   /// Relaxation of the pressure guess between passes. Default none (the paper's loop). Our addition for
   /// the borehole, whose stiff feedback makes the plain loop diverge (docs/coupling.md, section 3).
   CouplingRelaxation relaxation = CouplingRelaxation::none;
@@ -343,7 +361,13 @@ class CoupledModel {
   bool solve_mechanics(int pass, const PassGuess& guess, bool check_every_pass, int& n_breaks,
                        CoupledStepSummary& summary);
   bool break_beams(int pass, int& n_breaks, CoupledStepSummary& summary);
-  bool solve_flow(double dt, int pass, const Eigen::VectorXd& u, DualGraph& dual, CoupledStepSummary& summary);
+  bool solve_flow(double dt, int pass, const Eigen::VectorXd& u, const Eigen::VectorXd& pressure_guess, DualGraph& dual,
+                  CoupledStepSummary& summary);
+  // Fluid-filled cracks (CrackCoupling::full): each crack's volume response to a uniform pressure at
+  // the current state, for the flow solve (FlowStabiliser); empty without cracks.
+  void update_crack_stabiliser();
+  Eigen::VectorXd pressure_load(const Eigen::VectorXd& pressure) const;  // Eq. 17's forces of a pressure
+  FlowStabiliser crack_stabiliser_;
   void finish_step(double dt, bool converged, DualGraph dual, CoupledStepSummary& summary);  // accept or restore t^n
   Eigen::Matrix2Xd positions(const Eigen::VectorXd& u) const;
   Eigen::VectorXd unknown_volumes(const DualGraph& dual) const;  // V_s, then V_h

@@ -122,6 +122,19 @@ FlowParameters flow_parameters_of(const hm::analytic::DimensionlessParameters& p
 
 /// Volumes moved in one step, all >= 0 unless said otherwise (dimensionless areas, Eq. 12's
 /// "volume per unit length"). injected = storage + deformation + outflow up to round-off.
+/// A coupling iteration's estimate of how the deformation term answers the pressure: modes c (each a
+/// set of unknowns under one uniform pressure, e.g. a crack) whose unit pressure changes the
+/// deformation by column c of volume_response. solve() then solves (A + V W^T) p = rhs + V W^T p_ref,
+/// W^T summing over each mode's unknowns: at p = p_ref the added terms cancel, so the coupled fixed
+/// point is unchanged, while a pass already sees the crack's compliance (as the fixed-stress split
+/// sees the rock's). Without it a fluid-filled crack, whose compliance is thousands of times its
+/// fluid's storage, makes the split diverge.
+struct FlowStabiliser {
+  Eigen::MatrixXd volume_response;        ///< n_unknowns x n_modes
+  std::vector<std::vector<int>> modes;    ///< the unknowns of each mode
+  Eigen::VectorXd reference_pressure;     ///< p_ref: the pressure the mechanics was solved with
+};
+
 struct FlowStepSummary {
   double time = 0.0;         ///< t^{n+1}
   double dt = 0.0;           ///< Delta t of this step
@@ -212,6 +225,9 @@ class FlowNetwork {
   /// Marks broken beams (size n_beams); their conductance is multiplied by iota.
   void set_broken(const std::vector<bool>& broken);
   const std::vector<bool>& broken() const { return broken_; }
+  /// The cracks as sets of unknowns: the triangles (and the borehole) joined by broken beams'
+  /// connections, one set per connected crack, in order of their first unknown.
+  std::vector<std::vector<int>> crack_modes() const;
 
   /// Sets p^n (size n_unknowns), e.g. an initial condition. Does not change time or totals.
   void set_pressure(const Eigen::VectorXd& pressure);
@@ -225,7 +241,10 @@ class FlowNetwork {
   /// Solves one implicit Euler step of length dt > 0 from p^n (hm::InputError if dt is not > 0).
   /// volume_change: V^{n+1} - V^n per unknown (triangles, then the borehole), from the mechanics;
   /// empty means zero. Does not change p^n: the result is trial_pressure() until accept().
-  FlowStepSummary solve(double dt, const Eigen::VectorXd& volume_change = {});
+  FlowStepSummary solve(double dt, const Eigen::VectorXd& volume_change = {}, const FlowStabiliser* stabiliser = nullptr);
+  /// The deformation term of the balance for a volume change per unknown: b times it, 1 times it on
+  /// a crack's triangles with CrackCoupling::full, the borehole's by its coefficient.
+  Eigen::VectorXd deformation(const Eigen::VectorXd& volume_change) const;
   /// The pressure of the last solve().
   const Eigen::VectorXd& trial_pressure() const { return trial_pressure_; }
   /// Makes the last successful solve() the new state (p^n, time, totals). Precondition: a solve()
@@ -256,6 +275,7 @@ class FlowNetwork {
   void restore_state(core::StateReader& r);
 
  private:
+  Eigen::VectorXd solve_stabilised(const Eigen::VectorXd& rhs, const FlowStabiliser& stabiliser);
   struct Solver;  // the one place that names the sparse factorisation (flow_network.cpp)
 
   // One flow connection per beam: between triangles s and t, triangle s and the borehole (t = h),

@@ -187,6 +187,10 @@ class BeamMechanics {
   /// The springs of set_normal_springs (empty if none), zero where a dropped spring's beam broke.
   const Eigen::VectorXd& normal_springs() const { return springs_; }
 
+  /// The displacement (3 n_particles; 0 at held dofs) that `forces` (3 n_particles) add under the
+  /// current matrix (beam states, contacts, springs) with the kept factor: one solve, no state
+  /// changed. The coupling's linearised response of the lattice to a pressure. Throws hm::InputError.
+  Eigen::VectorXd linear_response(const Eigen::VectorXd& forces) const;
   /// Displacements (3 n_particles, dof = 3 i + component) of the last solve (0 before).
   const Eigen::VectorXd& displacement() const { return displacement_; }
   /// Forces of every beam at the current displacement (connection_forces). For particle stresses use
