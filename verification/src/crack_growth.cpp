@@ -45,6 +45,7 @@ CrackGrowthRun grow_pressurised_crack(const CrackGrowthSpec& spec) {
     l2::SawtoothLawOptions o;
     o.fracture_energy = spec.fracture_energy;
     o.teeth = spec.teeth;
+    o.strength_factor = spec.strength_factor;
     law = std::make_unique<l2::SawtoothLaw>(lattice, dual, parameters, strengths, o);
   }
   std::vector<int> crack = l2::beams_crossing(lattice, l2::NotchSegment{{-spec.notch_half_length, 0.0},

@@ -27,6 +27,7 @@ struct CrackGrowthSpec {
   double notch_half_length = 0.05;  ///< notch |x| < this on y = 0
   double fracture_energy = 0.0;     ///< G_f / (E R); 0: the brittle law (crack-tip factor on)
   hm::lattice2d::SawtoothSpec teeth;  ///< the saw-tooth's shape
+  double strength_factor = 1.0;       ///< the saw-tooth law's f_t over the drawn strength (SawtoothLawOptions)
   PressurisedFaces faces = PressurisedFaces::broken;
   double max_half_length = 0.3;     ///< stop once the crack's half length c passes this
   int max_events = 200000;
