@@ -69,6 +69,7 @@ bool BoundaryConditions::is_unloaded() const {
 void MechanicsOptions::validate() const {
   using namespace hm::core;
   require_at_least(max_contact_iterations, "mechanics_options.max_contact_iterations", 1);
+  require_at_least(contact_switches_at_once, "mechanics_options.contact_switches_at_once", 0);
   require_half_open(contact_tolerance, "mechanics_options.contact_tolerance", 0.0, 1.0);
   solver_options.validate();
 }
@@ -664,29 +665,44 @@ MechanicsSummary BeamMechanics::solve(bool equilibrium_check) {
     }
     raw_ = full_vector(x);
     // Active set of Eqs. 8-10: overlapping broken beams push (contact), separating ones do nothing.
+    // The same for softened intact beams: a shortened one is closed (its normal spring unsoftened,
+    // the difference (1 - s) k_n added as a rank-1 update), a lengthened one open again.
     const double tol = options_.contact_tolerance * raw_.cwiseAbs().maxCoeff();
-    int changes = 0;
+    struct Switch {
+      int beam;
+      bool softened;  // a softened beam closing or opening, else a broken beam changing state
+      double violation;
+    };
+    std::vector<Switch> switches;
     for (int e : broken_) {
       const auto [i, j] = lattice_.beams[static_cast<std::size_t>(e)];
       if (detached_[static_cast<std::size_t>(i)] || detached_[static_cast<std::size_t>(j)]) continue;
-      const BeamState s = states_[static_cast<std::size_t>(e)], to = contact_state(s, elongation(e), tol);
-      if (to != s) {
-        change_state(e, to);
-        ++changes;
-      }
+      const double stretch = elongation(e);
+      if (contact_state(states_[static_cast<std::size_t>(e)], stretch, tol) != states_[static_cast<std::size_t>(e)])
+        switches.push_back({e, false, std::abs(stretch)});
     }
-    // The same for softened intact beams: a shortened one is closed (its normal spring unsoftened,
-    // the difference (1 - s) k_n added as a rank-1 update), a lengthened one open again.
     for (int e : softened_) {
       const auto k = static_cast<std::size_t>(e);
       const auto [i, j] = lattice_.beams[k];
       if (detached_[static_cast<std::size_t>(i)] || detached_[static_cast<std::size_t>(j)]) continue;
       const double stretch = elongation(e);
-      const bool close = !closed_[k] && stretch < -tol, open = closed_[k] && stretch > tol;
-      if (!close && !open) continue;
-      modify_beam(e, {0}, 1.0 - softening_[k], close ? +1 : -1);
+      if ((!closed_[k] && stretch < -tol) || (closed_[k] && stretch > tol)) switches.push_back({e, true, std::abs(stretch)});
+    }
+    // All at once settles in a few iterations, but can cycle (MechanicsOptions::contact_switches_at_once);
+    // from then on only the most violated beam switches, one per solve.
+    if (it >= options_.contact_switches_at_once && switches.size() > 1)
+      switches = {*std::max_element(switches.begin(), switches.end(),
+                                    [](const Switch& first, const Switch& second) { return first.violation < second.violation; })};
+    const int changes = static_cast<int>(switches.size());
+    for (const Switch& w : switches) {
+      const auto k = static_cast<std::size_t>(w.beam);
+      if (!w.softened) {
+        change_state(w.beam, contact_state(states_[k], elongation(w.beam), tol));
+        continue;
+      }
+      const bool close = !closed_[k];
+      modify_beam(w.beam, {0}, 1.0 - softening_[k], close ? +1 : -1);
       closed_[k] = close;
-      ++changes;
     }
     summary.n_contact_changes += changes;
     if (changes == 0) {
