@@ -34,6 +34,16 @@ constexpr double kCharacteristicLength = 0.04;
 // The growth the toughness is fitted on: c from 0.1 to 0.3 (the notch's 0.05 is left behind).
 constexpr double kFitFrom = 0.1, kFitTo = 0.3;
 
+// The plane-strain modulus E' = E/(1 - nu^2) of the calibrated continuum and Griffith's K_c = sqrt(E' G_f).
+struct Griffith {
+  double e_prime, k_c;
+};
+Griffith griffith(double g_f) {
+  const l2::ElasticConstants continuum = l2::calibrated_continuum();
+  const double e_prime = continuum.youngs_modulus / (1 - continuum.poisson_ratio * continuum.poisson_ratio);
+  return {e_prime, std::sqrt(e_prime * g_f)};
+}
+
 // Least-squares slope of y against x.
 double slope(const std::vector<double>& x, const std::vector<double>& y) {
   const double n = static_cast<double>(x.size());
@@ -81,9 +91,7 @@ BenchmarkResult griffith_growth(const BenchmarkContext& ctx) {
   const bool paper = ctx.tier == Tier::paper;
   const double t_u = l2::StrengthSpec{}.tensile_strength;
   const double g_f = kCharacteristicLength * t_u * t_u;  // over E R, with E = 1
-  const l2::ElasticConstants continuum = l2::calibrated_continuum();
-  const double e_prime = continuum.youngs_modulus / (1 - continuum.poisson_ratio * continuum.poisson_ratio);
-  const double k_c = std::sqrt(e_prime * g_f);
+  const auto [e_prime, k_c] = griffith(g_f);
   const std::vector<long long> sizes = paper ? std::vector<long long>{15000, 30000, 60000} : std::vector<long long>{15000};
   const std::vector<Variant> variants = {
       {"sawtooth, dry process zone", true, PressurisedFaces::broken},
@@ -180,17 +188,11 @@ struct KgdRun {
   double seconds = 0.0, max_balance = 0.0;
 };
 
-// Half the x-span of the crack the source feeds: the circumcentres of its triangles, the ends of its
-// faces (the dry benchmark's c).
+// The half length of the crack the source feeds (the dry benchmark's c, crack_half_length).
 double fed_crack_half_length(const l2::CoupledModel& m) {
   const int source = m.flow().source_triangle();
-  for (const std::vector<int>& mode : m.flow().crack_modes()) {
-    if (std::find(mode.begin(), mode.end(), source) == mode.end()) continue;
-    double lo = mode.empty() ? 0.0 : m.reference_dual().dual_point(0, mode.front()), hi = lo;
-    for (int t : mode)
-      lo = std::min(lo, m.reference_dual().dual_point(0, t)), hi = std::max(hi, m.reference_dual().dual_point(0, t));
-    return 0.5 * (hi - lo);
-  }
+  for (const std::vector<int>& mode : m.flow().crack_modes())
+    if (std::find(mode.begin(), mode.end(), source) != mode.end()) return crack_half_length(m.reference_dual(), mode);
   return 0.0;
 }
 
@@ -246,9 +248,7 @@ BenchmarkResult kgd_toughness(const BenchmarkContext& ctx) {
   const std::filesystem::path case_file = std::filesystem::path(HM_SOURCE_DIR) / "cases" / "kgd_toughness_quick.toml";
   const cases::RunCase base = cases::read_run_case(case_file);
   const double g_f = base.sawtooth.fracture_energy;
-  const l2::ElasticConstants continuum = l2::calibrated_continuum();
-  const double e_prime = continuum.youngs_modulus / (1 - continuum.poisson_ratio * continuum.poisson_ratio);
-  const double k_c = std::sqrt(e_prime * g_f);
+  const auto [e_prime, k_c] = griffith(g_f);
   const std::vector<long long> sizes =
       paper ? std::vector<long long>{15000, 30000, 60000} : std::vector<long long>{base.lattice.n_particles};
   const std::filesystem::path out_path = ctx.data_dir / "lattice2d_kgd_toughness.csv";

@@ -15,17 +15,22 @@ namespace l2 = hm::lattice2d;
 
 namespace {
 
-// Half the x-span of the broken beams' faces: their Voronoi segments end at the circumcentres of the
-// beams' triangles.
-double half_length(const l2::Lattice& lattice, const l2::DualGraph& dual, const std::vector<int>& crack) {
-  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+// The triangles on either side of the broken beams.
+std::vector<int> crack_triangles(const l2::Lattice& lattice, const std::vector<int>& crack) {
+  std::vector<int> triangles;
   for (int e : crack)
     for (int t : lattice.beam_triangles[static_cast<std::size_t>(e)])
-      if (t >= 0) lo = std::min(lo, dual.dual_point(0, t)), hi = std::max(hi, dual.dual_point(0, t));
-  return crack.empty() ? 0.0 : 0.5 * (hi - lo);
+      if (t >= 0) triangles.push_back(t);
+  return triangles;
 }
 
 }  // namespace
+
+double crack_half_length(const l2::DualGraph& dual, const std::vector<int>& triangles) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (int t : triangles) lo = std::min(lo, dual.dual_point(0, t)), hi = std::max(hi, dual.dual_point(0, t));
+  return triangles.empty() ? 0.0 : 0.5 * (hi - lo);
+}
 
 CrackGrowthRun grow_pressurised_crack(const CrackGrowthSpec& spec) {
   const auto start = std::chrono::steady_clock::now();
@@ -95,7 +100,7 @@ CrackGrowthRun grow_pressurised_crack(const CrackGrowthSpec& spec) {
       run.booked_by_tooth[static_cast<std::size_t>(last_tooth)] += booked_last;
       last_tooth = -1;
     }
-    const double c = half_length(lattice, dual, crack);
+    const double c = crack_half_length(dual, crack_triangles(lattice, crack));
     if (c > spec.max_half_length) {
       run.reached = true;
       break;

@@ -56,4 +56,8 @@ struct CrackGrowthRun {
 
 CrackGrowthRun grow_pressurised_crack(const CrackGrowthSpec& spec);
 
+/// A crack's half length c: half the x-span of the circumcentres of its triangles (`triangles`, indices
+/// into `dual`), where its faces (the broken beams' Voronoi segments) end. 0 for none.
+double crack_half_length(const hm::lattice2d::DualGraph& dual, const std::vector<int>& triangles);
+
 }  // namespace hm::verification

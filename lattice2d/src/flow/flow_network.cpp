@@ -435,10 +435,9 @@ FlowStepSummary FlowNetwork::solve(double dt, const Eigen::VectorXd& volume_chan
   summary.dt = dt;
   summary.injected = parameters_.Q * dt;
   has_trial_ = false;
-  // The stabiliser's Woodbury solve needs the factor of the current matrix.
-  if (stabiliser && factor_stale_) factorise(dt);
   const bool factor_current = factorised_dt_ == dt && !factor_stale_;  // reused as it is, no factorisation
-  summary.message = factorise_if_needed(dt);
+  // The stabiliser's Woodbury solve needs the factor of the current matrix, not a stale one refined by CG.
+  summary.message = stabiliser && factor_stale_ ? factorise(dt) : factorise_if_needed(dt);
   if (!summary.message.empty()) return summary;
 
   Eigen::VectorXd storage_coefficient(n);
