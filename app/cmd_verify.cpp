@@ -7,7 +7,9 @@
 //   hmlattice verify --tier paper --runs out/verify_runs --out out/verify_paper
 // With --runs, a planned run whose folder is there is read (refused, exit 2, if it is not complete or
 // holds another case); one that is not there is run here as without --runs.
+#include <algorithm>
 #include <iostream>
+#include <thread>
 
 #include "commands.hpp"
 #include "hm/verification/benchmark.hpp"
@@ -20,6 +22,7 @@ void add_verify_command(CLI::App& app, int& exit_code, const std::string& comman
   struct Options {
     std::string tier = "quick", out = "out/verify", filter, runs, write_cases;
     bool overwrite = false;
+    int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   };
   auto opt = std::make_shared<Options>();
   cmd->add_option("--tier", opt->tier, "quick (minutes, run by the tests) or paper (paper resolution)")
@@ -28,6 +31,10 @@ void add_verify_command(CLI::App& app, int& exit_code, const std::string& comman
                   "output folder: a new or empty folder, or an earlier report with --overwrite")
       ->capture_default_str();
   cmd->add_flag("--overwrite", opt->overwrite, "replace the output folder if it holds an earlier hmlattice result");
+  cmd->add_option("--jobs", opt->jobs,
+                  "benchmarks run at the same time, each on one thread (default: one per core; 1: one after the "
+                  "other, threaded)")
+      ->capture_default_str();
   cmd->add_option("--filter", opt->filter, "run only benchmarks whose id contains this text");
   auto* runs = cmd->add_option("--runs", opt->runs,
                                "read the benchmarks' runs of case files from DIR/<label>/ where present (hmlattice run "
@@ -53,6 +60,7 @@ void add_verify_command(CLI::App& app, int& exit_code, const std::string& comman
     options.out_dir = opt->out;
     options.overwrite = opt->overwrite;
     options.filter = opt->filter;
+    options.jobs = opt->jobs;
     options.command_line = command_line;
     const auto summary = verification::run_harness(verification::all_benchmarks(), options, std::cout);
     std::cout << "\n" << summary.n_benchmarks << " benchmarks, " << summary.n_metrics << " metrics: "

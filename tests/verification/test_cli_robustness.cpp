@@ -79,7 +79,7 @@ TEST_CASE("Results that overflow double precision are refused, not printed as in
   CHECK_FALSE(std::filesystem::exists(dir.path / "run"));
 }
 
-TEST_CASE("Command-line values: empty numbers, a negative E/M and a filter that matches nothing are refused",
+TEST_CASE("Command-line values: empty numbers, a negative E/M, no jobs and a filter that matches nothing are refused",
           "[verification][cli]") {
   TempDir dir("cli-values");
   // CLI11 read '' as 0: Q = 0 ran.
@@ -91,6 +91,7 @@ TEST_CASE("Command-line values: empty numbers, a negative E/M and a filter that 
                           "E_over_M = -5, allowed: E_over_M > 0");
   require_one_line_exit_2(run_hmlattice("verify --filter typo --out report", dir.path),
                           "--filter = 'typo' matches no benchmark id of the quick tier");
+  require_one_line_exit_2(run_hmlattice("verify --jobs 0 --out report", dir.path), "--jobs = 0, allowed: an integer >= 1");
   CHECK_FALSE(std::filesystem::exists(dir.path / "report"));
 }
 

@@ -2,9 +2,15 @@
 // benchmark that throws as an error, and leaves no output folder behind when it is interrupted.
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
+#include <omp.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 
 #include "hm/verification/harness.hpp"
 #include "run_command.hpp"
@@ -150,4 +156,57 @@ TEST_CASE("Every result figure of the paper is drawn by a registered benchmark, 
     INFO("Fig. " << f);
     CHECK(declared.count(f) == 1);
   }
+}
+
+TEST_CASE("Benchmarks run side by side write the report of one after the other, each on one thread",
+          "[verification][harness]") {
+  TempDir dir("harness_jobs");
+  // The first benchmark waits (at most 20 s) for the second to start: with two workers they overlap.
+  std::atomic<bool> second_started{false}, overlapped{false};
+  std::atomic<int> threads_seen{0};
+  const auto body = [&](int id, const BenchmarkContext& ctx) {
+    if (id == 1) second_started = true;
+    if (id == 0)
+      for (int i = 0; i < 2000 && !(overlapped = second_started.load()); ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    threads_seen = std::max(threads_seen.load(), omp_get_max_threads());
+    // Progress written in pieces: each line must reach the log whole, marked with its benchmark.
+    *ctx.progress << "[run] benchmark " << id << " at ";
+    *ctx.progress << "half way\n";
+    BenchmarkResult r;
+    r.metrics.push_back(metric(0.1 * id, 0.0, 1.0));
+    return r;
+  };
+  std::vector<Benchmark> benchmarks;
+  for (int id = 0; id < 3; ++id)
+    benchmarks.push_back({"demo.b" + std::to_string(id), "B", "", Tier::paper,
+                          [&, id](const BenchmarkContext& ctx) { return body(id, ctx); }});
+  HarnessOptions options;
+  options.tier = Tier::paper;
+  options.jobs = 2;
+  options.out_dir = dir.path / "side_by_side";
+  std::ostringstream log;
+  REQUIRE(run_harness(benchmarks, options, log).ok());
+  CHECK(overlapped);
+  CHECK(threads_seen == 1);
+  for (int id = 0; id < 3; ++id)
+    CHECK_THAT(log.str(), Catch::Contains("demo.b" + std::to_string(id) + ": [run] benchmark " + std::to_string(id) +
+                                          " at half way\n"));
+
+  options.jobs = 1;
+  options.out_dir = dir.path / "one_after_the_other";
+  second_started = false;
+  std::ostringstream serial_log;
+  std::thread release([&] {  // the serial run's first benchmark must not wait 20 s for the second
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    second_started = true;
+  });
+  REQUIRE(run_harness(benchmarks, options, serial_log).ok());
+  release.join();
+  CHECK(slurp(dir.path / "side_by_side" / "metrics.json") == slurp(dir.path / "one_after_the_other" / "metrics.json"));
+
+  options.jobs = 0;
+  options.out_dir = dir.path / "none";
+  CHECK_THROWS_WITH(run_harness(benchmarks, options, serial_log), "--jobs = 0, allowed: an integer >= 1");
+  CHECK_FALSE(std::filesystem::exists(options.out_dir));
 }

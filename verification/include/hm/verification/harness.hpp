@@ -20,6 +20,9 @@ struct HarnessOptions {
   std::string filter;
   /// Read the planned runs found here instead of running them (BenchmarkContext::runs_dir); empty: none.
   std::filesystem::path runs_dir;
+  /// Benchmarks run at the same time, each on one OpenMP thread when more than one (1: one after the
+  /// other with the default threads). The report is the same in either case, in the benchmarks' order.
+  int jobs = 1;
 };
 
 struct HarnessSummary {
