@@ -21,6 +21,7 @@
 #include "commands.hpp"
 #include "hm/core/input_error.hpp"
 #include "hm/case/blas_threads.hpp"
+#include "hm/case/provenance.hpp"
 
 namespace {
 
@@ -60,7 +61,8 @@ int main(int argc, char** argv) {
   hm::cases::limit_blas_threads();  // before any factorisation: see blas_threads.hpp
   CLI::App app{"hmlattice: fluid-driven fracture in porous rock, verified (Ulven & Sun 2017)", "hmlattice"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", HM_VERSION);
+  const hm::cases::Provenance build = hm::cases::make_provenance("");
+  app.set_version_flag("--version", build.version + " (commit " + build.git_commit + ", " + build.build_type + " build)");
   int exit_code = 0;
   hm::app::add_verify_command(app, exit_code, joined(argc, argv));
   hm::app::add_fdm1d_command(app, exit_code, joined(argc, argv));

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "git_commit.hpp"
 #include "hm/case/blas_threads.hpp"
 #include "hm/core/toml_text.hpp"
 
@@ -14,7 +15,7 @@ namespace hm::cases {
 Provenance make_provenance(const std::string& command_line) {
   Provenance p;
   p.version = HM_VERSION;
-  p.git_commit = HM_GIT_COMMIT;
+  p.git_commit = kGitCommit;
   p.command_line = command_line;
   p.utc_time = core::utc_now();
   p.build_type = HM_BUILD_TYPE;

@@ -7,7 +7,7 @@ namespace hm::cases {
 
 struct Provenance {
   std::string version;       ///< toolkit version
-  std::string git_commit;    ///< source commit at build time, or "unknown"
+  std::string git_commit;    ///< source commit at build time ("<commit>-modified": uncommitted changes), or "unknown"
   std::string command_line;  ///< as typed
   std::string utc_time;      ///< ISO 8601
   std::string build_type;    ///< CMAKE_BUILD_TYPE
