@@ -307,3 +307,36 @@ TEST_CASE("Crack faces flagged for the full pressure carry (1 - b) p more than E
   // No flags: Eq. 17 as printed, bit for bit.
   CHECK(pressure_forces(lattice, dual, uniform, b, CouplingTerms{}, std::vector<bool>(flags.size(), false)) == rock);
 }
+
+TEST_CASE("A crack's opening volume is work-conjugate to the full pressure on its faces", "[lattice2d]") {
+  // sum_s p_s V_s(u) = f(p) . u for pressures on the crack's triangles (b = 0: only the broken faces are
+  // pushed), whatever u: the flow charges the crack the volume the mechanics' forces open.
+  const Lattice lattice = make_lattice(DomainShape::disk, 1500);
+  const DualGraph dual = build_dual_graph(lattice);
+  std::vector<bool> broken(lattice.beams.size(), false);
+  for (int e = 0; e < lattice.n_beams(); e += 7) broken[static_cast<std::size_t>(e)] = true;  // boundary ones too
+  const Eigen::VectorXd u = Eigen::VectorXd::Random(3 * lattice.n_particles()) * 1e-3;
+  const Eigen::VectorXd p = Eigen::VectorXd::Random(lattice.n_triangles()) * 1e-4;
+  const Eigen::VectorXd f = pressure_forces(lattice, dual, p, 0.0, CouplingTerms{}, broken);
+  const Eigen::VectorXd volumes = crack_opening_volumes(lattice, dual, broken, u);
+  // The forces push the faces apart (-p d n on i, +p d n on j): their work is f . u.
+  const double work = f.dot(u), scale = p.cwiseAbs().dot(volumes.cwiseAbs());
+  CHECK(std::abs(p.dot(volumes) - work) < 1e-13 * scale);  // a sum of ~1e4 products: round-off
+  CHECK(scale > 0.0);
+  // One beam opened by w: its two triangles hold w d / 2 each (an interior beam).
+  int e = 0;
+  while (lattice.beam_boundary[static_cast<std::size_t>(e)] != BoundaryTag::interior) ++e;
+  std::vector<bool> one(lattice.beams.size(), false);
+  one[static_cast<std::size_t>(e)] = true;
+  Eigen::VectorXd opened = Eigen::VectorXd::Zero(3 * lattice.n_particles());
+  const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
+  opened.segment<2>(3 * j) = 2e-4 * lattice.direction.col(e);
+  const Eigen::VectorXd v = crack_opening_volumes(lattice, dual, one, opened);
+  for (const int t : lattice.beam_triangles[static_cast<std::size_t>(e)])
+    CHECK(v[t] == Approx(0.5 * 2e-4 * dual.dual_length[e]).epsilon(1e-14));
+  CHECK(v.cwiseAbs().sum() == Approx(2e-4 * dual.dual_length[e]).epsilon(1e-14));
+  // Opening it sideways (along the facet) holds no fluid.
+  opened.segment<2>(3 * j) = 2e-4 * Eigen::Vector2d(-lattice.direction(1, e), lattice.direction(0, e));
+  opened.segment<2>(3 * i) = opened.segment<2>(3 * j);
+  CHECK(crack_opening_volumes(lattice, dual, one, opened).cwiseAbs().maxCoeff() < 1e-20);
+}

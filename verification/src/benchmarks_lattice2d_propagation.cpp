@@ -260,8 +260,9 @@ BenchmarkResult kgd_toughness(const BenchmarkContext& ctx) {
               {"law", "N", "growth states", "K / K_c (fluid)", "K / K_c (dry)", "c / c_Griffith(V)", "fluid in the crack",
                "max balance error", "steps", "passes", "seconds"},
               {}};
-  for (const bool sawtooth : {true, false})
-    for (long long n : sizes) {
+  // By size, both laws at each: a paper-tier run stopped part-way has whole comparisons.
+  for (long long n : sizes)
+    for (const bool sawtooth : {true, false}) {
       cases::RunCase c = base;
       c.lattice.n_particles = n;
       if (!sawtooth) {
@@ -294,6 +295,11 @@ BenchmarkResult kgd_toughness(const BenchmarkContext& ctx) {
       table.rows.push_back({law, std::to_string(n), std::to_string(m.n), fmt(m.toughness / k_c), fmt(d.toughness / k_c),
                             fmt(m.length_ratio), fmt(fluid_in_crack), fmt(run.max_balance), std::to_string(run.n_steps),
                             std::to_string(run.passes), fmt(run.seconds)});
+      if (ctx.progress)
+        *ctx.progress << "[kgd_toughness] " << at << ": K / K_c " << fmt(m.toughness / k_c) << " (dry " << fmt(d.toughness / k_c)
+                      << "), c / c_Griffith " << fmt(m.length_ratio) << ", fluid in the crack " << fmt(fluid_in_crack)
+                      << ", " << (run.ok ? "reached t_end" : "stopped: " + run.message) << ", " << fmt(run.seconds) << " s\n"
+                      << std::flush;
       res.metrics.push_back({.name = "fluid in the crack / injected at t_end (" + at + ")", .value = fluid_in_crack,
                              .reference = 1.0, .tolerance = 0.02, .comparison = Comparison::rel_error,
                              .justification = "leak-off into the tight rock and its storage: ~1% estimated from the "

@@ -154,9 +154,10 @@ HarnessSummary run_harness(const std::vector<Benchmark>& benchmarks, const Harne
       for (std::size_t i; (i = next++) < n;) {
         const Benchmark& benchmark = *selected[i];
         const std::string heading = "[" + std::to_string(i + 1) + "/" + std::to_string(n) + "] " + benchmark.id;
-        // Paper-tier benchmarks run for minutes to hours: their progress lines go between two headings,
-        // each line whole and, with several workers, marked with its benchmark.
-        const bool long_running = benchmark.tier == Tier::paper;
+        // In the paper tier benchmarks run for minutes to hours (quick ones at paper sizes too): their
+        // progress lines go between two headings, each line whole and, with several workers, marked
+        // with its benchmark.
+        const bool long_running = options.tier == Tier::paper;
         LockedLines progress(log, log_mutex, jobs > 1 ? benchmark.id + ": " : "");
         if (long_running || jobs == 1) {
           std::lock_guard lock(log_mutex);

@@ -165,6 +165,22 @@ Eigen::VectorXd CoupledModel::unknown_volumes(const DualGraph& dual) const {
   return v;
 }
 
+Eigen::VectorXd CoupledModel::charged_volumes(Eigen::VectorXd volumes, const DualGraph& dual,
+                                              const Eigen::VectorXd& u) const {
+  if (flow_->parameters().crack_coupling != CrackCoupling::full) return volumes;
+  // A crack triangle holds b of its area (the rock's pores) and 1 - b of its beams' openings: the
+  // crack volume whose change is conjugate to the full pressure on the broken faces (pressure_load).
+  // The flow charges a crack triangle's change at weight 1 (FlowNetwork::deformation).
+  const std::vector<bool>& broken = flow_->broken();
+  const double b = flow_->parameters().b;
+  const Eigen::VectorXd opening = crack_opening_volumes(lattice(), reference_dual_, broken, u);
+  for (int e = 0; e < lattice().n_beams(); ++e)
+    if (broken[static_cast<std::size_t>(e)])
+      for (const int t : lattice().beam_triangles[static_cast<std::size_t>(e)])
+        if (t >= 0) volumes[t] = b * dual.triangle_area[t] + (1.0 - b) * opening[t];
+  return volumes;
+}
+
 CoupledStepSummary CoupledModel::settle() {
   CoupledStepSummary summary;
   summary.time = time();
@@ -384,7 +400,8 @@ void CoupledModel::update_crack_stabiliser() {
     const double h = 1e-6 / largest;
     const auto volumes = [&](double step) {
       const Eigen::VectorXd moved = u + step * du;
-      return unknown_volumes(build_dual_graph(lattice(), positions(moved), reference_dual_.options));
+      const DualGraph moved_dual = build_dual_graph(lattice(), positions(moved), reference_dual_.options);
+      return charged_volumes(unknown_volumes(moved_dual), moved_dual, moved);
     };
     crack_stabiliser_.volume_response.col(c) = flow_->deformation((volumes(h) - volumes(-h)) / (2 * h));
   }
@@ -401,7 +418,10 @@ bool CoupledModel::solve_flow(double dt, int pass, const Eigen::VectorXd& u, con
   summary.geometry_seconds += std::chrono::duration<double>(tock - tick).count();
   const bool stabilised = !crack_stabiliser_.modes.empty();
   if (stabilised) crack_stabiliser_.reference_pressure = pressure_guess;
-  summary.flow = flow_->solve(dt, unknown_volumes(dual) - volume_, stabilised ? &crack_stabiliser_ : nullptr);
+  // V^n with the cracks of now: a beam broken in this step is charged its opening since t^n.
+  const Eigen::VectorXd volume_change =
+      charged_volumes(unknown_volumes(dual), dual, u) - charged_volumes(volume_, current_dual_, displacement_);
+  summary.flow = flow_->solve(dt, volume_change, stabilised ? &crack_stabiliser_ : nullptr);
   summary.flow_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - tock).count();
   if (summary.flow.is_ok()) return true;
   summary.status = CoupledStatus::solver_failure;

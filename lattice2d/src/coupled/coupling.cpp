@@ -8,6 +8,15 @@
 
 namespace hm::lattice2d {
 
+namespace {
+// (u_j - u_i).n of beam e: its normal elongation in the undeformed direction.
+double normal_elongation(const Lattice& lattice, const Eigen::VectorXd& u, int e) {
+  const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
+  const Eigen::Vector2d n = lattice.direction.col(e);
+  return (u[dof_index(j, 0)] - u[dof_index(i, 0)]) * n.x() + (u[dof_index(j, 1)] - u[dof_index(i, 1)]) * n.y();
+}
+}  // namespace
+
 void CouplingTerms::validate() const {
   using namespace hm::core;
   // Plausibility bounds (coupling.hpp): beyond them the Eq. 20 springs or the Eq. 17 forces swamp the
@@ -57,6 +66,20 @@ Eigen::VectorXd pressure_forces(const Lattice& lattice, const DualGraph& dual, c
   return f;
 }
 
+Eigen::VectorXd crack_opening_volumes(const Lattice& lattice, const DualGraph& dual, const std::vector<bool>& broken,
+                                      const Eigen::VectorXd& u) {
+  assert(broken.size() == lattice.beams.size() && "crack_opening_volumes: one flag per beam");
+  assert(u.size() == 3 * lattice.n_particles() && "crack_opening_volumes: 3 dofs per particle");
+  Eigen::VectorXd v = Eigen::VectorXd::Zero(lattice.n_triangles());
+  for (int e = 0; e < lattice.n_beams(); ++e) {
+    if (!broken[static_cast<std::size_t>(e)]) continue;
+    const double half = 0.5 * dual.dual_length[e] * normal_elongation(lattice, u, e);
+    for (const int t : lattice.beam_triangles[static_cast<std::size_t>(e)])
+      if (t >= 0) v[t] += half;  // a wall beam's other half is the borehole's, whose volume is its own
+  }
+  return v;
+}
+
 Eigen::VectorXd undrained_spring_stiffness(const Lattice& lattice, const DualGraph& dual, double b, double E_over_M,
                                            const CouplingTerms& terms) {
   const double c = terms.psi * terms.xi * b * b / E_over_M;
@@ -75,10 +98,7 @@ Eigen::VectorXd spring_preload(const Lattice& lattice, const Eigen::VectorXd& st
   for (int e = 0; e < lattice.n_beams(); ++e) {
     if (stiffness[e] == 0.0) continue;
     const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
-    const Eigen::Vector2d n = lattice.direction.col(e);
-    const double elongation = (u_reference[dof_index(j, 0)] - u_reference[dof_index(i, 0)]) * n.x() +
-                              (u_reference[dof_index(j, 1)] - u_reference[dof_index(i, 1)]) * n.y();
-    const Eigen::Vector2d g = stiffness[e] * elongation * n;
+    const Eigen::Vector2d g = stiffness[e] * normal_elongation(lattice, u_reference, e) * lattice.direction.col(e);
     f[dof_index(i, 0)] -= g.x();
     f[dof_index(i, 1)] -= g.y();
     f[dof_index(j, 0)] += g.x();

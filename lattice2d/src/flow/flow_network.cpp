@@ -417,7 +417,7 @@ Eigen::VectorXd FlowNetwork::deformation(const Eigen::VectorXd& volume_change) c
                                                          : Eigen::VectorXd::Zero(n);
   if (parameters_.crack_coupling == CrackCoupling::full && volume_change.size() > 0)
     for (std::size_t e = 0; e < connections_.size(); ++e) {
-      if (!broken_[e]) continue;  // a crack's triangles: their change of area is the crack's opening
+      if (!broken_[e]) continue;  // a crack's triangles: the caller's volume is already the crack's (weight 1)
       for (const int u : {connections_[e].s, connections_[e].t})
         if (u >= 0 && u < n_triangles_) deformation[u] = volume_change[u];
     }

@@ -71,7 +71,8 @@ struct BenchmarkResult {
 struct BenchmarkContext {
   Tier tier = Tier::quick;
   std::filesystem::path data_dir;  ///< write CSV for figures here (exists)
-  /// Paper-tier benchmarks may print progress lines of their long runs here; null in the quick tier.
+  /// In the paper tier every benchmark (a quick one runs its paper sizes there) may print progress lines
+  /// of its long runs here; null in the quick tier.
   std::ostream* progress = nullptr;
   /// `hmlattice verify --runs DIR`: a planned run (Benchmark::planned_runs) whose folder DIR/<label>
   /// exists is read from there instead of run (the harness has checked that it is complete and of the

@@ -370,7 +370,10 @@ class CoupledModel {
   FlowStabiliser crack_stabiliser_;
   void finish_step(double dt, bool converged, DualGraph dual, CoupledStepSummary& summary);  // accept or restore t^n
   Eigen::Matrix2Xd positions(const Eigen::VectorXd& u) const;
-  Eigen::VectorXd unknown_volumes(const DualGraph& dual) const;  // V_s, then V_h
+  Eigen::VectorXd unknown_volumes(const DualGraph& dual) const;  // V_s (areas), then V_h
+  // The volumes the flow charges: with CrackCoupling::full a crack triangle's is b of its area and 1 - b
+  // of its broken beams' openings at u (crack_opening_volumes); otherwise `volumes` as they are.
+  Eigen::VectorXd charged_volumes(Eigen::VectorXd volumes, const DualGraph& dual, const Eigen::VectorXd& u) const;
   // save_state without the run cursor: what step() restores after a failed attempt. The accepted
   // geometry (current_dual_, volume_) is not in it: only an accepted step changes it.
   void save_model_state(core::StateWriter& w) const;

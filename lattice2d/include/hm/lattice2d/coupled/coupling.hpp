@@ -63,6 +63,16 @@ struct CouplingTerms {
 Eigen::VectorXd pressure_forces(const Lattice& lattice, const DualGraph& dual, const Eigen::VectorXd& pressure,
                                 double b, const CouplingTerms& terms, const std::vector<bool>& full_pressure = {});
 
+/// The fluid volume of the cracks per triangle (n_triangles): for each broken beam e (flags in
+/// `broken`, one per beam), its opening times its facet, d_e (u_j - u_i).n_e, half to each of its two
+/// triangles (undeformed d_e and n_e, as pressure_forces). Its change is work-conjugate to the full
+/// pressure pressure_forces puts on broken beams' faces (xi = 1): sum_s p_s dV_s = f . du for a
+/// pressure on the crack's triangles (tested), so that the flow charges the crack the volume the
+/// mechanics opens. A triangle's area would not be: an opening w of one beam changes the two
+/// triangles' areas by w (h_k + h_l) / 2, 1.5 w d_e on an equilateral lattice.
+Eigen::VectorXd crack_opening_volumes(const Lattice& lattice, const DualGraph& dual, const std::vector<bool>& broken,
+                                      const Eigen::VectorXd& u);
+
 /// Stiffness per beam of the undrained split's normal spring (Eq. 20 linearised, docs/coupling.md):
 ///   k_ij = Psi xi b^2 (M/E) max(d_st, 0) / L_ij,
 /// all zero for Psi = 0 (the drained split). Feed it to BeamMechanics::set_normal_springs.
