@@ -8,15 +8,6 @@
 
 namespace hm::lattice2d {
 
-namespace {
-// (u_j - u_i).n of beam e: its normal elongation in the undeformed direction.
-double normal_elongation(const Lattice& lattice, const Eigen::VectorXd& u, int e) {
-  const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
-  const Eigen::Vector2d n = lattice.direction.col(e);
-  return (u[dof_index(j, 0)] - u[dof_index(i, 0)]) * n.x() + (u[dof_index(j, 1)] - u[dof_index(i, 1)]) * n.y();
-}
-}  // namespace
-
 void CouplingTerms::validate() const {
   using namespace hm::core;
   // Plausibility bounds (coupling.hpp): beyond them the Eq. 20 springs or the Eq. 17 forces swamp the

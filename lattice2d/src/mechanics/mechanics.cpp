@@ -435,11 +435,7 @@ void BeamMechanics::remove_normal_spring(int beam) {
   solver_->modify(W, -1);
 }
 
-double BeamMechanics::elongation(int beam) const {
-  const auto [i, j] = lattice_.beams[static_cast<std::size_t>(beam)];
-  const Eigen::Vector2d du(raw_[dof_index(j, 0)] - raw_[dof_index(i, 0)], raw_[dof_index(j, 1)] - raw_[dof_index(i, 1)]);
-  return du.dot(lattice_.direction.col(beam));
-}
+double BeamMechanics::elongation(int beam) const { return normal_elongation(lattice_, raw_, beam); }
 
 BeamState BeamMechanics::break_beam(int beam) {
   if (beam < 0 || beam >= lattice_.n_beams())

@@ -234,6 +234,15 @@ Matrix63d beam_element_factor(double length, double angle, const BeamParameters&
 /// Degree of freedom of a particle's component (0 = x, 1 = y, 2 = rotation).
 constexpr int dof_index(int particle, int component) { return 3 * particle + component; }
 
+/// The normal elongation (u_j - u_i).n of `beam` in its undeformed direction n (the first of
+/// BeamOperator::strains()), from u with 3 degrees of freedom per particle: the contact rule's
+/// measure, the Eq. 20 spring's stretch and a crack's opening. The one copy of this arithmetic.
+inline double normal_elongation(const Lattice& lattice, const Eigen::VectorXd& u, int beam) {
+  const auto [i, j] = lattice.beams[static_cast<std::size_t>(beam)];
+  const Eigen::Vector2d du(u[dof_index(j, 0)] - u[dof_index(i, 0)], u[dof_index(j, 1)] - u[dof_index(i, 1)]);
+  return du.dot(lattice.direction.col(beam));
+}
+
 /// K (3 n x 3 n, both triangles stored) for the lattice's undeformed beam geometry, each beam with
 /// beam_parameters_for(lattice, parameters, e); `states` is
 /// empty (all intact) or one per beam. Validates `parameters` (throws hm::InputError).
