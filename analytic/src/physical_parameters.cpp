@@ -16,6 +16,10 @@ void PhysicalParameters::validate() const {
   require_open(nu, "nu", 0.0, 0.5);
   require_positive(k_si, "k");
   require_positive(k_f_si, "k_f");
+  // iota = k_f/k >= 1 (DimensionlessParameters::kMinIota): said in the keys the user wrote.
+  if (!(k_f_si >= DimensionlessParameters::kMinIota * k_si))
+    throw InputError("k_f = " + format_value(k_f_si) + ", allowed: k_f >= k = " + format_value(k_si) +
+                     " (an open crack conducts at least as the rock it cuts)");
   require_positive(mu_si, "mu");
   require_non_negative(q_si, "q");
   require_positive(R_si, "R");
@@ -37,8 +41,9 @@ void DimensionlessParameters::validate() const {
   // Pressures scale with Q (p_h ~ Q ln(1/R_i) / 2 pi): Q = 1e6 is already a borehole pressure of
   // ~3e5 E, beyond any rock; far above it the solvers' numbers overflow.
   require_closed(Q, "Q", 0.0, 1e6);
-  if (!(iota > 0.0 && iota <= kMaxIota))
-    throw InputError("iota = " + format_value(iota) + ", allowed: 0 < iota <= " + format_value(kMaxIota));
+  if (!(iota >= kMinIota && iota <= kMaxIota))
+    throw InputError("iota = " + format_value(iota) + ", allowed: " + format_value(kMinIota) +
+                     " <= iota <= " + format_value(kMaxIota));
   require_half_open(R_i, "R_i", 0.0, 1.0);
   for (const auto& [value, name] : {std::pair{tensile_strength, "tensile_strength"},
                                     std::pair{compressive_strength, "compressive_strength"}})

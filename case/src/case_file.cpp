@@ -225,8 +225,8 @@ const CaseKeys<analytic::DimensionlessParameters>& physics_keys() {
               "([flow] borehole_storage = \"fluid\"); Eq. 22's E/M is given by E_over_M");
     add_vol_strain(k, [](auto& d) -> auto& { return d.material.vol_strain; });
     k.real("R_i", [](auto& d) -> auto& { return d.R_i; }, "0 <= R_i < 1", "borehole radius R_i/R; 0 for point injection")
-        .real("iota", [](auto& d) -> auto& { return d.iota; }, "0 < iota <= 1e12",
-              "fracture permeability enhancement k_f/k (at most a 0.3 mm cubic-law aperture, k_f ~ 1e-8 m^2, in a "
+        .real("iota", [](auto& d) -> auto& { return d.iota; }, "1 <= iota <= 1e12",
+              "fracture permeability enhancement k_f/k (an open crack conducts at least as the rock it cuts; at most a 0.3 mm cubic-law aperture, k_f ~ 1e-8 m^2, in a "
               "nanodarcy shale, k ~ 1e-20 m^2)")
         .real("tensile_strength", [](auto& d) -> auto& { return d.tensile_strength; }, "0 < tensile_strength <= 1",
               "T_u/E (a strain at failure: above 1 it is a strength in Pa)")

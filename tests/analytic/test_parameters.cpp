@@ -125,6 +125,7 @@ TEST_CASE("Physical parameters: each rule rejects its bad value with field, valu
   check_rejected_physical([](P& p) { p.nu = 0.0; }, "nu = 0, allowed: 0 < nu < 0.5");
   check_rejected_physical([](P& p) { p.k_si = -1e-14; }, "k = -1e-14, allowed: k > 0");
   check_rejected_physical([](P& p) { p.k_f_si = 0.0; }, "k_f = 0, allowed: k_f > 0");
+  check_rejected_physical([](P& p) { p.k_f_si = 1e-16; }, "k_f = 1e-16, allowed: k_f >= k = 1e-14 (an open crack conducts at least as the rock it cuts)");
   check_rejected_physical([](P& p) { p.mu_si = 0.0; }, "mu = 0, allowed: mu > 0");
   check_rejected_physical([](P& p) { p.q_si = -1e-3; }, "q = -0.001, allowed: q >= 0");
   check_rejected_physical([](P& p) { p.R_si = 0.0; }, "R = 0, allowed: R > 0");
@@ -154,8 +155,9 @@ TEST_CASE("Dimensionless parameters: each rule rejects its bad value with field,
   check_rejected_dimensionless([](D& d) { d.material.b = 1.01; }, "b = 1.01, allowed: 0 <= b <= 1");
   check_rejected_dimensionless([](D& d) { d.material.E_over_M = 0.0; }, "E_over_M = 0, allowed: E_over_M > 0");
   check_rejected_dimensionless([](D& d) { d.Q = -0.01; }, "Q = -0.01, allowed: 0 <= Q <= 1e+06");
-  check_rejected_dimensionless([](D& d) { d.iota = 0.0; }, "iota = 0, allowed: 0 < iota <= 1e+12");
-  check_rejected_dimensionless([](D& d) { d.iota = 1e13; }, "iota = 1e+13, allowed: 0 < iota <= 1e+12");
+  check_rejected_dimensionless([](D& d) { d.iota = 0.0; }, "iota = 0, allowed: 1 <= iota <= 1e+12");
+  check_rejected_dimensionless([](D& d) { d.iota = 0.999; }, "iota = 0.999, allowed: 1 <= iota <= 1e+12");
+  check_rejected_dimensionless([](D& d) { d.iota = 1e13; }, "iota = 1e+13, allowed: 1 <= iota <= 1e+12");
   check_rejected_dimensionless([](D& d) { d.R_i = 1.0; }, "R_i = 1, allowed: 0 <= R_i < 1");
   check_rejected_dimensionless([](D& d) { d.tensile_strength = 0.0; },
                                "tensile_strength = 0, allowed: 0 < tensile_strength <= 1 (over E, a strain at failure; "
