@@ -156,6 +156,11 @@ CaseKeys<RunCase> make_run_case_keys() {
               "when beams are checked for failure: every pass (Fig. 5) or at the coupled equilibrium", {},
               "`\"" + core::name_of(lt::CouplingOptions{}.fracture_check) +
                   "\"`; `\"at_convergence\"` with [fracture] law = \"sawtooth\"")
+      .integer("events_per_check", [](auto& c) -> auto& { return c.coupling.events_per_check; }, 0,
+               lt::CouplingOptions::kMaxEventsPerCheck, "0 ... 1e6",
+               "breaks or teeth taken at one failure check before the coupling solves again; 0 (default): all "
+               "that fail under the check's loads, at fixed pressure (Fig. 5); 1 by default with [fracture] law = "
+               "\"sawtooth\" (the fluid answers each tooth before the next is judged)")
       .choice("predictor", [](auto& c) -> auto& { return c.coupling.predictor; },
               "the first pass's guess: the last step's state or its linear extrapolation")
       .choice("crack_stabiliser", [](auto& c) -> auto& { return c.coupling.crack_stabiliser; },
@@ -323,6 +328,7 @@ RunCase read_run_case(const std::filesystem::path& file, const std::vector<std::
   // whose first tooth overshoots retried (docs/fracture_law.md).
   if (c.fracture_law == lt::FractureLaw::sawtooth) {
     if (!root.table("coupling").has("fracture_check")) c.coupling.fracture_check = lt::FractureCheck::at_convergence;
+    if (!root.table("coupling").has("events_per_check")) c.coupling.events_per_check = 1;
     if (!numerics.has("overshoot_tolerance")) c.stepping.overshoot_tolerance = kSawtoothOvershootTolerance;
   }
   // A first break checked on every pass can overshoot through the iteration itself (an unconverged

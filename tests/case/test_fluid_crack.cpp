@@ -82,3 +82,70 @@ TEST_CASE("A fluid-filled crack at b = 0 converges with the crack stabiliser and
   INFO("most passes without the stabiliser: " << most_passes);
   CHECK((!all_converged || most_passes > 20));
 }
+
+TEST_CASE("With the saw-tooth law a fluid-filled crack's process zone is crack in proportion to its damage",
+          "[case][coupling]") {
+  // The KGD case at N = 1500 to t = 1.2e-8 (a few seconds): the beams the
+  // law has softened but not broken take fluid and its pressure with weight 1 - s (their damage).
+  TempDir dir("wet-process-zone");
+  dir.write("kgd.toml", hm::test::edited(hm::test::slurp(std::filesystem::path(HM_SOURCE_DIR) / "cases/kgd_toughness_quick.toml"),
+                                          {{"n_particles = 3000", "n_particles = 1500"},
+                                           {"t_end = 8e-8", "t_end = 1.2e-8"},
+                                           {"times = [2e-8, 4e-8]", "times = [1.2e-8]"},
+                                           {"vtk = true", "vtk = false"}}));
+  const hm::cases::RunCase c = hm::cases::read_run_case(dir.path / "kgd.toml");
+  REQUIRE(c.coupling.events_per_check == 1);  // the saw-tooth law's default
+  const auto model = hm::cases::make_coupled_model(c);
+  // One tooth per converged check: between two passes the tooth log grows by at most one.
+  long long most_teeth_between_passes = 0, teeth_before = 0;
+  model->set_pass_observer([&](int, const Eigen::VectorXd&, const Eigen::VectorXd&) {
+    const auto teeth = static_cast<long long>(model->tooth_log().size());
+    most_teeth_between_passes = std::max(most_teeth_between_passes, teeth - teeth_before);
+    teeth_before = teeth;
+  });
+  const lt::CoupledRunSummary run = model->run(c.stepping);
+  INFO(run.message);
+  REQUIRE(run.status == lt::CoupledStatus::converged);
+  CHECK(model->tooth_log().size() > 20);
+  CHECK(most_teeth_between_passes == 1);
+  const Eigen::VectorXd& w = model->flow().crack_weights();
+  const auto& states = model->mechanics().states();
+  int n_softening = 0, n_broken = 0;
+  for (int e = 0; e < w.size(); ++e) {
+    const double s = model->mechanics().stiffness_factor(e);
+    if (states[static_cast<std::size_t>(e)] != lt::BeamState::intact) {
+      CHECK(w[e] == 1.0);
+      ++n_broken;
+    } else {
+      CHECK(w[e] == 1.0 - s);  // exactly the damage; 0 for an unsoftened beam
+      if (s < 1.0) ++n_softening;
+    }
+  }
+  INFO("broken " << n_broken << ", softening " << n_softening);
+  CHECK(n_broken > 8);      // the notch's cut beams and more (measured: 12)
+  CHECK(n_softening >= 1);  // beams part-way through their teeth (measured: 2)
+  // A cracked facet joins its two triangles into one crack; the crack fed by the source (iota = 1e12 on
+  // broken facets, >= 5e11 on softened ones) has a uniform pressure.
+  const auto modes = model->flow().crack_modes();
+  std::vector<int> mode_of(static_cast<std::size_t>(model->flow().n_unknowns()), -1);
+  for (std::size_t m = 0; m < modes.size(); ++m)
+    for (int u : modes[m]) mode_of[static_cast<std::size_t>(u)] = static_cast<int>(m);
+  for (int e = 0; e < w.size(); ++e) {
+    const auto [s, t] = model->lattice().beam_triangles[static_cast<std::size_t>(e)];
+    if (w[e] > 0.0 && s >= 0 && t >= 0) {
+      CHECK(mode_of[static_cast<std::size_t>(s)] >= 0);
+      CHECK(mode_of[static_cast<std::size_t>(s)] == mode_of[static_cast<std::size_t>(t)]);
+    }
+  }
+  const int fed = mode_of[static_cast<std::size_t>(model->flow().source_triangle())];
+  REQUIRE(fed >= 0);
+  const Eigen::VectorXd& p = model->flow().pressure();
+  const auto& crack = modes[static_cast<std::size_t>(fed)];
+  double lo = p[crack[0]], hi = lo;
+  for (int u : crack) lo = std::min(lo, p[u]), hi = std::max(hi, p[u]);
+  CHECK(lo > 0.0);
+  CHECK((hi - lo) / hi < 0.01);
+  // The fluid went into the cracks (leak-off ~1%).
+  const auto& totals = model->flow().totals();
+  CHECK(totals.deformation == Approx(totals.injected).epsilon(0.02));
+}

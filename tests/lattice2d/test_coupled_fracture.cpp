@@ -114,8 +114,8 @@ TEST_CASE("Coupled fracture: radial cracks from the wall, never healed, logged i
 
   // The flow network sees the same broken set (iota applies to exactly these segments).
   for (int e = 0; e < lattice.n_beams(); ++e)
-    CHECK(model.flow().broken()[static_cast<std::size_t>(e)] ==
-          (model.mechanics().states()[static_cast<std::size_t>(e)] != BeamState::intact));
+    CHECK(model.flow().crack_weights()[e] ==
+          (model.mechanics().states()[static_cast<std::size_t>(e)] != BeamState::intact ? 1.0 : 0.0));
 
   // A pass that broke a beam never ends the iteration (Fig. 5): every breaking step took >= 2 passes,
   // and the step still converged to the coupling tolerances.

@@ -292,8 +292,8 @@ TEST_CASE("Crack faces flagged for the full pressure carry (1 - b) p more than E
   const Eigen::VectorXd uniform = Eigen::VectorXd::Constant(lattice.n_triangles(), p);
   int e = 0;  // an interior beam
   while (lattice.beam_boundary[static_cast<std::size_t>(e)] != BoundaryTag::interior) ++e;
-  std::vector<bool> flags(lattice.beams.size(), false);
-  flags[static_cast<std::size_t>(e)] = true;
+  Eigen::VectorXd flags = Eigen::VectorXd::Zero(lattice.n_beams());
+  flags[e] = 1.0;
   const Eigen::VectorXd rock = pressure_forces(lattice, dual, uniform, b, CouplingTerms{});
   const Eigen::VectorXd crack = pressure_forces(lattice, dual, uniform, b, CouplingTerms{}, flags);
   // Only the flagged segment changes: by -(1 - b) d p n on i and the opposite on j.
@@ -305,7 +305,11 @@ TEST_CASE("Crack faces flagged for the full pressure carry (1 - b) p more than E
   CHECK((crack - expected).cwiseAbs().maxCoeff() < 1e-15 * p);  // a few round-offs of p d
   CHECK(extra.norm() > 0.1 * p * dual.dual_length[e]);
   // No flags: Eq. 17 as printed, bit for bit.
-  CHECK(pressure_forces(lattice, dual, uniform, b, CouplingTerms{}, std::vector<bool>(flags.size(), false)) == rock);
+  CHECK(pressure_forces(lattice, dual, uniform, b, CouplingTerms{}, Eigen::VectorXd::Zero(flags.size())) == rock);
+  // A softening facet of damage w: the share b + (1 - b) w, continuous between the rock's and the crack's.
+  flags[e] = 0.25;
+  const Eigen::VectorXd softening = pressure_forces(lattice, dual, uniform, b, CouplingTerms{}, flags);
+  CHECK((softening - rock - 0.25 * (crack - rock)).cwiseAbs().maxCoeff() < 1e-15 * p);
 }
 
 TEST_CASE("A crack's opening volume is work-conjugate to the full pressure on its faces", "[lattice2d]") {
@@ -313,8 +317,10 @@ TEST_CASE("A crack's opening volume is work-conjugate to the full pressure on it
   // pushed), whatever u: the flow charges the crack the volume the mechanics' forces open.
   const Lattice lattice = make_lattice(DomainShape::disk, 1500);
   const DualGraph dual = build_dual_graph(lattice);
-  std::vector<bool> broken(lattice.beams.size(), false);
-  for (int e = 0; e < lattice.n_beams(); e += 7) broken[static_cast<std::size_t>(e)] = true;  // boundary ones too
+  // Broken beams (weight 1), softening ones (damage between 0 and 1) and rock; boundary beams too.
+  Eigen::VectorXd broken = Eigen::VectorXd::Zero(lattice.n_beams());
+  for (int e = 0; e < lattice.n_beams(); e += 7) broken[e] = 1.0;
+  for (int e = 3; e < lattice.n_beams(); e += 11) broken[e] = 0.5 + 0.4 * std::sin(e);
   const Eigen::VectorXd u = Eigen::VectorXd::Random(3 * lattice.n_particles()) * 1e-3;
   const Eigen::VectorXd p = Eigen::VectorXd::Random(lattice.n_triangles()) * 1e-4;
   const Eigen::VectorXd f = pressure_forces(lattice, dual, p, 0.0, CouplingTerms{}, broken);
@@ -326,8 +332,8 @@ TEST_CASE("A crack's opening volume is work-conjugate to the full pressure on it
   // One beam opened by w: its two triangles hold w d / 2 each (an interior beam).
   int e = 0;
   while (lattice.beam_boundary[static_cast<std::size_t>(e)] != BoundaryTag::interior) ++e;
-  std::vector<bool> one(lattice.beams.size(), false);
-  one[static_cast<std::size_t>(e)] = true;
+  Eigen::VectorXd one = Eigen::VectorXd::Zero(lattice.n_beams());
+  one[e] = 1.0;
   Eigen::VectorXd opened = Eigen::VectorXd::Zero(3 * lattice.n_particles());
   const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
   opened.segment<2>(3 * j) = 2e-4 * lattice.direction.col(e);

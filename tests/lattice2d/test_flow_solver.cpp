@@ -35,7 +35,9 @@ Eigen::MatrixXd dense_flow_matrix(const Lattice& lattice, const DualGraph& dual,
     const auto [s, other] = lattice.beam_triangles[static_cast<std::size_t>(e)];
     const bool wall = lattice.beam_boundary[static_cast<std::size_t>(e)] == BoundaryTag::inner;
     const int t = other >= 0 ? other : (wall ? h : -1);
-    const double g = dt * dual.conductance[e] * (network.broken()[static_cast<std::size_t>(e)] ? parameters.iota : 1.0);
+    // Rock and crack side by side on the facet: (1 - w) of the rock's conductance and w of iota times it.
+    const double w = network.crack_weights()[e];
+    const double g = dt * dual.conductance[e] * ((1.0 - w) + w * parameters.iota);
     a(s, s) += g;
     if (t >= 0) {
       a(t, t) += g;
@@ -67,12 +69,14 @@ double relative_difference(const Eigen::VectorXd& x, const Eigen::VectorXd& refe
   return (x - reference).cwiseAbs().maxCoeff() / reference.cwiseAbs().maxCoeff();
 }
 
-// Every `every`-th beam broken, and the particles moved by up to `amplitude` (domain radius 1).
+// Every `every`-th beam broken, every (3 every)-th one after it softening (a crack weight between 0
+// and 1), and the particles moved by up to `amplitude` (domain radius 1).
 void crack_and_deform(const Lattice& lattice, FlowNetwork& network, DualGraph& dual, std::size_t every,
                       double amplitude) {
-  std::vector<bool> broken(static_cast<std::size_t>(lattice.n_beams()), false);
-  for (std::size_t e = 0; e < broken.size(); e += every) broken[e] = true;
-  network.set_broken(broken);
+  Eigen::VectorXd weights = Eigen::VectorXd::Zero(lattice.n_beams());
+  for (Eigen::Index e = 0; e < weights.size(); e += static_cast<Eigen::Index>(every)) weights[e] = 1.0;
+  for (Eigen::Index e = 1; e < weights.size(); e += static_cast<Eigen::Index>(3 * every)) weights[e] = 0.3 + 0.002 * (e % 300);
+  network.set_crack_weights(weights);
   std::mt19937_64 rng(3);
   std::uniform_real_distribution<double> shift(-amplitude, amplitude);
   Eigen::Matrix2Xd positions = lattice.points;

@@ -290,6 +290,9 @@ BenchmarkResult kgd_toughness(const BenchmarkContext& ctx) {
       dry.teeth = c.sawtooth.teeth;
       dry.strength_factor = c.sawtooth.strength_factor;
       dry.max_half_length = kFitTo + 0.02;
+      // The coupled model's fluid-filled crack wets the law's process zone by damage (CoupledModel::
+      // crack_weights): the dry growth pressurises the same faces.
+      dry.faces = PressurisedFaces::with_softening;
       const GrowthMeasures d = measure(grow_pressurised_crack(dry));
       const double fluid_in_crack = run.points.empty() ? 0.0 : run.points.back().crack_volume / run.points.back().injected;
       table.rows.push_back({law, std::to_string(n), std::to_string(m.n), fmt(m.toughness / k_c), fmt(d.toughness / k_c),

@@ -26,6 +26,9 @@ void CouplingOptions::validate() const {
       throw hm::InputError(std::string("coupling.") + name + " = " + format_value(value) + ", allowed: " +
                            format_value(kMinCouplingTolerance) + " <= " + name + " < 1");
   require_at_least(max_iterations, "coupling.max_iterations", 1);
+  if (events_per_check < 0 || events_per_check > kMaxEventsPerCheck)
+    throw hm::InputError("coupling.events_per_check = " + std::to_string(events_per_check) + ", allowed: 0 ... " +
+                         std::to_string(kMaxEventsPerCheck));
   if (anderson_depth < 1 || anderson_depth > 50)
     throw hm::InputError("coupling.anderson_depth = " + std::to_string(anderson_depth) + ", allowed: 1 ... 50");
   if (!(initial_relaxation > 0.0 && initial_relaxation <= 1.0))
@@ -133,7 +136,7 @@ void CoupledModel::cut_beams(const std::vector<int>& beams) {
     break_log_.push_back(cut);
     ++n_cut_;
   }
-  if (!beams.empty()) flow_->set_broken(broken_flags(mechanics_->states()));
+  if (!beams.empty()) flow_->set_crack_weights(crack_weights());
 }
 
 int CoupledModel::n_broken() const {
@@ -171,11 +174,11 @@ Eigen::VectorXd CoupledModel::charged_volumes(Eigen::VectorXd volumes, const Dua
   // A crack triangle holds b of its area (the rock's pores) and 1 - b of its beams' openings: the
   // crack volume whose change is conjugate to the full pressure on the broken faces (pressure_load).
   // The flow charges a crack triangle's change at weight 1 (FlowNetwork::deformation).
-  const std::vector<bool>& broken = flow_->broken();
+  const Eigen::VectorXd& crack = flow_->crack_weights();
   const double b = flow_->parameters().b;
-  const Eigen::VectorXd opening = crack_opening_volumes(lattice(), reference_dual_, broken, u);
+  const Eigen::VectorXd opening = crack_opening_volumes(lattice(), reference_dual_, crack, u);
   for (int e = 0; e < lattice().n_beams(); ++e)
-    if (broken[static_cast<std::size_t>(e)])
+    if (crack[e] > 0.0)
       for (const int t : lattice().beam_triangles[static_cast<std::size_t>(e)])
         if (t >= 0) volumes[t] = b * dual.triangle_area[t] + (1.0 - b) * opening[t];
   return volumes;
@@ -343,6 +346,9 @@ bool CoupledModel::solve_mechanics(int pass, const PassGuess& guess, bool check_
 bool CoupledModel::break_beams(int pass, int& n_breaks, CoupledStepSummary& summary) {
   BreakLoopOptions loop = fracture_->options;
   if (pass > 0) loop.interrupted = interrupt_;  // a step can be undone; the settling at t = 0 (pass 0) is not
+  // The settling at t = 0 takes all: no fluid moves before the first step.
+  const bool capped = options_.events_per_check > 0 && pass > 0;
+  if (capped) loop.max_breaks = options_.events_per_check;
   const BreakLoopSummary bs =
       fracture_->sawtooth ? break_until_stable(*mechanics_, reference_dual_, fracture_->strengths, *fracture_->sawtooth,
                                                loop, summary.time, break_log_, tooth_log_)
@@ -364,20 +370,35 @@ bool CoupledModel::break_beams(int pass, int& n_breaks, CoupledStepSummary& summ
                       std::to_string(pass) + ", " + bs.message + " (the step is undone)";
     return false;
   }
-  if (!bs.is_stable()) {
+  if (!bs.is_stable() && !(capped && bs.status == BreakLoopStatus::break_cap)) {
     summary.status = CoupledStatus::solver_failure;
     summary.message = "break loop at t = " + hm::core::format_value(summary.time) + ", pass " +
                       std::to_string(pass) + ": " + core::name_of(bs.status) + " " + bs.message;
     return false;
   }
-  if (bs.n_breaks > 0) flow_->set_broken(broken_flags(mechanics_->states()));
+  if (bs.n_breaks + bs.n_teeth > 0) flow_->set_crack_weights(crack_weights());
   return true;
+}
+
+Eigen::VectorXd CoupledModel::crack_weights() const {
+  const std::vector<BeamState>& states = mechanics_->states();
+  // With fluid-filled cracks the saw-tooth law's process zone is crack in proportion to its damage
+  // 1 - s: it takes fluid and is pushed by it continuously from the first tooth to the break, as the
+  // cohesive zone of a crack without fluid lag (no dry zone ahead of the fluid).
+  const bool wet_process_zone =
+      fracture_ && fracture_->sawtooth && flow_->parameters().crack_coupling == CrackCoupling::full;
+  Eigen::VectorXd w(lattice().n_beams());
+  for (int e = 0; e < lattice().n_beams(); ++e)
+    w[e] = states[static_cast<std::size_t>(e)] != BeamState::intact ? 1.0
+           : wet_process_zone                                       ? 1.0 - mechanics_->stiffness_factor(e)
+                                                                    : 0.0;
+  return w;
 }
 
 Eigen::VectorXd CoupledModel::pressure_load(const Eigen::VectorXd& pressure) const {
   const bool full_crack_pressure = flow_->parameters().crack_coupling == CrackCoupling::full;
   return pressure_forces(lattice(), reference_dual_, pressure, flow_->parameters().b, options_.terms,
-                         full_crack_pressure ? flow_->broken() : std::vector<bool>{});
+                         full_crack_pressure ? flow_->crack_weights() : Eigen::VectorXd{});
 }
 
 void CoupledModel::update_crack_stabiliser() {

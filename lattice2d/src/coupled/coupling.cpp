@@ -20,20 +20,19 @@ void CouplingTerms::validate() const {
 }
 
 Eigen::VectorXd pressure_forces(const Lattice& lattice, const DualGraph& dual, const Eigen::VectorXd& pressure,
-                                double b, const CouplingTerms& terms, const std::vector<bool>& full_pressure) {
+                                double b, const CouplingTerms& terms, const Eigen::VectorXd& crack_weight) {
   const int n_t = lattice.n_triangles();
   assert((pressure.size() == n_t || pressure.size() == n_t + 1) && "pressure_forces: one value per triangle (+ p_h)");
   assert(dual.dual_length.size() == lattice.n_beams() && "pressure_forces: dual graph of another lattice");
   const double p_h = pressure.size() > n_t ? pressure[n_t] : 0.0;
-  assert((full_pressure.empty() || full_pressure.size() == lattice.beams.size()) && "pressure_forces: one flag per beam");
+  assert((crack_weight.size() == 0 || crack_weight.size() == lattice.n_beams()) && "pressure_forces: one weight per beam");
   Eigen::VectorXd f = Eigen::VectorXd::Zero(3 * lattice.n_particles());
   for (int e = 0; e < lattice.n_beams(); ++e) {
     const auto [s, t] = lattice.beam_triangles[static_cast<std::size_t>(e)];
     const BoundaryTag tag = lattice.beam_boundary[static_cast<std::size_t>(e)];
     const double p_t = t >= 0 ? pressure[t] : (tag == BoundaryTag::inner ? p_h : 0.0);
     const double p_st = 0.5 * (pressure[s] + p_t);
-    const bool full = !full_pressure.empty() && full_pressure[static_cast<std::size_t>(e)];
-    const double scale = terms.xi * (full ? 1.0 : b);
+    const double scale = terms.xi * (crack_weight.size() == 0 ? b : face_pressure_share(b, crack_weight[e]));
     const Eigen::Vector2d F_i = -scale * dual.dual_length[e] * p_st * lattice.direction.col(e);
     const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
     f[dof_index(i, 0)] += F_i.x();
@@ -57,14 +56,14 @@ Eigen::VectorXd pressure_forces(const Lattice& lattice, const DualGraph& dual, c
   return f;
 }
 
-Eigen::VectorXd crack_opening_volumes(const Lattice& lattice, const DualGraph& dual, const std::vector<bool>& broken,
+Eigen::VectorXd crack_opening_volumes(const Lattice& lattice, const DualGraph& dual, const Eigen::VectorXd& crack_weight,
                                       const Eigen::VectorXd& u) {
-  assert(broken.size() == lattice.beams.size() && "crack_opening_volumes: one flag per beam");
+  assert(crack_weight.size() == lattice.n_beams() && "crack_opening_volumes: one weight per beam");
   assert(u.size() == 3 * lattice.n_particles() && "crack_opening_volumes: 3 dofs per particle");
   Eigen::VectorXd v = Eigen::VectorXd::Zero(lattice.n_triangles());
   for (int e = 0; e < lattice.n_beams(); ++e) {
-    if (!broken[static_cast<std::size_t>(e)]) continue;
-    const double half = 0.5 * dual.dual_length[e] * normal_elongation(lattice, u, e);
+    if (!(crack_weight[e] > 0.0)) continue;
+    const double half = 0.5 * crack_weight[e] * dual.dual_length[e] * normal_elongation(lattice, u, e);
     for (const int t : lattice.beam_triangles[static_cast<std::size_t>(e)])
       if (t >= 0) v[t] += half;  // a wall beam's other half is the borehole's, whose volume is its own
   }

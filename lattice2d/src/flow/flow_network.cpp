@@ -138,7 +138,7 @@ FlowNetwork::FlowNetwork(const Lattice& lattice, const DualGraph& dual, const Fl
   const int n_beams = lattice.n_beams();
   assert(dual.triangle_area.size() == n_triangles_ && dual.conductance.size() == n_beams &&
          "dual graph of another lattice");
-  broken_.assign(static_cast<std::size_t>(n_beams), false);
+  crack_weight_ = Eigen::VectorXd::Zero(n_beams);
 
   // Wall beams, with their particles in the counter-clockwise order of their triangle (the hole on
   // the right), which makes the shoelace of the reversed edges the hole's area.
@@ -233,15 +233,23 @@ void FlowNetwork::update_geometry(const DualGraph& dual, const Eigen::Matrix2Xd&
   factor_stale_ = true;
 }
 
-void FlowNetwork::set_broken(const std::vector<bool>& broken) {
-  assert(broken.size() == connections_.size() && "one flag per beam");
-  if (broken == broken_) return;
-  broken_ = broken;
+void FlowNetwork::set_crack_weights(const Eigen::VectorXd& weights) {
+  assert(weights.size() == static_cast<Eigen::Index>(connections_.size()) && "one weight per beam");
+  assert((weights.array() >= 0.0).all() && (weights.array() <= 1.0).all() && "weights in [0, 1]");
+  if (weights.size() == crack_weight_.size() && weights == crack_weight_) return;
+  crack_weight_ = weights;
   factor_stale_ = true;
 }
 
+void FlowNetwork::set_broken(const std::vector<bool>& broken) {
+  assert(broken.size() == connections_.size() && "one flag per beam");
+  Eigen::VectorXd weights(static_cast<Eigen::Index>(broken.size()));
+  for (std::size_t e = 0; e < broken.size(); ++e) weights[static_cast<Eigen::Index>(e)] = broken[e] ? 1.0 : 0.0;
+  set_crack_weights(weights);
+}
+
 std::vector<std::vector<int>> FlowNetwork::crack_modes() const {
-  // Union-find over the broken beams' connections (the outer surface is not an unknown).
+  // Union-find over the cracked beams' connections (the outer surface is not an unknown).
   std::vector<int> parent(static_cast<std::size_t>(n_unknowns()));
   std::iota(parent.begin(), parent.end(), 0);
   auto root = [&](int u) {
@@ -250,7 +258,7 @@ std::vector<std::vector<int>> FlowNetwork::crack_modes() const {
   };
   std::vector<char> on_crack(parent.size(), 0);
   for (std::size_t e = 0; e < connections_.size(); ++e) {
-    if (!broken_[e]) continue;
+    if (!(crack_weight_[static_cast<Eigen::Index>(e)] > 0.0)) continue;
     const int s = connections_[e].s, t = connections_[e].t;
     if (s >= 0) on_crack[static_cast<std::size_t>(s)] = 1;
     if (t >= 0) on_crack[static_cast<std::size_t>(t)] = 1;
@@ -275,7 +283,9 @@ void FlowNetwork::set_pressure(const Eigen::VectorXd& pressure) {
 
 double FlowNetwork::conductance(int beam) const {
   const double c = base_conductance_[beam];
-  return broken_[static_cast<std::size_t>(beam)] ? parameters_.iota * c : c;
+  // Rock and crack side by side on the facet; the ends exactly c and iota c.
+  const double w = crack_weight_[beam];
+  return w == 0.0 ? c : w == 1.0 ? parameters_.iota * c : (1.0 + w * (parameters_.iota - 1.0)) * c;
 }
 
 double FlowNetwork::borehole_storage_coefficient() const {
@@ -330,7 +340,7 @@ void FlowNetwork::save_state(core::StateWriter& w) const {
   w.put("flow.triangle_area", triangle_area_);
   w.put("flow.base_conductance", base_conductance_);
   w.put("flow.borehole_volume", borehole_volume_);
-  w.put("flow.broken", broken_);
+  w.put("flow.crack_weight", crack_weight_);
   w.put("flow.pressure", pressure_);
   w.put("flow.totals", std::vector<double>{totals_.time, totals_.injected, totals_.storage, totals_.deformation,
                                            totals_.outflow, static_cast<double>(totals_.n_steps)});
@@ -349,8 +359,10 @@ void FlowNetwork::restore_state(core::StateReader& r) {
   if (triangle_area_.size() != n_triangles_) fail("flow.triangle_area");
   if (base_conductance_.size() != static_cast<Eigen::Index>(connections_.size())) fail("flow.base_conductance");
   r.get("flow.borehole_volume", borehole_volume_);
-  r.get("flow.broken", broken_);
-  if (broken_.size() != connections_.size()) fail("flow.broken");
+  r.get("flow.crack_weight", crack_weight_);
+  if (crack_weight_.size() != static_cast<Eigen::Index>(connections_.size())) fail("flow.crack_weight");
+  if (!((crack_weight_.array() >= 0.0).all() && (crack_weight_.array() <= 1.0).all()))
+    throw InputError(r.source() + ": at 'flow.crack_weight': a weight outside [0, 1]");
   r.get("flow.pressure", pressure_);
   if (pressure_.size() != n_unknowns()) fail("flow.pressure");
   std::vector<double> totals;
@@ -417,7 +429,8 @@ Eigen::VectorXd FlowNetwork::deformation(const Eigen::VectorXd& volume_change) c
                                                          : Eigen::VectorXd::Zero(n);
   if (parameters_.crack_coupling == CrackCoupling::full && volume_change.size() > 0)
     for (std::size_t e = 0; e < connections_.size(); ++e) {
-      if (!broken_[e]) continue;  // a crack's triangles: the caller's volume is already the crack's (weight 1)
+      // A crack's triangles: the caller's volume is already the crack's (weight 1).
+      if (!(crack_weight_[static_cast<Eigen::Index>(e)] > 0.0)) continue;
       for (const int u : {connections_[e].s, connections_[e].t})
         if (u >= 0 && u < n_triangles_) deformation[u] = volume_change[u];
     }

@@ -107,6 +107,13 @@ struct CouplingOptions {
   int max_iterations = 100;
   /// When beams are checked for failure. Default every_pass (the paper's Fig. 5).
   FractureCheck fracture_check = FractureCheck::every_pass;
+  /// Events (breaks or teeth) taken at one check before the coupling solves again; 0: every beam
+  /// that fails under the check's loads, one after the other at fixed pressure (the paper's Fig. 5).
+  /// With 1 the fluid responds to each event before the next is judged: the events of a crack whose
+  /// compliance dwarfs its fluid's storage then come at the injected volume, not at a pressure the
+  /// opening has already relieved. Allowed: 0 ... kMaxEventsPerCheck.
+  int events_per_check = 0;
+  static constexpr int kMaxEventsPerCheck = 1000000;
   /// The first pass's guess. Default previous (the paper's loop).
   CouplingPredictor predictor = CouplingPredictor::previous;
   /// The flow solve's knowledge of fluid-filled cracks (CrackCoupling::full only). Default uniform_pressure.
@@ -371,8 +378,11 @@ class CoupledModel {
   void finish_step(double dt, bool converged, DualGraph dual, CoupledStepSummary& summary);  // accept or restore t^n
   Eigen::Matrix2Xd positions(const Eigen::VectorXd& u) const;
   Eigen::VectorXd unknown_volumes(const DualGraph& dual) const;  // V_s (areas), then V_h
+  // How much of each beam's facet is crack (FlowNetwork::set_crack_weights): 1 broken; with
+  // CrackCoupling::full and the saw-tooth law, the damage 1 - s of a softened beam; 0 otherwise.
+  Eigen::VectorXd crack_weights() const;
   // The volumes the flow charges: with CrackCoupling::full a crack triangle's is b of its area and 1 - b
-  // of its broken beams' openings at u (crack_opening_volumes); otherwise `volumes` as they are.
+  // of its cracked beams' weighted openings at u (crack_opening_volumes); otherwise `volumes` as they are.
   Eigen::VectorXd charged_volumes(Eigen::VectorXd volumes, const DualGraph& dual, const Eigen::VectorXd& u) const;
   // save_state without the run cursor: what step() restores after a failed attempt. The accepted
   // geometry (current_dual_, volume_) is not in it: only an accepted step changes it.

@@ -57,20 +57,24 @@ struct CouplingTerms {
 /// pressure sampled at the dual points gives -xi b V_i grad p on interior particles to round-off.
 /// Limits: pressures are cell constants; the signed dual lengths are used as they are (a slightly
 /// negative d_st of a nearly co-circular pair keeps the cells closed).
-/// b is the Biot coefficient (FlowParameters::b, 0 <= b <= 1). Beams flagged in `full_pressure`
-/// (empty, or one flag per beam: the broken ones with CrackCoupling::full) take 1 instead of b: a
-/// crack's faces carry the whole fluid pressure.
+/// b is the Biot coefficient (FlowParameters::b, 0 <= b <= 1). With `crack_weight` (empty, or one per
+/// beam: FlowNetwork::crack_weights with CrackCoupling::full) a beam's facet takes
+/// face_pressure_share(b, w) instead of b: a crack's faces carry the whole fluid pressure.
 Eigen::VectorXd pressure_forces(const Lattice& lattice, const DualGraph& dual, const Eigen::VectorXd& pressure,
-                                double b, const CouplingTerms& terms, const std::vector<bool>& full_pressure = {});
+                                double b, const CouplingTerms& terms, const Eigen::VectorXd& crack_weight = {});
 
-/// The fluid volume of the cracks per triangle (n_triangles): for each broken beam e (flags in
-/// `broken`, one per beam), its opening times its facet, d_e (u_j - u_i).n_e, half to each of its two
-/// triangles (undeformed d_e and n_e, as pressure_forces). Its change is work-conjugate to the full
-/// pressure pressure_forces puts on broken beams' faces (xi = 1): sum_s p_s dV_s = f . du for a
-/// pressure on the crack's triangles (tested), so that the flow charges the crack the volume the
-/// mechanics opens. A triangle's area would not be: an opening w of one beam changes the two
+/// The share of the fluid pressure on a facet that is a fraction w of crack (0 rock, 1 broken): the
+/// rock's b on the rest, the crack's 1 on w, b + (1 - b) w; exactly b and 1 at the ends.
+inline double face_pressure_share(double b, double w) { return w == 0.0 ? b : w == 1.0 ? 1.0 : b + (1.0 - b) * w; }
+
+/// The fluid volume of the cracks per triangle (n_triangles): for each beam e with crack weight w_e > 0
+/// (one per beam, FlowNetwork::crack_weights), w_e times its opening times its facet,
+/// w_e d_e (u_j - u_i).n_e, half to each of its two triangles (undeformed d_e and n_e, as
+/// pressure_forces). Its change is work-conjugate to the crack's share of the pressure on the facets
+/// (pressure_forces with b = 0, xi = 1: sum_s p_s dV_s = f . du, tested), so that the flow charges the
+/// crack the volume the mechanics opens. A triangle's area would not be: an opening w of one beam changes the two
 /// triangles' areas by w (h_k + h_l) / 2, 1.5 w d_e on an equilateral lattice.
-Eigen::VectorXd crack_opening_volumes(const Lattice& lattice, const DualGraph& dual, const std::vector<bool>& broken,
+Eigen::VectorXd crack_opening_volumes(const Lattice& lattice, const DualGraph& dual, const Eigen::VectorXd& crack_weight,
                                       const Eigen::VectorXd& u);
 
 /// Stiffness per beam of the undrained split's normal spring (Eq. 20 linearised, docs/coupling.md):

@@ -180,7 +180,7 @@ struct FlowSteadyState {
 ///     = -b dV_s + source_s dt,
 /// with A = beam length, d = DualGraph::flow_distance (the Voronoi segment, floored), the t-sum over
 /// interior beams and the borehole wall (p_t = p_h there), the u-sum over outer beams (p = 0), and
-/// iota_e = iota on broken beams, 1 otherwise. Every interior flux appears in two rows with opposite
+/// iota_e = iota on broken beams, 1 on intact ones (1 + w (iota - 1) for a crack weight w in between). Every interior flux appears in two rows with opposite
 /// signs, so the scheme conserves volume exactly up to round-off.
 ///
 /// Usage (Fig. 5): construct; optionally set_pressure(); per step and coupling iteration call
@@ -222,11 +222,15 @@ class FlowNetwork {
   /// Replaces the geometry (V_s^{n+1}, A/d) by that of a deformed configuration: `dual` must be
   /// build_dual_graph(lattice, positions). V_h is recomputed from `positions`.
   void update_geometry(const DualGraph& dual, const Eigen::Matrix2Xd& positions);
-  /// Marks broken beams (size n_beams); their conductance is multiplied by iota.
+  /// How much of each beam's Voronoi facet is crack (size n_beams, each in [0, 1]): 1 broken, 0 intact
+  /// rock, the damage 1 - s of a softening beam (CoupledModel). The facet conducts as rock and crack
+  /// side by side, (1 + w (iota - 1)) A/d; a facet with w > 0 joins its triangles to a crack.
+  void set_crack_weights(const Eigen::VectorXd& weights);
+  /// The same with weight 1 on the flagged beams and 0 elsewhere.
   void set_broken(const std::vector<bool>& broken);
-  const std::vector<bool>& broken() const { return broken_; }
-  /// The cracks as sets of unknowns: the triangles (and the borehole) joined by broken beams'
-  /// connections, one set per connected crack, in order of their first unknown.
+  const Eigen::VectorXd& crack_weights() const { return crack_weight_; }
+  /// The cracks as sets of unknowns: the triangles (and the borehole) joined by the connections of
+  /// beams with a crack weight above 0, one set per connected crack, in order of their first unknown.
   std::vector<std::vector<int>> crack_modes() const;
 
   /// Sets p^n (size n_unknowns), e.g. an initial condition. Does not change time or totals.
@@ -285,7 +289,7 @@ class FlowNetwork {
     int t = -1;
   };
 
-  double conductance(int beam) const;  // A/d times iota if broken
+  double conductance(int beam) const;  // A/d times 1 + w (iota - 1)
   double borehole_storage_coefficient() const;      // s_h of Eq. 16 per borehole_storage
   double borehole_deformation_coefficient() const;  // the weight of dV_h per borehole_deformation
   void assemble_values(double dt, double storage_scale, Eigen::VectorXd& values) const;
@@ -301,7 +305,7 @@ class FlowNetwork {
   Eigen::VectorXd triangle_area_;              // V_s^{n+1}
   Eigen::VectorXd base_conductance_;           // A/d_flow per beam
   double borehole_volume_ = 0.0;
-  std::vector<bool> broken_;
+  Eigen::VectorXd crack_weight_;               // per beam, 0 rock ... 1 broken
 
   Eigen::VectorXd pressure_;
   Eigen::VectorXd trial_pressure_;
