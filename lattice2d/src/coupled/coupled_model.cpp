@@ -392,6 +392,24 @@ Eigen::VectorXd CoupledModel::crack_weights() const {
     w[e] = states[static_cast<std::size_t>(e)] != BeamState::intact ? 1.0
            : wet_process_zone                                       ? 1.0 - mechanics_->stiffness_factor(e)
                                                                     : 0.0;
+  if (!wet_process_zone) return w;
+  // The fluid reaches a softened facet only along a crack: softened beams not joined to a broken one
+  // through cracked facets stay dry (a closed pocket would hold no fluid, only suction).
+  std::vector<char> fed(static_cast<std::size_t>(flow_->n_unknowns()), 0);
+  for (const std::vector<int>& mode : flow_->crack_modes(w)) {
+    bool has_crack = false;
+    for (int u : mode)
+      if (u < lattice().n_triangles())
+        for (int e : lattice().triangle_beams[static_cast<std::size_t>(u)])
+          if (states[static_cast<std::size_t>(e)] != BeamState::intact) has_crack = true;
+    if (has_crack)
+      for (int u : mode) fed[static_cast<std::size_t>(u)] = 1;
+  }
+  for (int e = 0; e < lattice().n_beams(); ++e) {
+    if (!(w[e] > 0.0 && w[e] < 1.0)) continue;
+    const int s = lattice().beam_triangles[static_cast<std::size_t>(e)][0];
+    if (s < 0 || !fed[static_cast<std::size_t>(s)]) w[e] = 0.0;
+  }
   return w;
 }
 

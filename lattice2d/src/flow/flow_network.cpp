@@ -248,7 +248,8 @@ void FlowNetwork::set_broken(const std::vector<bool>& broken) {
   set_crack_weights(weights);
 }
 
-std::vector<std::vector<int>> FlowNetwork::crack_modes() const {
+std::vector<std::vector<int>> FlowNetwork::crack_modes(const Eigen::VectorXd& weights) const {
+  assert(weights.size() == static_cast<Eigen::Index>(connections_.size()) && "one weight per beam");
   // Union-find over the cracked beams' connections (the outer surface is not an unknown).
   std::vector<int> parent(static_cast<std::size_t>(n_unknowns()));
   std::iota(parent.begin(), parent.end(), 0);
@@ -258,7 +259,7 @@ std::vector<std::vector<int>> FlowNetwork::crack_modes() const {
   };
   std::vector<char> on_crack(parent.size(), 0);
   for (std::size_t e = 0; e < connections_.size(); ++e) {
-    if (!(crack_weight_[static_cast<Eigen::Index>(e)] > 0.0)) continue;
+    if (!(weights[static_cast<Eigen::Index>(e)] > 0.0)) continue;
     const int s = connections_[e].s, t = connections_[e].t;
     if (s >= 0) on_crack[static_cast<std::size_t>(s)] = 1;
     if (t >= 0) on_crack[static_cast<std::size_t>(t)] = 1;

@@ -231,7 +231,9 @@ class FlowNetwork {
   const Eigen::VectorXd& crack_weights() const { return crack_weight_; }
   /// The cracks as sets of unknowns: the triangles (and the borehole) joined by the connections of
   /// beams with a crack weight above 0, one set per connected crack, in order of their first unknown.
-  std::vector<std::vector<int>> crack_modes() const;
+  std::vector<std::vector<int>> crack_modes() const { return crack_modes(crack_weight_); }
+  /// The same for other weights (size n_beams).
+  std::vector<std::vector<int>> crack_modes(const Eigen::VectorXd& weights) const;
 
   /// Sets p^n (size n_unknowns), e.g. an initial condition. Does not change time or totals.
   void set_pressure(const Eigen::VectorXd& pressure);
