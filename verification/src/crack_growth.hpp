@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "hm/lattice2d/fracture/fracture.hpp"
+#include "hm/lattice2d/fracture/sawtooth_law.hpp"
 
 namespace hm::verification {
 
@@ -27,7 +28,9 @@ struct CrackGrowthSpec {
   double notch_half_length = 0.05;  ///< notch |x| < this on y = 0
   double fracture_energy = 0.0;     ///< G_f / (E R); 0: the brittle law (crack-tip factor on)
   hm::lattice2d::SawtoothSpec teeth;  ///< the saw-tooth's shape
-  double strength_factor = 1.0;       ///< the saw-tooth law's f_t over the drawn strength (SawtoothLawOptions)
+  /// The saw-tooth law's f_t over the drawn strength (SawtoothLawOptions): by default the calibrated one a
+  /// run of the law uses.
+  double strength_factor = hm::lattice2d::calibrated_sawtooth_strength_factor();
   PressurisedFaces faces = PressurisedFaces::broken;
   double max_half_length = 0.3;     ///< stop once the crack's half length c passes this
   int max_events = 200000;
