@@ -171,8 +171,9 @@ Eigen::VectorXd CoupledModel::unknown_volumes(const DualGraph& dual) const {
 Eigen::VectorXd CoupledModel::charged_volumes(Eigen::VectorXd volumes, const DualGraph& dual,
                                               const Eigen::VectorXd& u) const {
   if (flow_->parameters().crack_coupling != CrackCoupling::full) return volumes;
-  // A crack triangle holds b of its area (the rock's pores) and 1 - b of its beams' openings: the
-  // crack volume whose change is conjugate to the full pressure on the broken faces (pressure_load).
+  // A crack triangle holds b of its area (the rock's pores) and 1 - b of its beams' openings, each
+  // weighted by its crack weight: the volume whose change is conjugate to the crack's share of the
+  // pressure on those faces (pressure_load).
   // The flow charges a crack triangle's change at weight 1 (FlowNetwork::deformation).
   const Eigen::VectorXd& crack = flow_->crack_weights();
   const double b = flow_->parameters().b;
