@@ -81,3 +81,38 @@ TEST_CASE("The saw-tooth refuses a bad spec or beam by name", "[lattice2d][fract
   CHECK_THROWS_AS(sawtooth_teeth(e_n, f_t, g_f, NAN), hm::InputError);
   CHECK_THROWS_AS(sawtooth_teeth(INFINITY, f_t, g_f, 0.01), hm::InputError);
 }
+
+TEST_CASE("The teeth's envelope followed continuously dissipates what a damage law does, G_f per unit facet at the end",
+          "[lattice2d][fracture]") {
+  for (double length : {0.002, 0.02, 0.1, 0.2}) {
+    INFO("L = " << length);
+    const LinearSoftening env = linear_softening(e_n, f_t, g_f, length);
+    CHECK(env.dissipated_density(env.ultimate_strain) * length == Approx(g_f).epsilon(1e-12));
+    CHECK(env.secant_factor(0.5 * env.peak_strain()) == 1.0);
+    CHECK(env.secant_factor(env.ultimate_strain) == 0.0);
+    if (length >= 2.0 * e_n * g_f / (f_t * f_t)) {  // no softening branch: breaks at the reduced strength
+      CHECK(env.strength == Approx(std::sqrt(2.0 * e_n * g_f / length)).epsilon(1e-15));
+      CHECK(env.ultimate_strain == env.peak_strain());
+      // At that strength the beam's stored triangle is G_f / L: what breaking it releases.
+      CHECK(0.5 * env.strength * env.peak_strain() * length == Approx(g_f).epsilon(1e-12));
+      continue;
+    }
+    CHECK(env.strength == f_t);
+    CHECK(env.dissipated_density(env.peak_strain()) == 0.0);
+    CHECK(env.ultimate_strain == Approx(2.0 * g_f / (f_t * length)).epsilon(1e-15));
+    // A damage law dissipates (1/2) E_n kappa^2 per unit drop of its secant factor (the energy the
+    // secant stores at fixed strain): its integral from eps_0, by the midpoint rule on 20000 intervals
+    // (error O(h^2), ~1e-9 relative here), is the closed form at every kappa.
+    const int n = 20000;
+    const double h = (env.ultimate_strain - env.peak_strain()) / n;
+    double integral = 0.0;
+    for (int i = 0; i < n; ++i) {
+      const double a = env.peak_strain() + i * h, b = a + h, mid = a + 0.5 * h;
+      integral += 0.5 * e_n * mid * mid * (env.secant_factor(a) - env.secant_factor(b));
+      if (i == n / 2 - 1 || i == n - 1) CHECK(integral == Approx(env.dissipated_density(b)).epsilon(1e-7));
+    }
+    // On the envelope: the secant's stress falls linearly from f_t to 0.
+    const double kappa = 0.5 * (env.peak_strain() + env.ultimate_strain);
+    CHECK(env.secant_factor(kappa) * e_n * kappa == Approx(0.5 * f_t).epsilon(1e-12));
+  }
+}

@@ -45,6 +45,33 @@ double first_tooth_strength(double axial_modulus, double tensile_strength, doubl
              : tensile_strength;
 }
 
+LinearSoftening linear_softening(double axial_modulus, double tensile_strength, double fracture_energy, double length) {
+  LinearSoftening env;
+  env.modulus = axial_modulus;
+  env.strength = first_tooth_strength(axial_modulus, tensile_strength, fracture_energy, length);
+  env.dissipation = fracture_energy / length;
+  env.ultimate_strain = is_snap_back(axial_modulus, tensile_strength, fracture_energy, length)
+                            ? env.peak_strain()
+                            : 2.0 * fracture_energy / (tensile_strength * length);
+  return env;
+}
+
+double LinearSoftening::secant_factor(double kappa) const {
+  const double eps_0 = peak_strain();
+  if (kappa >= ultimate_strain) return 0.0;  // first: a snap-back beam is spent at its peak
+  if (kappa <= eps_0) return 1.0;
+  return strength * (ultimate_strain - kappa) / (ultimate_strain - eps_0) / (modulus * kappa);
+}
+
+double LinearSoftening::dissipated_density(double kappa) const {
+  const double eps_0 = peak_strain();
+  if (kappa >= ultimate_strain) return dissipation;
+  if (kappa <= eps_0) return 0.0;
+  // The area under the envelope up to kappa, less the triangle the secant still stores.
+  const double stress = strength * (ultimate_strain - kappa) / (ultimate_strain - eps_0);
+  return 0.5 * strength * eps_0 + 0.5 * (strength + stress) * (kappa - eps_0) - 0.5 * stress * kappa;
+}
+
 double released_energy_density(const BeamTeeth& teeth, double axial_modulus) {
   double w = 0.0;
   for (std::size_t i = 0; i < teeth.strength.size(); ++i) {

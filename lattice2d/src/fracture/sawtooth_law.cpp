@@ -61,6 +61,11 @@ SawtoothLaw::SawtoothLaw(const Lattice& lattice, const DualGraph& dual, const Be
   }
 }
 
+LinearSoftening SawtoothLaw::envelope(int beam) const {
+  const auto k = static_cast<std::size_t>(beam);
+  return linear_softening(axial_modulus_[k], tensile_[k], options_.fracture_energy, lattice_.length[beam]);
+}
+
 const BeamTeeth& SawtoothLaw::teeth(int beam) {
   auto it = teeth_.find(beam);
   if (it == teeth_.end()) {

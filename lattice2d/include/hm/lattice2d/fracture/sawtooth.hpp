@@ -59,6 +59,32 @@ bool is_snap_back(double axial_modulus, double tensile_strength, double fracture
 /// sqrt(2 E_n G_f / L) for a beam too long for its G_f. No validation.
 double first_tooth_strength(double axial_modulus, double tensile_strength, double fracture_energy, double length);
 
+/// The linear envelope the teeth approximate, followed continuously (the teeth's limit of infinitely many,
+/// infinitely small steps): a damage law in the beam's own variables with the largest strain kappa it has
+/// reached as its history. Rises elastically to (eps_0 = f_t / E_n, f_t), falls linearly to zero stress at
+/// eps_u = 2 G_f / (f_t L); on the envelope the beam's secant is s(kappa) E_n, s = f(kappa) / (E_n kappa),
+/// and it has dissipated, per unit volume, the envelope's area up to kappa less the secant's stored
+/// triangle, G_f / L at eps_u. A beam too long for its G_f (is_snap_back) has no softening branch: it
+/// breaks at its first tooth's strength, at the same G_f / L.
+struct LinearSoftening {
+  double modulus = 0.0;          ///< E_n
+  double strength = 0.0;         ///< f_t (the energy-equivalent strength for a snap-back beam)
+  double ultimate_strain = 0.0;  ///< eps_u (= eps_0 for a snap-back beam)
+  double dissipation = 0.0;      ///< G_f / L, the energy per unit volume at eps_u
+
+  double peak_strain() const { return strength / modulus; }
+  /// The beam is spent at strain kappa: broken.
+  bool is_spent(double kappa) const { return kappa >= ultimate_strain; }
+  /// s(kappa) in (0, 1] for eps_0 <= kappa < eps_u (1 below eps_0).
+  double secant_factor(double kappa) const;
+  /// The energy dissipated per unit volume once the beam has reached strain kappa: 0 up to eps_0,
+  /// G_f / L from eps_u on.
+  double dissipated_density(double kappa) const;
+};
+
+/// The envelope of a beam (the arguments of sawtooth_teeth; no validation).
+LinearSoftening linear_softening(double axial_modulus, double tensile_strength, double fracture_energy, double length);
+
 /// The energy per unit volume the beam releases when taken through all its teeth:
 /// sum_i (1/2)(E_i - E_{i+1}) (f_i / E_i)^2, E_n = 0 after the last tooth.
 double released_energy_density(const BeamTeeth& teeth, double axial_modulus);

@@ -82,6 +82,8 @@ class SawtoothLaw {
   double section(int beam) const { return section_[static_cast<std::size_t>(beam)]; }
   /// Its axial stress for normal force N (BeamForce::normal): N / d.
   double axial_stress(int beam, double normal_force) const { return normal_force / section(beam); }
+  /// The linear envelope the beam's teeth approximate (sawtooth.hpp), for following it continuously.
+  LinearSoftening envelope(int beam) const;
   /// The current tooth (0 = intact beam at f_t, or at the reduced strength of a beam too long for its G_f).
   int tooth(int beam) const { return tooth_[static_cast<std::size_t>(beam)]; }
   /// The strength of the current tooth: the axial stress at which it gives way.
