@@ -260,6 +260,10 @@ GriffithConstants griffith_constants(double g_f) {
   return {e_prime, std::sqrt(e_prime * g_f)};
 }
 
+double griffith_half_length(double volume, const GriffithConstants& g) {
+  return std::pow(g.e_prime * volume / (2 * std::sqrt(std::numbers::pi) * g.k_c), 2.0 / 3.0);
+}
+
 namespace {
 
 // Least-squares slope of y against x.

@@ -90,6 +90,9 @@ struct GriffithConstants {
   double e_prime, k_c;
 };
 GriffithConstants griffith_constants(double g_f);
+/// Griffith's crack of volume V per unit thickness (over R^2) growing at K_c: V = 2 pi p c^2 / E' with
+/// p sqrt(pi c) = K_c gives c = (E' V / (2 sqrt(pi) K_c))^(2/3).
+double griffith_half_length(double volume, const GriffithConstants& g);
 
 /// What a growth shows over c in [kGrowthFitFrom, kGrowthFitTo]; energies per unit crack length are
 /// least-squares slopes against the crack's length 2c.
