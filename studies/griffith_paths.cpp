@@ -40,7 +40,7 @@ int main(int argc, char** argv) {
   for (int a = 1; a < argc; ++a) sizes.push_back(std::atoll(argv[a]));
   if (sizes.empty()) sizes = {6000, 15000};
   const double t_u = hm::lattice2d::StrengthSpec{}.tensile_strength;
-  const double g_f = env_or("HM_GRIFFITH_LCH", 0.04) * t_u * t_u;
+  const double g_f = env_or("HM_GRIFFITH_LCH", kGrowthCharacteristicLength) * t_u * t_u;
   const double k_c = griffith_constants(g_f).k_c;
   const std::string paths = env_or("HM_GRIFFITH_PATHS", std::string("teeth,continuous"));
   const bool wet = env_or("HM_GRIFFITH_FACES", std::string("wet")) == "wet";

@@ -28,9 +28,6 @@ using core::CsvWriter;
 
 std::string fmt(double x) { return format_number(x); }
 
-// l_ch = E G_f / T_u^2 = 0.04 R: the fit's shortest crack, c = 0.1, is 2.5 l_ch (c >= 2 l_ch), and the
-// beams (mean length 0.016 R at N = 1.5e4) are 2.5 times shorter than l_ch.
-constexpr double kCharacteristicLength = 0.04;
 struct Variant {
   std::string label;
   bool sawtooth;
@@ -42,7 +39,7 @@ BenchmarkResult griffith_growth(const BenchmarkContext& ctx) {
   BenchmarkResult res;
   const bool paper = ctx.tier == Tier::paper;
   const double t_u = l2::StrengthSpec{}.tensile_strength;
-  const double g_f = kCharacteristicLength * t_u * t_u;  // over E R, with E = 1
+  const double g_f = kGrowthCharacteristicLength * t_u * t_u;  // over E R, with E = 1
   const auto [e_prime, k_c] = griffith_constants(g_f);
   const std::vector<long long> sizes = paper ? std::vector<long long>{15000, 30000, 60000} : std::vector<long long>{15000};
   const std::vector<Variant> variants = {
@@ -58,7 +55,7 @@ BenchmarkResult griffith_growth(const BenchmarkContext& ctx) {
   CsvWriter csv(out, {"sawtooth", "wet", "continuous", "n_particles", "seed", "volume", "pressure", "half_length", "booked", "work",
                       "mechanical_work", "n_broken", "half_length_griffith", "k_over_k_c"});
   Table table{"Crack grown from a notch |x| < 0.05 by its volume in a free disk of radius 1: G_f/(E R) = " + fmt(g_f) +
-                  " (l_ch = " + fmt(kCharacteristicLength) + " R), K_c = sqrt(E' G_f) = " + fmt(k_c) +
+                  " (l_ch = " + fmt(kGrowthCharacteristicLength) + " R), K_c = sqrt(E' G_f) = " + fmt(k_c) +
                   "; measured over c in [0.1, 0.3]",
               {"law", "N", "growth points", "K = p sqrt(pi c) (median) / K_c", "booked energy per crack length / G_f",
                "cost (W - pV/2) per crack length / G_f", "rock's dissipation per crack length / G_f", "beams broken",
@@ -129,7 +126,7 @@ BenchmarkResult griffith_growth(const BenchmarkContext& ctx) {
       "triangle for a beam k in series with K_s). docs/fracture_law.md has the study against N and the strength "
       "factor (studies/griffith_paths.cpp).");
   res.figures.push_back({"verify_griffith_growth.py", "verify_griffith_growth.png",
-                         "Crack grown from a notch by its volume (l_ch = " + fmt(kCharacteristicLength) +
+                         "Crack grown from a notch by its volume (l_ch = " + fmt(kGrowthCharacteristicLength) +
                              " R, the law's calibrated strength): its half length against Griffith's c(V), and "
                              "K = p sqrt(pi c) against K_c = sqrt(E' G_f) along the growth (the fit's range shaded)."});
   core::close_checked(out, out_path);

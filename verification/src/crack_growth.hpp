@@ -80,6 +80,10 @@ struct CrackGrowthRun {
 /// The growth of spec.path (the teeth path for the brittle law).
 CrackGrowthRun grow_pressurised_crack(const CrackGrowthSpec& spec);
 
+/// The growth benchmarks' l_ch = E G_f / T_u^2 (over R): 0.04, so that the fit's shortest crack, c = 0.1,
+/// is 2.5 l_ch (c >= 2 l_ch) and the beams (mean length 0.016 R at N = 1.5e4) are 2.5 times shorter.
+constexpr double kGrowthCharacteristicLength = 0.04;
+
 /// The growth over which the toughness and energies are fitted: c from 0.1 to 0.3 (the notch's 0.05 left
 /// behind).
 constexpr double kGrowthFitFrom = 0.1, kGrowthFitTo = 0.3;
