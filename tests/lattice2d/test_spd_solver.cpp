@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <thread>
 #include <vector>
 
 #include <Eigen/CholmodSupport>
@@ -435,3 +436,24 @@ TEST_CASE("A solver restored from its saved state continues bitwise as the origi
     }
   }
 }
+
+TEST_CASE("Factorisations in concurrent threads give the bits of one alone (METIS's ordering is not thread-safe)",
+          "[lattice2d]") {
+  const TestSystem s = make_system(3000);
+  const auto solve_alone = [&] {
+    CholmodSolver solver;  // nested dissection: METIS's node bisection, seeded from a global generator
+    solver.compute(s.A);
+    return Eigen::VectorXd(solver.solve(s.b));
+  };
+  const Eigen::VectorXd alone = solve_alone();
+  int differing = 0;
+  for (int round = 0; round < 8; ++round) {
+    std::vector<Eigen::VectorXd> x(4);
+    std::vector<std::thread> threads;
+    for (std::size_t k = 0; k < x.size(); ++k) threads.emplace_back([&, k] { x[k] = solve_alone(); });
+    for (std::thread& t : threads) t.join();
+    for (const Eigen::VectorXd& xk : x) differing += xk != alone;
+  }
+  CHECK(differing == 0);
+}
+

@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <numeric>
 #include <stdexcept>
 #include <utility>
@@ -16,6 +17,7 @@
 #include "hm/core/input_error.hpp"
 #include "hm/core/state_archive.hpp"
 #include "hm/core/validation.hpp"
+#include "hm/lattice2d/linalg/spd_solver.hpp"
 #include "linalg/subtree_solve.hpp"
 
 namespace hm::lattice2d {
@@ -118,6 +120,7 @@ struct FlowNetwork::Solver {
     c.nmethods = 1;
     c.method[0].ordering = CHOLMOD_NESDIS;
     c.postorder = 1;
+    const std::lock_guard<std::mutex> lock(cholmod_analysis_mutex());  // METIS's generator (spd_solver.hpp)
     f.analyzePattern(matrix);
     if (c.status < CHOLMOD_OK)  // out of memory: nothing to factorise later
       throw std::runtime_error("flow matrix: cholmod_analyze failed (status " + std::to_string(c.status) + ")");

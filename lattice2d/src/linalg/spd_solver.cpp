@@ -177,6 +177,11 @@ void CholmodSolver::compute(const Matrix& A) {
   if (analyse(matrix_)) refactorize();
 }
 
+std::mutex& cholmod_analysis_mutex() {
+  static std::mutex m;
+  return m;
+}
+
 bool CholmodSolver::analyse(const Matrix& A) {
   cholmod_common* c = impl_->c();
   c->final_ll = 0;
@@ -202,7 +207,10 @@ bool CholmodSolver::analyse(const Matrix& A) {
   impl_->factor.reset();
   impl_->symbolic.reset();
   SparsePtr S = impl_->to_cholmod_lower(A);
-  if (S) impl_->symbolic.reset(cholmod_analyze(S.get(), c));
+  if (S) {
+    const std::lock_guard<std::mutex> lock(cholmod_analysis_mutex());
+    impl_->symbolic.reset(cholmod_analyze(S.get(), c));
+  }
   if (!impl_->symbolic) {
     report_.info = Eigen::NumericalIssue;
     report_.message = "cholmod_analyze failed (status " + std::to_string(c->status) + ")";

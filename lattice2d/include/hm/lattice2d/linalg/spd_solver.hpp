@@ -16,6 +16,7 @@
 /// thrown. Dimensionless; the interface knows nothing about beams.
 #include <array>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <string_view>
 
@@ -146,6 +147,13 @@ class SpdSolver {
   Matrix matrix_;
   SpdSolveReport report_;
 };
+
+/// The lock every CHOLMOD symbolic analysis holds. Its nested-dissection and METIS orderings draw on
+/// METIS's process-wide random generator, which is not thread-safe: two analyses at once (two
+/// benchmarks of `hmlattice verify --jobs 2`) change each other's ordering, and with it the factor's
+/// round-off, so a run's bits would depend on what else the process was doing. The analysis is a small
+/// part of a factorisation; the numeric factorisations still run side by side.
+std::mutex& cholmod_analysis_mutex();
 
 /// CHOLMOD LDL' with cholmod_updown (SuiteSparse 5.12). One cholmod_common per solver; every CHOLMOD
 /// object is owned RAII. W's rows are permuted with the factor's ordering internally.
