@@ -1,6 +1,8 @@
 """Fig. 13 of Ulven & Sun (2017): radially averaged radial displacement of the fracturing lattice against
-the 1D model without fracture, Q = 0.01, iota = 1, b = 0.2 (left) and b = 0.8 (right); below, the
-borehole pressure history of both with the first break marked.
+the 1D model without fracture (the paper's Q = 0.01, iota = 1), b = 0.2 (left) and b = 0.8 (right); below,
+the borehole pressure history of both with the first break marked. Each column is titled with its run's
+setting from its config.toml (INCOMPLETE for a run that stopped early); the footer names the cases and
+the build.
 
 Reads a folder with runs.csv written by the lattice2d.fig12 benchmarks (run folders as `hmlattice run`
 writes them: radial.csv, series.csv, breakdown.csv; 1D folders as `hmlattice fdm1d` writes them:
@@ -98,7 +100,8 @@ def main():
             state = "unbroken" if not (t_e >= t_e_first) else "fractured"
             ax.plot(er[t_e]["r_mean"], er[t_e]["u_r"], "-.", color="C2", lw=1.4,
                     label=f"2D, Eq. 16 borehole node, t* = {t_e:.3g} ({state})")
-        ax.set_title(f"{title}: u_r, lattice (solid) vs 1D without fracture (dashed)", fontsize=9)
+        ax.set_title(hmplot.run_title(folder, label) + "\n$u_r$: lattice (solid), 1D without fracture (dashed)",
+                     fontsize=8)
         ax.legend(loc="best", fontsize=7)
 
         # Bottom: p_h(t), 2D and 1D, first break marked.
@@ -130,10 +133,13 @@ def main():
         for t in times:
             ax.axvline(t, color="0.6", lw=0.6, ls="-", zorder=0)
         ax.set_xscale("log")
-        ax.set_xlabel("t* (grey: output times)")
-        ax.set_ylabel("borehole pressure p_h*")
+        ax.set_xlabel("$t^*$ (grey: output times)")
+        ax.set_ylabel("borehole pressure $p_h/E$")
         ax.set_title(f"{title}: borehole pressure", fontsize=9)
         ax.legend(loc="upper left", fontsize=7)
+    fig.suptitle("Fig. 13 of Ulven & Sun (2017)\neach column's setting from its config.toml", fontsize=9)
+    fig.set_layout_engine("tight", rect=(0, 0.04, 1, 1))  # room for the footer
+    hmplot.provenance_footer(fig, [run[1] for run in runs])
     hmplot.save(fig, args.out, "fig13_displacement_vs_1d")
 
 

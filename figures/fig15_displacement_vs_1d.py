@@ -1,6 +1,7 @@
 """Fig. 15 of Ulven & Sun (2017): radially averaged radial displacement of the fracturing lattice with
-fast flow in fractures (Q = 0.01, iota = 1e3) against the 1D model without fracture, b = 0.2 (left)
-and b = 0.8 (right), at Fig. 15's times.
+fast flow in fractures (the paper's Q = 0.01, iota = 1e3) against the 1D model without fracture, b = 0.2
+(left) and b = 0.8 (right), at Fig. 15's times. Each panel is titled with its run's setting from its
+config.toml (INCOMPLETE for a run that stopped early); the footer names the cases and the build.
 
 Reads radial.csv and breakdown.csv of the Fig. 14 runs (one run folder, or a folder of run folders: one
 panel each, in order of b) and, with --fdm1d, profiles.csv of `hmlattice fdm1d` at the same times (one
@@ -52,9 +53,13 @@ def main():
         ax = axes[0][col]
         n_times, n_compared = hmplot.draw_displacement_vs_1d(ax, folder, folder_1d, t_first)
         print(f"fig15: {title}: {n_times} output times, {n_compared} with a 1D profile")
-        ax.set_title(f"{title}: u_r, lattice (solid) vs 1D without fracture (dashed)", fontsize=9)
+        ax.set_title(hmplot.run_title(folder, label) + "\n$u_r$: lattice (solid), 1D without fracture (dashed)",
+                     fontsize=8)
         ax.legend(loc="best", fontsize=7)
-    fig.suptitle("Radially averaged u_r; Q = 0.01, iota = 1e3", fontsize=10)
+    fig.suptitle("Fig. 15 of Ulven & Sun (2017): radially averaged $u_r$\neach panel's setting from its config.toml",
+                 fontsize=9)
+    fig.set_layout_engine("tight", rect=(0, 0.05, 1, 1))  # room for the footer
+    hmplot.provenance_footer(fig, [folder for _, folder in runs])
     hmplot.save(fig, args.out, "fig15_displacement_vs_1d")
 
 

@@ -232,6 +232,12 @@ def run_setting(folder):
     return ", ".join(p for p in parts if p)
 
 
+def run_title(folder, label):
+    """A run's panel title: its setting (run_setting), or its label without a config.toml; marked
+    INCOMPLETE when it stopped early."""
+    return ("INCOMPLETE run: " if not run_is_complete(folder) else "") + (run_setting(folder) or label)
+
+
 def provenance_footer(fig, folders):
     """A small footer naming what the figure was drawn from: each run's case file (from the command
     that wrote it), grouped by the hmlattice version and commit that ran it, wrapped to the width."""
@@ -471,7 +477,7 @@ def draw_displacement_vs_1d(ax, folder, folder_1d, t_first):
         d = radial[t]
         state = "unbroken" if not (t >= t_first) else "fractured"
         ax.plot(d["r_mean"], d["u_r"], "-", marker=markers[k % len(markers)], ms=3.5, markevery=2,
-                color=colors[k], label=f"2D, t* = {t:.3g} ({state})")
+                color=colors[k], label=f"2D, $t^* = {t:.3g}$ ({state})")
         if profiles_1d is not None:
             match = [t1 for t1 in profiles_1d if abs(t1 - t) <= 1e-6 * t]
             if match:
@@ -480,8 +486,8 @@ def draw_displacement_vs_1d(ax, folder, folder_1d, t_first):
                 ax.plot(d1["r"], d1["u_r"], "--", color=colors[k], lw=1.2)
     if profiles_1d is not None:
         ax.plot([], [], "k--", lw=1.2, label="1D (fdm1d), no fracture")
-    ax.set_xlabel("r*")
-    ax.set_ylabel("radially averaged u_r*")
+    ax.set_xlabel("$r/R$")
+    ax.set_ylabel("radially averaged $u_r/R$")
     ax.set_xlim(0.0, 1.0)
     return len(times), n_compared
 

@@ -1,4 +1,5 @@
-"""The fracture-pressure figures (Figs. 12, 14, 16, 17) describe the run they draw: the setting comes from
+"""The fracture-pressure figures (Figs. 12, 14, 16, 17) and the displacement figures (13, 15) describe the
+run they draw: the setting comes from
 its config.toml (a Q = 0.003 run is titled Q = 0.003, not the paper's 0.01), an in-situ field is named, a
 run that stopped early is marked INCOMPLETE, a run without a snapshot is refused with one line, a
 folder of the wrong kind is refused with one line instead of a traceback, and the script says where it
@@ -87,6 +88,18 @@ class RunFigures(unittest.TestCase):
         self.assertNotEqual(r.returncode, 0)
         self.assertEqual(r.stderr.count("\n"), 1, r.stderr)
         self.assertIn("nothing to draw", r.stderr)
+
+    def test_the_displacement_figures_title_each_run_with_its_setting(self):
+        r = run([HMLATTICE, "run", "case.toml", "--out", "part15", "--stop-after-steps", "31"], self.dir.name)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        whole, part = (os.path.join(self.dir.name, name) for name in ("whole", "part15"))
+        self.assertEqual(hmplot.run_title(whole, "whole"), hmplot.run_setting(whole))
+        self.assertIn("$Q = 0.003$", hmplot.run_title(whole, "whole"))
+        self.assertTrue(hmplot.run_title(part, "part15").startswith("INCOMPLETE run: $Q = 0.003$"))
+        for data in ("whole", "part15"):
+            r = self.script("fig15_displacement_vs_1d.py", data, "fig15_" + data)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertIn(f"wrote fig15_{data}/fig15_displacement_vs_1d.png and .pdf\n", r.stdout)
 
     def test_a_folder_of_another_kind_is_one_line(self):
         r = self.script("fig10_fdm1d_pressure_displacement.py", "whole", "fig10")
