@@ -264,19 +264,15 @@ double griffith_half_length(double volume, const GriffithConstants& g) {
   return std::pow(g.e_prime * volume / (2 * std::sqrt(std::numbers::pi) * g.k_c), 2.0 / 3.0);
 }
 
-namespace {
-
-// Least-squares slope of y against x.
-double slope(const std::vector<double>& x, const std::vector<double>& y) {
+LineFit fit_line(const std::vector<double>& x, const std::vector<double>& y) {
   const double n = static_cast<double>(x.size());
   double mx = 0, my = 0;
   for (std::size_t k = 0; k < x.size(); ++k) mx += x[k] / n, my += y[k] / n;
   double sxy = 0, sxx = 0;
   for (std::size_t k = 0; k < x.size(); ++k) sxy += (x[k] - mx) * (y[k] - my), sxx += (x[k] - mx) * (x[k] - mx);
-  return sxx > 0 ? sxy / sxx : 0.0;
+  const double slope = sxx > 0 ? sxy / sxx : 0.0;
+  return {my - slope * mx, slope};
 }
-
-}  // namespace
 
 GrowthMeasures measure_growth(const CrackGrowthRun& run) {
   GrowthMeasures g;
@@ -293,9 +289,9 @@ GrowthMeasures measure_growth(const CrackGrowthRun& run) {
   if (k.size() < 2) return g;
   std::sort(k.begin(), k.end());
   g.toughness = k[k.size() / 2];
-  g.booked = slope(length, booked);
-  g.released = slope(length, released);
-  g.rock = slope(length, rock);
+  g.booked = fit_line(length, booked).slope;
+  g.released = fit_line(length, released).slope;
+  g.rock = fit_line(length, rock).slope;
   return g;
 }
 

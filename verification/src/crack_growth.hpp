@@ -98,6 +98,12 @@ GriffithConstants griffith_constants(double g_f);
 /// p sqrt(pi c) = K_c gives c = (E' V / (2 sqrt(pi) K_c))^(2/3).
 double griffith_half_length(double volume, const GriffithConstants& g);
 
+/// The least-squares line y = intercept + slope x (slope 0 for fewer than two distinct x).
+struct LineFit {
+  double intercept, slope;
+};
+LineFit fit_line(const std::vector<double>& x, const std::vector<double>& y);
+
 /// What a growth shows over c in [kGrowthFitFrom, kGrowthFitTo]; energies per unit crack length are
 /// least-squares slopes against the crack's length 2c.
 struct GrowthMeasures {
