@@ -37,13 +37,15 @@ def main():
             continue
         _, folder = runs[k]
         t, path = hmplot.vtk_snapshots(folder)[-1]
-        hmplot.draw_pressure_snapshot(fig, ax, path, f"{next(panel)}: t* = {t:.3g}"
+        hmplot.draw_pressure_snapshot(fig, ax, path, f"{next(panel)}: $t^* = {t:.3g}$"
                                       + hmplot.fracture_counts(hmplot.fracture_summary_at(folder, t)))
         n_points = len(hmplot.read_snapshot(path)[0])
         ax.text(0.98, 0.02, f"{n_points}", transform=ax.transAxes, ha="right", va="bottom", fontsize=8)
     b, q, iota = (hmplot.run_physics(runs[0][1], key) for key in ("b", "Q", "iota"))
-    fig.suptitle(f"Pressure p* and broken beams per lattice resolution; Q = {q:g}, iota = {iota:g}, b = {b:g}",
-                 fontsize=10)
+    fig.suptitle(f"Fig. 19: pressure $p/E$ and broken beams per lattice resolution; $Q = {q:g}$, "
+                 f"$\\iota = {iota:g}$, $b = {b:g}$", fontsize=10)
+    fig.set_layout_engine("tight", rect=(0, 0.04, 1, 1))  # room for the footer
+    hmplot.provenance_footer(fig, [folder for _, folder in runs])
     hmplot.save(fig, args.out, "fig19_resolution_pressure")
     print(f"fig19: {len(runs)} of {len(runs) + skipped} combinations drawn ({skipped} incomplete or missing)")
 

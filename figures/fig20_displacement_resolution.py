@@ -35,13 +35,15 @@ def main():
         s = hmplot.fracture_summary_at(folder, t)
         fractures = f", {int(s['n_radial'])} radial fractures" if s is not None else ""
         ax.plot(radial[t]["r_mean"], radial[t]["u_r"], "-", marker="os^Dv<>"[k % 7], ms=3, markevery=2,
-                color=colors[k], label=f"N = {n:g}{fractures} (t* = {t:.3g})")
+                color=colors[k], label=f"$N = {n:g}${fractures} ($t^* = {t:.3g}$)")
     b, q, iota = (hmplot.run_physics(runs[0][1], key) for key in ("b", "Q", "iota"))
-    ax.set_xlabel("r*")
-    ax.set_ylabel("radially averaged u_r*")
+    ax.set_xlabel("$r/R$")
+    ax.set_ylabel("radially averaged $u_r/R$")
     ax.set_xlim(0.0, 1.0)
-    ax.set_title(f"u_r per lattice resolution; Q = {q:g}, iota = {iota:g}, b = {b:g}", fontsize=9)
+    ax.set_title(f"Fig. 20: $u_r$ per lattice resolution; $Q = {q:g}$, $\\iota = {iota:g}$, $b = {b:g}$", fontsize=9)
     ax.legend(loc="best", fontsize=7)
+    fig.set_layout_engine("tight", rect=(0, 0.06, 1, 1))  # room for the footer
+    hmplot.provenance_footer(fig, [folder for _, folder in runs])
     hmplot.save(fig, args.out, "fig20_displacement_resolution")
     print(f"fig20: {len(runs)} of {len(runs) + skipped} combinations drawn ({skipped} incomplete or missing)")
 
