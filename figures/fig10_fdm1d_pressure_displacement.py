@@ -24,8 +24,8 @@ for t, d in profiles.items():
     ax[0, 1].plot(d["r"], d["u_r"], label=f"t* = {t:g}")
 ax[0, 0].plot(steady["r"], steady["p"], "k--", label="steady, Eq. B3")
 ax[0, 1].plot(steady["r"], steady["u_r"], "k--", label="steady, Eq. B6 (corrected)")
-ax[0, 0].set(xlabel="r*", ylabel="p*", title="A  pressure")
-ax[0, 1].set(xlabel="r*", ylabel="u_r*", title="B  radial displacement")
+ax[0, 0].set(xlabel="$r/R$", ylabel="$p/E$", title="A  pressure")
+ax[0, 1].set(xlabel="$r/R$", ylabel="$u_r/R$", title="B  radial displacement")
 ax[0, 0].legend()
 
 t = probes["t"]
@@ -36,8 +36,8 @@ for c in columns:
     label = "r* = " + c[3:]
     ax[1, 0].plot(t, probes[c], label=label)
     ax[1, 1].plot(t[zoom], probes[c][zoom], label=label)
-ax[1, 0].set(xlabel="t*", ylabel="p*", title="C  pressure at the probes")
-ax[1, 1].set(xlabel="t*", ylabel="p*", title="D  start of C: transient negative pressure")
+ax[1, 0].set(xlabel="$t^*$", ylabel="$p/E$", title="C  pressure at the probes")
+ax[1, 1].set(xlabel="$t^*$", ylabel="$p/E$", title="D  start of C: transient negative pressure")
 ax[1, 1].axhline(0.0, color="k", lw=0.6)
 lo = min(np.min(probes[c][zoom]) for c in columns)
 ax[1, 1].set_ylim(1.5 * lo if lo < 0 else -1e-6, -2.0 * lo if lo < 0 else 1e-6)

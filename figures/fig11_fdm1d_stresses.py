@@ -23,6 +23,6 @@ for ax, (column, title) in zip(axes.flat, panels):
         ax.plot(d["r"], d[column], label=f"t* = {t:g}")
     ax.plot(steady["r"], steady[column], "k--", label="steady, Appendix B")
     ax.axhline(0.0, color="k", lw=0.5)
-    ax.set(xlabel="r*", title=title)
+    ax.set(xlabel="$r/R$", title=title)
 axes[0, 0].legend()
 hmplot.save(fig, args.out, "fig11_fdm1d_stresses")

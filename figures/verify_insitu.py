@@ -24,7 +24,7 @@ for k, (field, d) in enumerate(sorted(hmplot.group_by(hoop, "field").items())):
     left.plot(d["psi_deg"][order], d["sigma_theta_annulus"][order], "-", lw=1.2, color=colour,
               label=f"annulus, (S_H − S_h)/E = {field:.0f}e-4")
 left.axhline(2e-4, color="k", ls=":", lw=1, label="T_u")
-left.set(xlabel="angle from S_H [deg]", ylabel="wall σθ*  (at p_w = 0)",
+left.set(xlabel="angle from S_H [deg]", ylabel="wall $\\sigma_\\theta/E$ (at $p_w = 0$)",
          title="wall hoop stress: lattice particles (dots), finite annulus (lines)")
 left.legend(fontsize=8)
 
@@ -34,6 +34,6 @@ right.plot(dS, breakdown["p_b_lattice"], "o", label="lattice (3 seeds)")
 right.plot(dS[order], breakdown["p_b_annulus"][order], "k-", label="finite annulus, jacketed")
 right.plot(dS[order], breakdown["p_b_overread"][order], "k--", label="annulus with the wall over-read")
 right.plot(dS[order], breakdown["p_b_hubbert_willis"][order], "k:", label="Hubbert–Willis (Kirsch)")
-right.set(xlabel="(S_H − S_h)/E × 1e4  (mean stress 2e-4 E)", ylabel="breakdown p_w*", title="jacketed breakdown pressure")
+right.set(xlabel="(S_H − S_h)/E × 1e4  (mean stress 2e-4 E)", ylabel="breakdown $p_w/E$", title="jacketed breakdown pressure")
 right.legend(fontsize=8)
 hmplot.save(fig, args.out, "verify_insitu")

@@ -38,7 +38,7 @@ for k, ((label, folder), ax) in enumerate(zip(runs, axes)):
     phi = np.linspace(0, 2 * np.pi, 200)
     ax.plot(physics["R_i"] * np.cos(phi), physics["R_i"] * np.sin(phi), "k-", lw=0.8)
     ax.plot(np.cos(phi), np.sin(phi), "k-", lw=0.8)
-    ax.set(aspect="equal", xlim=(-1.05, 1.05), ylim=(-1.05, 1.05), xlabel="x*", ylabel="y*",
+    ax.set(aspect="equal", xlim=(-1.05, 1.05), ylim=(-1.05, 1.05), xlabel="$x/R$", ylabel="$y/R$",
            title=f"{label}\nS_H = {mech.get('S_H', 0):.1e}, S_h = {mech.get('S_h', 0):.1e}")
     fig.colorbar(points, ax=ax, shrink=0.7, label="t* of breaking")
     series = hmplot.read_csv(os.path.join(folder, "series.csv"))
@@ -46,7 +46,7 @@ for k, ((label, folder), ax) in enumerate(zip(runs, axes)):
     axes[-1].plot(series["t"], series["p_h"], color=colour, label=label)
     p_hw = 3 * mech.get("S_h", 0.0) - mech.get("S_H", 0.0) + physics["tensile_strength"]
     axes[-1].axhline(p_hw, color=colour, ls="--", lw=1)
-axes[-1].set(xscale="log", xlabel="t*", ylabel="p_h*", title="borehole pressure (dashed: Hubbert–Willis)")
+axes[-1].set(xscale="log", xlabel="$t^*$", ylabel="$p_h/E$", title="borehole pressure (dashed: Hubbert–Willis)")
 axes[-1].legend(fontsize=8)
 hmplot.provenance_footer(fig, [folder for _, folder in runs])
 hmplot.save(fig, args.out, "verify_insitu_injection")

@@ -25,8 +25,8 @@ for row, (outer, d) in enumerate(sorted(by_outer.items())):
         if k == len(hmplot.group_by(d, "n_particles")) - 1:
             axes[row][0].plot(dn["r_u"], dn["u_r_exact"], "k-", lw=1, label="Lamé (same averaging)")
             axes[row][1].plot(dn["r_sigma"], dn["sigma_theta_exact"], "k-", lw=1, label="Lamé (same averaging)")
-    axes[row][0].set(xlabel="r*", ylabel="u_r*", title=f"radial displacement, {label_outer} outer boundary")
-    axes[row][1].set(xlabel="r*", ylabel="σθ*", title=f"hoop stress, {label_outer} outer boundary")
+    axes[row][0].set(xlabel="$r/R$", ylabel="$u_r/R$", title=f"radial displacement, {label_outer} outer boundary")
+    axes[row][1].set(xlabel="$r/R$", ylabel="$\\sigma_\\theta/E$", title=f"hoop stress, {label_outer} outer boundary")
     axes[row][0].legend()
     axes[row][1].legend()
 hmplot.save(fig, args.out, "verify_lattice_lame")

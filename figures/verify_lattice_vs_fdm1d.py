@@ -37,7 +37,7 @@ for row, b in zip(axes, bs):
         d = h[n]
         ax.plot(d["t"], d["p_h"], "o" if k == 0 else "s", ms=3, mfc="C0" if k == 0 else "none", mec="C0" if k == 0 else "C3",
                 ls="none", label=f"lattice N = {n:.0f}")
-    ax.set(xscale="log", yscale="log", xlabel="t*", ylabel="p_h*", title=f"b = {b:g}: borehole pressure")
+    ax.set(xscale="log", yscale="log", xlabel="$t^*$", ylabel="$p_h/E$", title=f"b = {b:g}: borehole pressure")
     ax.legend(loc="upper left")
 
     ax = row[1]
@@ -47,7 +47,7 @@ for row, b in zip(axes, bs):
                 color="C0" if k == 0 else "C3", mfc="C0" if k == 0 else "none", label=f"N = {n:.0f}")
     ax.axhspan(-0.05, 0.05, color="0.85", zorder=0, label="±5%")
     ax.axvspan(t_window, first["t"].max(), color="C2", alpha=0.08, zorder=0, label=f"window t* ≥ {t_window:g}")
-    ax.set(xscale="log", xlabel="t*", ylabel="p_h / p_h,1D − 1", title=f"b = {b:g}: p_h relative to fdm1d")
+    ax.set(xscale="log", xlabel="$t^*$", ylabel="p_h / p_h,1D − 1", title=f"b = {b:g}: p_h relative to fdm1d")
     ax.set_yscale("symlog", linthresh=0.1, linscale=3.0)
     ax.set_yticks([-0.1, -0.05, 0.0, 0.05, 0.1, 1.0])
     ax.set_yticklabels(["−10%", "−5%", "0", "5%", "10%", "100%"])
@@ -68,8 +68,8 @@ for row, b in zip(axes, bs):
                 style = dict(ls="none", ms=4, marker="o" if k == 0 else "s", mec=c, mfc=c if k == 0 else "none")
                 row[2].plot(d2["r_mean"], d2["u_r"], **style)
                 row[3].plot(d2["r_mean"], d2["p"], **style)
-    row[2].set(xlabel="r*", ylabel="u_r*", title=f"b = {b:g}: shell-averaged u_r")
-    row[3].set(xlabel="r*", ylabel="p*", title=f"b = {b:g}: shell-averaged p")
+    row[2].set(xlabel="$r/R$", ylabel="$u_r/R$", title=f"b = {b:g}: shell-averaged u_r")
+    row[3].set(xlabel="$r/R$", ylabel="$p/E$", title=f"b = {b:g}: shell-averaged p")
     # Times in the p panel, line styles in the u_r panel; headroom so the legends clear the curves.
     row[2].plot([], [], "k-", label="fdm1d (lattice ν)")
     row[2].plot([], [], "k:", lw=1.0, label="fdm1d, ν = 0.25")
