@@ -138,8 +138,8 @@ def main():
         ax.set_title(f"{title}: borehole pressure", fontsize=9)
         ax.legend(loc="upper left", fontsize=7)
     fig.suptitle("Fig. 13 of Ulven & Sun (2017)\neach column's setting from its config.toml", fontsize=9)
-    fig.set_layout_engine("tight", rect=(0, 0.04, 1, 1))  # room for the footer
-    hmplot.provenance_footer(fig, [run[1] for run in runs])
+    footer = hmplot.provenance_footer(fig, [run[1] for run in runs])
+    fig.set_layout_engine("tight", rect=(0, footer + 0.01, 1, 1))  # room for the footer
     hmplot.save(fig, args.out, "fig13_displacement_vs_1d")
 
 

@@ -58,8 +58,8 @@ def main():
         ax.legend(loc="best", fontsize=7)
     fig.suptitle("Fig. 15 of Ulven & Sun (2017): radially averaged $u_r$\neach panel's setting from its config.toml",
                  fontsize=9)
-    fig.set_layout_engine("tight", rect=(0, 0.05, 1, 1))  # room for the footer
-    hmplot.provenance_footer(fig, [folder for _, folder in runs])
+    footer = hmplot.provenance_footer(fig, [folder for _, folder in runs])
+    fig.set_layout_engine("tight", rect=(0, footer + 0.01, 1, 1))  # room for the footer
     hmplot.save(fig, args.out, "fig15_displacement_vs_1d")
 
 

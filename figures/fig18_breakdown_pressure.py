@@ -55,7 +55,7 @@ def draw_limits(ax, limits, b, color, q_max):
     ax.axvline(q_min, ymax=0.05, color=color, linewidth=1.5)  # below it the 1D wall never fails
 
 
-def finish(ax, fig, args, limits, tensile, legend_outside=False):
+def finish(ax, fig, args, limits, tensile, title, folders=(), legend_outside=False):
     if limits:
         ax.plot([], [], "k--", linewidth=0.9, label="1D slow limit")
         ax.plot([], [], "k-.", linewidth=0.9, label="1D fast limit")
@@ -64,6 +64,10 @@ def finish(ax, fig, args, limits, tensile, legend_outside=False):
     ax.set_xscale("log")
     ax.set_xlabel("injection rate $Q$")
     ax.set_ylabel("breakdown pressure $p_h/E$")
+    ax.set_title(title, fontsize=8)
+    if folders:
+        footer = hmplot.provenance_footer(fig, folders)
+        fig.set_layout_engine("tight", rect=(0, footer + 0.01, 1, 1))  # room for the footer
     if legend_outside:  # the benchmark's three models fill the axes
         ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0)
     else:
@@ -110,7 +114,8 @@ def benchmark_figure(args):
     if any(r["flux_node"] == "1" for r in lattice):
         ax.plot([], [], "kx", label="lattice, 1D's flux node")
     tensile = float(next(iter(limits.values()))["tensile_strength"]) if limits else None
-    finish(ax, fig, args, limits, tensile, legend_outside=True)
+    finish(ax, fig, args, limits, tensile, "Fig. 18 of Ulven & Sun (2017): breakdown pressure against $Q$; lattice, "
+           "1D model and its limits", legend_outside=True)
     print(f"fig18: {len(lattice)} lattice runs, {len(oned)} 1D rates -> "
           f"{os.path.join(args.out, 'fig18_breakdown_pressure')}.png")
 
@@ -149,7 +154,14 @@ def main():
             draw_limits(ax, limits, b, line.get_color(), all_q[-1] * 2)
     complete = [r for r in rows if r["status"] == "complete"]
     tensile = hmplot.run_physics(os.path.join(args.data, "runs", complete[0]["name"]), "tensile_strength") if complete else None
-    finish(ax, fig, args, limits, tensile)
+    # The setting the sweep holds fixed, from its first complete run (Q and b are the axes and curves).
+    folders = [os.path.join(args.data, "runs", r["name"]) for r in complete]
+    config = hmplot.run_config(folders[0]) if folders else {}
+    iota, n = config.get("physics", {}).get("iota"), config.get("lattice", {}).get("n_particles")
+    fixed = ", ".join(part for part in (f"$\\iota = {iota:g}$" if iota is not None else "",
+                                        f"$N = {n}$" if n is not None else "") if part)
+    finish(ax, fig, args, limits, tensile, "Fig. 18 of Ulven & Sun (2017)" + (f"; {fixed}" if fixed else ""),
+           folders)
     print(f"fig18: {len(rows) - skipped} of {len(rows)} combinations drawn ({skipped} incomplete or without a break)"
           f" -> {os.path.join(args.out, 'fig18_breakdown_pressure')}.png")
 

@@ -44,8 +44,8 @@ def main():
     b, q, iota = (hmplot.run_physics(runs[0][1], key) for key in ("b", "Q", "iota"))
     fig.suptitle(f"Fig. 19: pressure $p/E$ and broken beams per lattice resolution; $Q = {q:g}$, "
                  f"$\\iota = {iota:g}$, $b = {b:g}$", fontsize=10)
-    fig.set_layout_engine("tight", rect=(0, 0.04, 1, 1))  # room for the footer
-    hmplot.provenance_footer(fig, [folder for _, folder in runs])
+    footer = hmplot.provenance_footer(fig, [folder for _, folder in runs])
+    fig.set_layout_engine("tight", rect=(0, footer + 0.01, 1, 1))  # room for the footer
     hmplot.save(fig, args.out, "fig19_resolution_pressure")
     print(f"fig19: {len(runs)} of {len(runs) + skipped} combinations drawn ({skipped} incomplete or missing)")
 

@@ -42,8 +42,8 @@ def main():
     ax.set_xlim(0.0, 1.0)
     ax.set_title(f"Fig. 20: $u_r$ per lattice resolution; $Q = {q:g}$, $\\iota = {iota:g}$, $b = {b:g}$", fontsize=9)
     ax.legend(loc="best", fontsize=7)
-    fig.set_layout_engine("tight", rect=(0, 0.06, 1, 1))  # room for the footer
-    hmplot.provenance_footer(fig, [folder for _, folder in runs])
+    footer = hmplot.provenance_footer(fig, [folder for _, folder in runs])
+    fig.set_layout_engine("tight", rect=(0, footer + 0.01, 1, 1))  # room for the footer
     hmplot.save(fig, args.out, "fig20_displacement_resolution")
     print(f"fig20: {len(runs)} of {len(runs) + skipped} combinations drawn ({skipped} incomplete or missing)")
 

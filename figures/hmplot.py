@@ -240,7 +240,8 @@ def run_title(folder, label):
 
 def provenance_footer(fig, folders):
     """A small footer naming what the figure was drawn from: each run's case file (from the command
-    that wrote it), grouped by the hmlattice version and commit that ran it, wrapped to the width."""
+    that wrote it), grouped by the hmlattice version and commit that ran it, wrapped to the width.
+    Returns the footer's height as a fraction of the figure's (0 without runs), for the layout to keep free."""
     builds = {}
     for folder in folders:
         prov = run_config(folder).get("provenance", {})
@@ -249,11 +250,13 @@ def provenance_footer(fig, folders):
         cases = builds.setdefault(f"hmlattice {prov.get('version', '?')} {prov.get('git_commit', '?')}", [])
         if case not in cases:
             cases.append(case)
-    if builds:
-        text = "drawn from: " + "; ".join(f"{', '.join(cases)} ({build})" for build, cases in builds.items())
-        width = int(fig.get_figwidth() * 22)  # characters of 6 pt text per inch, about
-        fig.text(0.01, 0.003, "\n".join(textwrap.wrap(text, width)), fontsize=6, color="0.35", ha="left",
-                 va="bottom")
+    if not builds:
+        return 0.0
+    text = "drawn from: " + "; ".join(f"{', '.join(cases)} ({build})" for build, cases in builds.items())
+    width = int(fig.get_figwidth() * 22)  # characters of 6 pt text per inch, about
+    lines = textwrap.wrap(text, width)
+    fig.text(0.01, 0.003, "\n".join(lines), fontsize=6, color="0.35", ha="left", va="bottom")
+    return len(lines) * 6 * 1.25 / 72 / fig.get_figheight()
 
 
 def read_break_log(path):
