@@ -13,6 +13,7 @@
 // "wet" (process zone pressurised by its damage, default) or "dry", HM_GRIFFITH_SEED lattice and strength
 // seed (default 1), HM_GRIFFITH_STEP and HM_GRIFFITH_TOL the continuous path's volume step and history
 // tolerance (defaults 0.005, 1e-3). Findings: docs/fracture_law.md, "Teeth or resolution".
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -24,7 +25,14 @@ namespace {
 
 double env_or(const char* name, double fallback) {
   const char* v = std::getenv(name);
-  return v ? std::strtod(v, nullptr) : fallback;
+  if (!v) return fallback;
+  char* end = nullptr;
+  const double x = std::strtod(v, &end);
+  if (*end != '\0' || !(x > 0.0 && std::isfinite(x))) {
+    std::fprintf(stderr, "study_griffith_paths: %s = %s, allowed: a number > 0, finite\n", name, v);
+    std::exit(2);
+  }
+  return x;
 }
 
 std::string env_or(const char* name, const std::string& fallback) {
@@ -37,27 +45,47 @@ std::string env_or(const char* name, const std::string& fallback) {
 int main(int argc, char** argv) {
   using namespace hm::verification;
   std::vector<long long> sizes;
-  for (int a = 1; a < argc; ++a) sizes.push_back(std::atoll(argv[a]));
+  for (int a = 1; a < argc; ++a) {
+    char* end = nullptr;
+    const long long n = std::strtoll(argv[a], &end, 10);
+    if (*end != '\0' || n < 100) {
+      std::fprintf(stderr, "study_griffith_paths: N = %s, allowed: an integer >= 100\n", argv[a]);
+      return 2;
+    }
+    sizes.push_back(n);
+  }
   if (sizes.empty()) sizes = {6000, 15000};
   const double t_u = hm::lattice2d::StrengthSpec{}.tensile_strength;
   const double g_f = env_or("HM_GRIFFITH_LCH", kGrowthCharacteristicLength) * t_u * t_u;
   const double k_c = griffith_constants(g_f).k_c;
   const std::string paths = env_or("HM_GRIFFITH_PATHS", std::string("teeth,continuous"));
-  const bool wet = env_or("HM_GRIFFITH_FACES", std::string("wet")) == "wet";
+  const std::string faces = env_or("HM_GRIFFITH_FACES", std::string("wet"));
+  if (faces != "wet" && faces != "dry") {
+    std::fprintf(stderr, "study_griffith_paths: HM_GRIFFITH_FACES = %s, allowed: wet, dry\n", faces.c_str());
+    return 2;
+  }
+  if (paths.find("teeth") == std::string::npos && paths.find("continuous") == std::string::npos) {
+    std::fprintf(stderr, "study_griffith_paths: HM_GRIFFITH_PATHS = %s, allowed: teeth, continuous or both\n",
+                 paths.c_str());
+    return 2;
+  }
+  const bool wet = faces == "wet";
+  // Every knob read (and refused) before anything is printed; the rest of the spec is the benchmark's.
+  CrackGrowthSpec base;
+  base.lattice_seed = base.strength_seed = static_cast<std::uint64_t>(env_or("HM_GRIFFITH_SEED", 1.0));
+  base.fracture_energy = g_f;
+  base.strength_factor = env_or("HM_GRIFFITH_KAPPA", base.strength_factor);
+  base.faces = wet ? PressurisedFaces::with_softening : PressurisedFaces::broken;
+  base.volume_step = env_or("HM_GRIFFITH_STEP", base.volume_step);
+  base.history_tolerance = env_or("HM_GRIFFITH_TOL", base.history_tolerance);
   std::printf("| path | faces | kappa | N | seed | K / K_c | booked / G_f | cost (W - pV/2) / G_f | rock / G_f | broken | solves | s |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (long long n : sizes)
     for (const std::string path : {"teeth", "continuous"}) {
       if (paths.find(path) == std::string::npos) continue;
-      CrackGrowthSpec spec;
+      CrackGrowthSpec spec = base;
       spec.n_particles = n;
-      spec.lattice_seed = spec.strength_seed = static_cast<std::uint64_t>(env_or("HM_GRIFFITH_SEED", 1.0));
-      spec.fracture_energy = g_f;
-      spec.strength_factor = env_or("HM_GRIFFITH_KAPPA", spec.strength_factor);
-      spec.faces = wet ? PressurisedFaces::with_softening : PressurisedFaces::broken;
       spec.path = path == "teeth" ? SofteningPath::teeth : SofteningPath::continuous;
-      spec.volume_step = env_or("HM_GRIFFITH_STEP", spec.volume_step);
-      spec.history_tolerance = env_or("HM_GRIFFITH_TOL", spec.history_tolerance);
       const CrackGrowthRun run = grow_pressurised_crack(spec);
       const GrowthMeasures m = measure_growth(run);
       std::printf("| %s | %s | %.3g | %lld | %llu | %.4f | %.4f | %.4f | %.4f | %d | %d | %.1f |\n", path.c_str(),
