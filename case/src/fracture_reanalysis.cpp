@@ -10,6 +10,7 @@
 #include "hm/core/file_output.hpp"
 #include "hm/core/toml_text.hpp"
 #include "hm/core/input_error.hpp"
+#include "hm/core/validation.hpp"
 #include "hm/core/result_folder.hpp"
 #include "hm/core/result_folder.hpp"
 #include "hm/lattice2d/fracture/failure.hpp"
@@ -64,7 +65,7 @@ std::string provenance_part(const std::string& config) {
 
 }  // namespace
 
-FractureReanalysis recompute_fracture_statistics(const std::filesystem::path& run_dir, lt::FractureLink link,
+FractureReanalysis recompute_fracture_statistics(const std::filesystem::path& run_dir, const StatisticsChange& change,
                                                  const std::string& command_line) {
   for (const char* name : {"config.toml", "breaks.csv", "fracture_summary.csv"})
     if (!std::filesystem::is_regular_file(run_dir / name))
@@ -83,8 +84,11 @@ FractureReanalysis recompute_fracture_statistics(const std::filesystem::path& ru
   const std::vector<double> times = snapshot_times(run_dir / "fracture_summary.csv");
 
   const lt::Lattice lattice = lt::generate_lattice(c.lattice);
-  lt::FractureStatisticsOptions options;
-  options.link = link;
+  lt::FractureStatisticsOptions& options = c.output.statistics;
+  if (change.link) options.link = *change.link;
+  if (change.arm_gap) options.arm_gap = *change.arm_gap;
+  if (!(options.arm_gap > 0.0 && options.arm_gap <= 1.0))
+    throw InputError("--arm-gap = " + core::format_value(options.arm_gap) + ", allowed: 0 < arm_gap <= 1");
   // The log names each beam's particles: a lattice that differs from the run's (another version of
   // the generator, an edited config) is caught here instead of giving wrong statistics.
   for (const lt::BreakEvent& ev : log) {
@@ -104,11 +108,10 @@ FractureReanalysis recompute_fracture_statistics(const std::filesystem::path& ru
     snapshots.push_back({t, lt::compute_fracture_statistics(lattice, broken, log, options)});
   }
 
-  c.output.fracture_link = link;
   const std::string provenance = provenance_part(text_of(run_dir / "config.toml"));
   const std::string config =
-      run_case_to_toml(c, "# fracture statistics recomputed with fracture_link = \"" + hm::core::name_of(link) +
-                              "\" by: " + core::toml_string(command_line) + " (" + make_provenance(command_line).utc_time + ")\n" +
+      run_case_to_toml(c, "# fracture statistics recomputed with fracture_link = \"" + hm::core::name_of(options.link) +
+                              "\", arm_gap = " + toml_real(options.arm_gap) + " by: " + core::toml_string(command_line) + " (" + make_provenance(command_line).utc_time + ")\n" +
                               provenance);
   lt::write_fracture_table(run_dir / "fractures.csv", snapshots);
   lt::write_fracture_summary(run_dir / "fracture_summary.csv", snapshots);

@@ -30,6 +30,7 @@ lt::FlowParameters RunCase::flow_parameters() const {
   flow.borehole_storage = borehole_storage;
   flow.borehole_deformation = borehole_deformation;
   flow.crack_coupling = crack_coupling;
+  flow.fracture_flow = fracture_flow;
   flow.reuse_factorisation = reuse_flow_factorisation;
   flow.refresh_after_refinements = flow_refresh_after_refinements;
   return flow;
@@ -116,6 +117,31 @@ CaseKeys<RunCase> make_run_case_keys() {
       .choice("crack_coupling", [](auto& c) -> auto& { return c.crack_coupling; },
               "the Biot coefficient of a crack: the rock's b on broken beams' triangles and segments (Eqs. 15, 17), "
               "or 1 (full: a fluid-filled void, docs/flow.md)")
+      .choice("fracture_flow", [](auto& c) -> auto& { return c.fracture_flow.law; },
+              "how a crack conducts: [physics] iota times the rock's A/d (Eq. 24; the crack's transmissivity then "
+              "scales with the beam length), or the rock's A/d plus crack_transmissivity / d (the same at every N; "
+              "docs/flow.md)")
+      .real("crack_transmissivity", [](auto& c) -> auto& { return c.fracture_flow.transmissivity; },
+            "0 <= value <= 1e12, finite; > 0 only with fracture_flow = \"transmissivity\"",
+            "T = k_f w / (k R), a crack's permeability times its aperture over the rock's permeability times R")
+      .check([](CaseTable& flow, CaseTable& root, RunCase& c) {
+        const double T = c.fracture_flow.transmissivity;
+        if (!(T >= 0.0 && T <= 1e12))
+          flow.fail("crack_transmissivity = " + core::format_value(T) +
+                    ", allowed: 0 <= value <= 1e12 (iota's bound in units of R: a 0.3 mm aperture at k_f ~ 1e-8 m^2 "
+                    "in a nanodarcy rock)");
+        if (c.fracture_flow.law == lt::FractureFlow::permeability && T != 0.0)
+          flow.fail("crack_transmissivity = " + core::format_value(T) +
+                    ", allowed: only with fracture_flow = \"transmissivity\" (iota sets the crack's conductance otherwise)");
+        const double iota = c.physics.parameters.iota;
+        if (c.fracture_flow.law == lt::FractureFlow::transmissivity && iota != 1.0) {
+          const std::string rule = " with [flow] fracture_flow = \"transmissivity\" (the crack's conductance is "
+                                   "crack_transmissivity's)";
+          if (c.physics.physical)
+            root.table("physics_si").fail("k_f = " + core::format_value(iota) + " k, allowed: k_f = k" + rule);
+          root.table("physics").fail("iota = " + core::format_value(iota) + ", allowed: 1" + rule);
+        }
+      })
       .boolean("reuse_factorisation", [](auto& c) -> auto& { return c.reuse_flow_factorisation; },
                "reuse the flow matrix's factor while the geometry changes little (iterative refinement)")
       .integer("refresh_after_refinements", [](auto& c) -> auto& { return c.flow_refresh_after_refinements; }, 0, 1000000,
@@ -284,13 +310,18 @@ CaseKeys<RunCase> make_run_case_keys() {
                "equal radial shells of radial.csv on [R_i, radial_max]")
       .real("radial_max", [](auto& c) -> auto& { return c.output.radial_max; }, "R_i < radial_max <= 1",
             "outer edge of the radial shells")
-      .choice("fracture_link", [](auto& c) -> auto& { return c.output.fracture_link; },
+      .choice("fracture_link", [](auto& c) -> auto& { return c.output.statistics.link; },
               "which broken beams form one fracture in fractures.csv")
+      .real("arm_gap", [](auto& c) -> auto& { return c.output.statistics.arm_gap; }, "0 < arm_gap <= 1",
+            "arms crossing the arm circle closer than this (over R, along it) count as one in fracture_summary.csv's "
+            "n_arms_fixed_gap (n_arms' gap is 3 mean beam lengths; docs/fracture_statistics.md)")
       .check([](CaseTable& out, CaseTable&, RunCase& c) {
         const double R_i = c.physics.parameters.R_i;
         if (!(c.output.radial_max > R_i && c.output.radial_max <= 1.0))
           out.fail("radial_max = " + core::format_value(c.output.radial_max) + ", allowed: R_i = " +
                    core::format_value(R_i) + " < radial_max <= 1");
+        if (!(c.output.statistics.arm_gap > 0.0 && c.output.statistics.arm_gap <= 1.0))
+          out.fail("arm_gap = " + core::format_value(c.output.statistics.arm_gap) + ", allowed: 0 < arm_gap <= 1");
         c.stepping.output_times = c.output.times;
       });
   return k;

@@ -87,7 +87,7 @@ RunRecorder::RunRecorder(const std::filesystem::path& dir, const RunCase& c)
       r_min_(c.lattice.domain == lt::DomainShape::annulus ? c.lattice.inner_radius : 0.0),
       dir_(dir),
       fracture_(c.fracture_enabled),
-      statistics_options_{c.output.fracture_link},
+      statistics_options_{c.output.statistics},
       sawtooth_(c.fracture_enabled && c.fracture_law == lt::FractureLaw::sawtooth),
       series_file_(core::open_for_writing(dir / "series.csv")),
       radial_file_(core::open_for_writing(dir / "radial.csv")) {
@@ -108,7 +108,7 @@ RunRecorder::RunRecorder(const std::filesystem::path& dir, const RunCase& c, con
       r_min_(c.lattice.domain == lt::DomainShape::annulus ? c.lattice.inner_radius : 0.0),
       dir_(dir),
       fracture_(c.fracture_enabled),
-      statistics_options_{c.output.fracture_link},
+      statistics_options_{c.output.statistics},
       sawtooth_(c.fracture_enabled && c.fracture_law == lt::FractureLaw::sawtooth),
       teeth_(model.tooth_log()) {
   std::vector<std::int64_t> sizes;

@@ -60,6 +60,7 @@ TEST_CASE("Bad 2D cases are rejected with one line naming table, key, value and 
            "case.toml: [coupling] predictor = 'quadratic', allowed: previous, linear");
   rejected(physics + "[output]\nfracture_link = \"beam\"\n",
            "case.toml: [output] fracture_link = 'beam', allowed: particle, triangle");
+  rejected(physics + "[output]\narm_gap = 0\n", "case.toml: [output] arm_gap = 0, allowed: 0 < arm_gap <= 1");
   rejected(physics + "[mechanics]\nouter = \"clamped\"\n", "case.toml: [mechanics] outer = 'clamped', allowed: free, fixed");
   rejected(physics + "[mechanics]\nsolver = \"lu\"\n", "case.toml: [mechanics] solver = 'lu', allowed: cholmod, pcg");
   rejected(physics + "[mechanics]\nS_H = 1e-4\nS_h = 2e-4\n",
@@ -81,6 +82,14 @@ TEST_CASE("Bad 2D cases are rejected with one line naming table, key, value and 
            "case.toml: [flow] borehole_deformation = 'half', allowed: biot, none, full");
   rejected(physics + "[flow]\ncrack_coupling = \"half\"\n",
            "case.toml: [flow] crack_coupling = 'half', allowed: biot, full");
+  rejected(physics + "[flow]\nfracture_flow = \"cubic\"\n",
+           "case.toml: [flow] fracture_flow = 'cubic', allowed: permeability, transmissivity");
+  rejected(physics + "[flow]\nfracture_flow = \"transmissivity\"\ncrack_transmissivity = -1\n",
+           "case.toml: [flow] crack_transmissivity = -1, allowed: 0 <= value <= 1e12");
+  rejected(physics + "[flow]\ncrack_transmissivity = 5\n",
+           "case.toml: [flow] crack_transmissivity = 5, allowed: only with fracture_flow = \"transmissivity\"");
+  rejected("[physics]\nQ = 0.1\nR_i = 0\niota = 1000\n[flow]\nfracture_flow = \"transmissivity\"\ncrack_transmissivity = 5\n",
+           "case.toml: [physics] iota = 1000, allowed: 1 with [flow] fracture_flow = \"transmissivity\"");
   rejected(physics + "[coupling]\nbroken_beam_spring = \"soft\"\n",
            "case.toml: [coupling] broken_beam_spring = 'soft', allowed: keep, drop");
   rejected(physics + "[flow]\nreuse_factorisation = 1\n", "case.toml: [flow] reuse_factorisation = ");
@@ -340,7 +349,7 @@ TEST_CASE("A fracturing borehole run writes the break log, breakdown and fractur
   CHECK(n_fractures(hm::test::slurp(dir.path / "run" / "fracture_summary.csv")) >= n_fractures(summary));
   const auto reconfigured = hm::test::slurp(dir.path / "run" / "config.toml");
   CHECK_THAT(reconfigured, Catch::Contains("fracture_link = \"triangle\""));
-  CHECK_THAT(reconfigured, Catch::Contains("# fracture statistics recomputed with fracture_link = \"triangle\" by: "));
+  CHECK_THAT(reconfigured, Catch::Contains("# fracture statistics recomputed with fracture_link = \"triangle\", arm_gap = 0.03 by: "));
   CHECK_THAT(reconfigured, Catch::Contains("[provenance]"));
   // Bad input: one line naming what is wrong, nothing changed.
   r2 = run_hmlattice("fractures run --link beam", dir.path);
@@ -350,6 +359,22 @@ TEST_CASE("A fracturing borehole run writes the break log, breakdown and fractur
   CHECK(r2.exit_code == 2);
   CHECK_THAT(r2.err, Catch::Contains("run folder = nowhere has no config.toml"));
   CHECK(hm::test::slurp(dir.path / "run" / "config.toml") == reconfigured);
+  // Arms counted with another fixed gap: only that count can change, and config.toml keeps the gap.
+  // A gap of the whole arm circle makes every crossing one arm.
+  r2 = run_hmlattice("fractures run --arm-gap 1", dir.path);
+  REQUIRE(r2.exit_code == 0);
+  const auto last_cell = [](const std::string& csv) {
+    const std::string row = csv.substr(csv.rfind('\n', csv.size() - 2) + 1);
+    return std::stoi(row.substr(row.rfind(',') + 1));
+  };
+  const auto regapped = hm::test::slurp(dir.path / "run" / "fracture_summary.csv");
+  CHECK(last_cell(regapped) <= 1);
+  CHECK(last_cell(summary) >= last_cell(regapped));
+  CHECK_THAT(hm::test::slurp(dir.path / "run" / "config.toml"), Catch::Contains("arm_gap = 1\n"));
+  CHECK_THAT(hm::test::slurp(dir.path / "run" / "config.toml"), Catch::Contains("fracture_link = \"triangle\""));
+  r2 = run_hmlattice("fractures run --arm-gap 0", dir.path);
+  CHECK(r2.exit_code == 2);
+  CHECK_THAT(r2.err, Catch::Contains("--arm-gap = 0, allowed: 0 < arm_gap <= 1"));
 }
 
 TEST_CASE("A key changed with --set is as the file would have it, validated like it, and kept in config.toml", "[case][cli]") {

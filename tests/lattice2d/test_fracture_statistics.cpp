@@ -222,11 +222,34 @@ TEST_CASE("Two cracks from one wall point are one fracture with two arms away fr
   FractureStatisticsOptions near;
   near.arm_radius_fraction = 0.02;
   CHECK(compute_fracture_statistics(lattice, broken, {}, near).n_arms == 1);
-  CHECK(count_crossings(lattice, broken, arm_radius(lattice, near)) == 1);
-  CHECK(count_crossings(lattice, broken, arm_radius(lattice, far)) == 2);
+  const double three_beams = arm_gap_of_beams(lattice);
+  CHECK(count_crossings(lattice, broken, arm_radius(lattice, near), three_beams) == 1);
+  CHECK(count_crossings(lattice, broken, arm_radius(lattice, far), three_beams) == 2);
   // A gap wider than the rays' separation at r = 0.79 merges the two arms.
-  CHECK(count_crossings(lattice, broken, arm_radius(lattice, far), 20.0) == 1);
-  CHECK(count_crossings(lattice, broken, 1.5) == 0);  // outside the domain
+  CHECK(count_crossings(lattice, broken, arm_radius(lattice, far), 20.0 * three_beams / 3.0) == 1);
+  CHECK(count_crossings(lattice, broken, 1.5, three_beams) == 0);  // outside the domain
+}
+
+TEST_CASE("The fixed gap counts arms by their distance in R, whatever the beam length", "[lattice2d][fracture_statistics]") {
+  // Two straight radial cracks from r = 0.3 out to the surface, 6 degrees apart (off the
+  // boundary particles' angles): 0.083 apart along
+  // the arm circle r = 0.79.
+  for (long long n : {3000LL, 12000LL}) {
+    const Lattice lattice = hm::test::make_lattice(DomainShape::annulus, n);
+    std::vector<bool> broken(static_cast<std::size_t>(lattice.n_beams()), false);
+    break_segment(lattice, broken, polar(0.3, 87.1), polar(1.1, 87.1));
+    break_segment(lattice, broken, polar(0.3, 93.1), polar(1.1, 93.1));
+    FractureStatisticsOptions options;
+    options.arm_radius_fraction = 0.75;
+    INFO("N = " << n << ", mean beam length " << lattice.length.mean());
+    const FractureStatistics s = compute_fracture_statistics(lattice, broken, {}, options);
+    CHECK(s.n_arms_fixed_gap == 2);  // 0.083 apart > the 0.03 gap at both N
+    options.arm_gap = 0.1;
+    CHECK(compute_fracture_statistics(lattice, broken, {}, options).n_arms_fixed_gap == 1);
+    // The beam-length gap merges them at N = 3000 (3 beams ~ 0.1) but not at 12000 (~0.05): the count
+    // that depends on N.
+    CHECK(s.n_arms == (n == 3000 ? 1 : 2));
+  }
 }
 
 TEST_CASE("Beams are connected through a shared particle, or only through a shared triangle when asked",
@@ -370,8 +393,8 @@ TEST_CASE("Fracture tables are written as CSV and bad options are rejected", "[l
   REQUIRE(summary.size() == 1 + 2);
   CHECK(summary[0] ==
         "t,n_broken,n_fractures,n_radial,n_radial_reaching_outer,n_secondary,n_arms,n_tensile,n_shear,"
-        "max_radial_extent,n_secondary_sizable");
-  CHECK(summary[1] == "0,0,0,0,0,0,0,0,0,0,0");
+        "max_radial_extent,n_secondary_sizable,n_arms_fixed_gap");
+  CHECK(summary[1] == "0,0,0,0,0,0,0,0,0,0,0,0");
   CHECK(summary[2].rfind("1.5," + std::to_string(snaps[1].stats.n_broken) + ",4,4,4,0,4,0,0,", 0) == 0);
   CHECK_FALSE(std::filesystem::exists(dir / "summary.csv.partial"));
   CHECK_THROWS_AS(write_fracture_summary(dir / "no_such_dir" / "summary.csv", snaps), std::runtime_error);
@@ -399,7 +422,10 @@ TEST_CASE("Fracture tables are written as CSV and bad options are rejected", "[l
   o.sizable_extent = -0.1;
   CHECK(message(o).rfind("fracture_statistics.sizable_extent = -0.1, allowed:", 0) == 0);
   CHECK_THROWS_AS(compute_fracture_statistics(lattice, std::vector<bool>(3, false)), hm::InputError);
-  CHECK_THROWS_AS(count_crossings(lattice, none, 0.0), hm::InputError);
+  o = {};
+  o.arm_gap = 0.0;
+  CHECK(message(o) == "fracture_statistics.arm_gap = 0, allowed: fracture_statistics.arm_gap > 0");
+  CHECK_THROWS_AS(count_crossings(lattice, none, 0.0, 0.03), hm::InputError);
 }
 
 TEST_CASE("Fracture statistics are deterministic and ordered by smallest beam", "[lattice2d][fracture_statistics]") {

@@ -42,6 +42,11 @@ void FlowParameters::validate() const {
   require_finite(E_over_Kw, "E_over_Kw");
   require_positive(E_over_Kw, "E_over_Kw");
   require_positive(iota, "iota");
+  if (fracture_flow.law != FractureFlow::permeability && fracture_flow.law != FractureFlow::transmissivity)
+    throw InputError("fracture_flow = " + std::to_string(static_cast<int>(fracture_flow.law)) +
+                     ", allowed: permeability, transmissivity");
+  require_finite(fracture_flow.transmissivity, "crack_transmissivity");
+  require_non_negative(fracture_flow.transmissivity, "crack_transmissivity");
   require_positive(time_step, "time_step");
   if (!(refinement_tolerance > 0.0 && refinement_tolerance < 1e-6))
     throw InputError("refinement_tolerance = " + format_value(refinement_tolerance) + ", allowed: 0 < value < 1e-6");
@@ -230,6 +235,7 @@ void FlowNetwork::update_geometry(const DualGraph& dual, const Eigen::Matrix2Xd&
          "one position per particle");
   triangle_area_ = dual.triangle_area;
   base_conductance_ = dual.conductance;
+  inverse_flow_distance_ = dual.flow_distance.cwiseInverse();
   borehole_volume_ = 0.0;
   for (const auto& [i, j] : wall_beams_)
     borehole_volume_ += 0.5 * (positions(0, j) * positions(1, i) - positions(1, j) * positions(0, i));
@@ -289,7 +295,10 @@ double FlowNetwork::conductance(int beam) const {
   const double c = base_conductance_[beam];
   // Rock and crack side by side on the facet; the ends exactly c and iota c.
   const double w = crack_weight_[beam];
-  return w == 0.0 ? c : w == 1.0 ? parameters_.iota * c : (1.0 + w * (parameters_.iota - 1.0)) * c;
+  if (w == 0.0) return c;
+  if (parameters_.fracture_flow.law == FractureFlow::transmissivity)
+    return c + w * parameters_.fracture_flow.transmissivity * inverse_flow_distance_[beam];
+  return w == 1.0 ? parameters_.iota * c : (1.0 + w * (parameters_.iota - 1.0)) * c;
 }
 
 double FlowNetwork::borehole_storage_coefficient() const {
@@ -343,6 +352,7 @@ void FlowNetwork::save_state(core::StateWriter& w) const {
   assert(!has_trial_ && "a state between steps");
   w.put("flow.triangle_area", triangle_area_);
   w.put("flow.base_conductance", base_conductance_);
+  w.put("flow.inverse_flow_distance", inverse_flow_distance_);
   w.put("flow.borehole_volume", borehole_volume_);
   w.put("flow.crack_weight", crack_weight_);
   w.put("flow.pressure", pressure_);
@@ -362,6 +372,10 @@ void FlowNetwork::restore_state(core::StateReader& r) {
   r.get("flow.base_conductance", base_conductance_);
   if (triangle_area_.size() != n_triangles_) fail("flow.triangle_area");
   if (base_conductance_.size() != static_cast<Eigen::Index>(connections_.size())) fail("flow.base_conductance");
+  r.get("flow.inverse_flow_distance", inverse_flow_distance_);
+  if (inverse_flow_distance_.size() != base_conductance_.size()) fail("flow.inverse_flow_distance");
+  if (!(inverse_flow_distance_.array() > 0.0).all() || !inverse_flow_distance_.allFinite())
+    throw InputError(r.source() + ": at 'flow.inverse_flow_distance': a value not positive and finite");
   r.get("flow.borehole_volume", borehole_volume_);
   r.get("flow.crack_weight", crack_weight_);
   if (crack_weight_.size() != static_cast<Eigen::Index>(connections_.size())) fail("flow.crack_weight");

@@ -17,6 +17,8 @@ namespace hm::lattice2d {
 void FractureStatisticsOptions::validate() const {
   hm::core::require_open(arm_radius_fraction, "fracture_statistics.arm_radius_fraction", 0.0, 1.0);
   hm::core::require_positive(arm_gap_beams, "fracture_statistics.arm_gap_beams");
+  hm::core::require_finite(arm_gap, "fracture_statistics.arm_gap");
+  hm::core::require_positive(arm_gap, "fracture_statistics.arm_gap");
   hm::core::require_non_negative(sizable_extent, "fracture_statistics.sizable_extent");
 }
 
@@ -77,10 +79,14 @@ double arm_radius(const Lattice& lattice, const FractureStatisticsOptions& optio
   return r_inner + options.arm_radius_fraction * (r_outer - r_inner);
 }
 
-int count_crossings(const Lattice& lattice, const std::vector<bool>& broken, double radius, double max_gap_beams) {
+double arm_gap_of_beams(const Lattice& lattice, const FractureStatisticsOptions& options) {
+  return options.arm_gap_beams * lattice.length.mean();
+}
+
+int count_crossings(const Lattice& lattice, const std::vector<bool>& broken, double radius, double max_gap) {
   require_one_flag_per_beam(lattice, broken);
   hm::core::require_positive(radius, "fracture_statistics.radius");
-  hm::core::require_positive(max_gap_beams, "fracture_statistics.arm_gap_beams");
+  hm::core::require_positive(max_gap, "fracture_statistics.arm_gap");
   std::vector<double> angles;  // where each straddling broken beam meets the circle, in [0, 2 pi)
   for (int e = 0; e < lattice.n_beams(); ++e) {
     if (!broken[static_cast<std::size_t>(e)]) continue;
@@ -102,7 +108,7 @@ int count_crossings(const Lattice& lattice, const std::vector<bool>& broken, dou
   std::sort(angles.begin(), angles.end());
   // Groups on a circle = gaps wider than the threshold, counted around (the wrap-around gap included);
   // no wide gap means one group covering the whole circle.
-  const double max_gap_angle = max_gap_beams * lattice.length.mean() / radius;
+  const double max_gap_angle = max_gap / radius;
   int n_wide = 0;
   for (std::size_t k = 0; k < angles.size(); ++k) {
     const double next = k + 1 < angles.size() ? angles[k + 1] : angles.front() + 2.0 * pi;
@@ -195,7 +201,8 @@ FractureStatistics compute_fracture_statistics(const Lattice& lattice, const std
   }
   stats.n_fractures = static_cast<int>(stats.fractures.size());
   stats.arm_radius = arm_radius(lattice, options);
-  stats.n_arms = count_crossings(lattice, broken, stats.arm_radius, options.arm_gap_beams);
+  stats.n_arms = count_crossings(lattice, broken, stats.arm_radius, arm_gap_of_beams(lattice, options));
+  stats.n_arms_fixed_gap = count_crossings(lattice, broken, stats.arm_radius, options.arm_gap);
   return stats;
 }
 

@@ -23,12 +23,13 @@ void write_fracture_table(const std::filesystem::path& path, const std::vector<F
 void write_fracture_summary(const std::filesystem::path& path, const std::vector<FractureSnapshot>& snapshots) {
   core::write_file_atomically(path, [&](std::ostream& out) {
     out << "t,n_broken,n_fractures,n_radial,n_radial_reaching_outer,n_secondary,n_arms,n_tensile,n_shear,"
-           "max_radial_extent,n_secondary_sizable\n";
+           "max_radial_extent,n_secondary_sizable,n_arms_fixed_gap\n";
     for (const FractureSnapshot& snap : snapshots) {
       const FractureStatistics& s = snap.stats;
       out << csv_number(snap.t) << ',' << s.n_broken << ',' << s.n_fractures << ',' << s.n_radial << ','
           << s.n_radial_reaching_outer << ',' << s.n_secondary << ',' << s.n_arms << ',' << s.n_tensile << ','
-          << s.n_shear << ',' << csv_number(s.max_radial_extent) << ',' << s.n_secondary_sizable << '\n';
+          << s.n_shear << ',' << csv_number(s.max_radial_extent) << ',' << s.n_secondary_sizable << ','
+          << s.n_arms_fixed_gap << '\n';
     }
   });
 }

@@ -31,8 +31,9 @@ struct RunOutput {
   int radial_bins = 50;
   /// Outer edge of the radial shells. Allowed: R_i < radial_max <= 1.
   double radial_max = 1.0;
-  /// Which broken beams form one fracture in fractures.csv ("particle" or "triangle").
-  hm::lattice2d::FractureLink fracture_link = hm::lattice2d::FractureStatisticsOptions{}.link;
+  /// How fractures.csv and fracture_summary.csv are counted: which broken beams form one fracture
+  /// ([output] fracture_link) and the arms' gap in R ([output] arm_gap); the rest at their defaults.
+  hm::lattice2d::FractureStatisticsOptions statistics;
 };
 
 /// [mechanics]' in-situ state of the rock before injection (docs/insitu.md): the far-field total
@@ -60,6 +61,8 @@ struct RunCase {
   hm::lattice2d::BoreholeDeformation borehole_deformation = hm::lattice2d::BoreholeDeformation::biot;
   /// [flow] crack_coupling: the Biot coefficient of broken beams' triangles and segments.
   hm::lattice2d::CrackCoupling crack_coupling = hm::lattice2d::CrackCoupling::biot;
+  /// [flow] fracture_flow and crack_transmissivity: how broken beams' segments conduct.
+  hm::lattice2d::FractureFlowSpec fracture_flow;
   bool reuse_flow_factorisation = hm::lattice2d::FlowParameters{}.reuse_factorisation;
   int flow_refresh_after_refinements = hm::lattice2d::FlowParameters{}.refresh_after_refinements;
   hm::lattice2d::CouplingOptions coupling;

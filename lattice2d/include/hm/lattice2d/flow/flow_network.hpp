@@ -56,6 +56,29 @@ constexpr auto enum_names(CrackCoupling) {
   return core::enum_table<CrackCoupling>({{CrackCoupling::biot, "biot"}, {CrackCoupling::full, "full"}});
 }
 
+/// How a crack (a broken beam's Voronoi segment) conducts.
+enum class FractureFlow {
+  /// iota times the rock's A/d (Eq. 24): the crack's transmissivity is iota k times the beam length,
+  /// so it falls with the beam length as N grows. The paper's choice; default.
+  permeability,
+  /// The rock's A/d plus T/d: a crack of its own transmissivity T (k_f w over k R, dimensionless) in
+  /// the facet beside the rock, the same whatever the beam length.
+  transmissivity,
+};
+constexpr auto enum_names(FractureFlow) {
+  return core::enum_table<FractureFlow>(
+      {{FractureFlow::permeability, "permeability"}, {FractureFlow::transmissivity, "transmissivity"}});
+}
+
+/// A crack's conduction: the law, and its transmissivity where the law has one.
+struct FractureFlowSpec {
+  FractureFlow law = FractureFlow::permeability;
+  /// T = k_f w / (k R): the crack's permeability times its aperture over the rock's permeability times
+  /// R, the flux along a unit pressure gradient per unit thickness, over the rock's per unit R.
+  /// Used with law = transmissivity. Allowed: finite, >= 0.
+  double transmissivity = 0.0;
+};
+
 /// Parameters of the flow network. Every default is set here; validate() checks each rule.
 struct FlowParameters {
   /// Q, dimensionless injection rate (Eq. 14, Q = mu q/(k E)), into the borehole node (annulus) or
@@ -71,9 +94,11 @@ struct FlowParameters {
   /// fluid volume stored per unit pressure over E, per unit hole volume). Default Table 1's
   /// E = 1e10 Pa over K_w = 2.2e9 Pa. Allowed: > 0, finite.
   double E_over_Kw = hm::analytic::table1_E_over_Kw;
-  /// iota = k_f/k, conductance factor of Voronoi segments crossing broken beams (Section 2.2).
-  /// Allowed: > 0, finite.
+  /// iota = k_f/k, conductance factor of Voronoi segments crossing broken beams (Section 2.2), with
+  /// fracture_flow.law = permeability. Allowed: > 0, finite.
   double iota = 1.0;
+  /// How broken beams' segments conduct: iota (the paper) or a transmissivity of the crack's own.
+  FractureFlowSpec fracture_flow;
   /// Delta t, the default time step of step() (Eq. 15). Allowed: > 0, finite.
   double time_step = 1e-5;
   /// Borehole storage (Eq. 16). Default: the paper's Eq. 16; see docs/flow.md.
@@ -180,8 +205,10 @@ struct FlowSteadyState {
 ///     = -b dV_s + source_s dt,
 /// with A = beam length, d = DualGraph::flow_distance (the Voronoi segment, floored), the t-sum over
 /// interior beams and the borehole wall (p_t = p_h there), the u-sum over outer beams (p = 0), and
-/// iota_e = iota on broken beams, 1 on intact ones (1 + w (iota - 1) for a crack weight w in between). Every interior flux appears in two rows with opposite
-/// signs, so the scheme conserves volume exactly up to round-off.
+/// iota_e = iota on broken beams, 1 on intact ones (1 + w (iota - 1) for a crack weight w in between);
+/// with FractureFlow::transmissivity the segment conducts (A_st + w T)/d_st instead. Every interior
+/// flux appears in two rows with opposite signs, so the scheme conserves volume exactly up to
+/// round-off.
 ///
 /// Usage (Fig. 5): construct; optionally set_pressure(); per step and coupling iteration call
 /// update_geometry() / set_broken() if the mechanics moved or broke something, solve(dt, dV), then
@@ -193,7 +220,7 @@ struct FlowSteadyState {
 ///
 /// Limits: the pattern is that of the initial triangulation (no re-meshing); p = 0 on the whole
 /// outer boundary (no other boundary conditions yet); at most one source (borehole or one point);
-/// fracture aperture is ignored (constant iota, as the paper); the borehole node has no volume of
+/// fracture aperture is ignored (constant iota as the paper, or a constant transmissivity); the borehole node has no volume of
 /// its own unless borehole_storage says so.
 class FlowNetwork {
  public:
@@ -224,7 +251,8 @@ class FlowNetwork {
   void update_geometry(const DualGraph& dual, const Eigen::Matrix2Xd& positions);
   /// How much of each beam's Voronoi facet is crack (size n_beams, each in [0, 1]): 1 broken, 0 intact
   /// rock, the damage 1 - s of a softening beam (CoupledModel). The facet conducts as rock and crack
-  /// side by side, (1 + w (iota - 1)) A/d; a facet with w > 0 joins its triangles to a crack.
+  /// side by side, (1 + w (iota - 1)) A/d or (A + w T)/d; a facet with w > 0 joins its triangles to a
+  /// crack.
   void set_crack_weights(const Eigen::VectorXd& weights);
   /// The same with weight 1 on the flagged beams and 0 elsewhere.
   void set_broken(const std::vector<bool>& broken);
@@ -291,7 +319,7 @@ class FlowNetwork {
     int t = -1;
   };
 
-  double conductance(int beam) const;  // A/d times 1 + w (iota - 1)
+  double conductance(int beam) const;  // (1 + w (iota - 1)) A/d, or (A + w T)/d
   double borehole_storage_coefficient() const;      // s_h of Eq. 16 per borehole_storage
   double borehole_deformation_coefficient() const;  // the weight of dV_h per borehole_deformation
   void assemble_values(double dt, double storage_scale, Eigen::VectorXd& values) const;
@@ -306,6 +334,7 @@ class FlowNetwork {
   std::vector<std::array<int, 2>> wall_beams_;  // particle pairs of the borehole wall
   Eigen::VectorXd triangle_area_;              // V_s^{n+1}
   Eigen::VectorXd base_conductance_;           // A/d_flow per beam
+  Eigen::VectorXd inverse_flow_distance_;      // 1/d_flow per beam: a crack's T/d is T times it
   double borehole_volume_ = 0.0;
   Eigen::VectorXd crack_weight_;               // per beam, 0 rock ... 1 broken
 

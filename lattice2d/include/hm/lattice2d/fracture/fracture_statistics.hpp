@@ -47,6 +47,11 @@ struct FractureStatisticsOptions {
   /// about one beam length wide; 3 absorbs that and a slight crack inclination without merging cracks
   /// a few beams apart. Allowed: arm_gap_beams > 0.
   double arm_gap_beams = 3.0;
+  /// The same gap as an arc length over R, for n_arms_fixed_gap: a count whose merging distance does
+  /// not shrink with the beams (3 beam lengths are 36 degrees of the arm circle at N = 700, 3 at 1e5).
+  /// Our choice 0.03: 3 beam lengths at N ~ 1e4, the resolution the saw-tooth law's l_ch needs.
+  /// Allowed: arm_gap > 0, finite.
+  double arm_gap = 0.03;
   /// Secondary fractures at least this long (Fracture::extent, over R) are counted in
   /// n_secondary_sizable. Our choice 0.05: visible in a picture of the whole domain (1/40 of its
   /// width), whatever N; most secondary clusters at N = 1e5 are single broken beams (~0.005 long).
@@ -93,7 +98,8 @@ struct FractureStatistics {
   int n_tensile = 0;                 ///< summed over the fractures
   int n_shear = 0;
   double arm_radius = 0.0;           ///< radius of the arm-counting circle (options.arm_radius_fraction)
-  int n_arms = 0;                    ///< count_crossings at arm_radius
+  int n_arms = 0;                    ///< count_crossings at arm_radius, gap arm_gap_beams mean beam lengths
+  int n_arms_fixed_gap = 0;          ///< count_crossings at arm_radius, gap arm_gap (over R)
   double max_radial_extent = 0.0;    ///< largest r_max of a radial fracture, 0 if none
 };
 
@@ -102,12 +108,14 @@ double arm_radius(const Lattice& lattice, const FractureStatisticsOptions& optio
 
 /// Number of arms crossing the circle r = radius: the broken beams whose segment (particle i to j,
 /// undeformed) straddles the circle (one end at r < radius, the other at r >= radius), grouped by the
-/// angle where they cross it; crossings whose arc distance (circularly) is at most max_gap_beams mean
-/// beam lengths form one arm. 0 if no broken beam straddles the circle. Limits: an arm that crosses
-/// the circle twice (a crack curling back) counts twice; arms closer than the gap count once.
-/// Throws hm::InputError if broken is not one flag per beam or radius/max_gap_beams is not > 0.
-int count_crossings(const Lattice& lattice, const std::vector<bool>& broken, double radius,
-                    double max_gap_beams = FractureStatisticsOptions{}.arm_gap_beams);
+/// angle where they cross it; crossings whose arc distance (circularly) is at most max_gap (over R)
+/// form one arm. 0 if no broken beam straddles the circle. Limits: an arm that crosses the circle
+/// twice (a crack curling back) counts twice; arms closer than the gap count once.
+/// Throws hm::InputError if broken is not one flag per beam or radius/max_gap is not > 0.
+int count_crossings(const Lattice& lattice, const std::vector<bool>& broken, double radius, double max_gap);
+
+/// The gap of n_arms: arm_gap_beams mean beam lengths of `lattice`, over R.
+double arm_gap_of_beams(const Lattice& lattice, const FractureStatisticsOptions& options = {});
 
 /// Fractures of the broken pattern `broken` (one flag per beam) and their summary. `log` (optional)
 /// gives each broken beam's failure mode; events of beams not broken in `broken` are ignored (so a

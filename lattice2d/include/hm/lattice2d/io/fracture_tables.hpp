@@ -17,7 +17,7 @@ void write_fracture_table(const std::filesystem::path& path, const std::vector<F
 
 /// Writes one row per snapshot, via a temporary file renamed into place. Columns:
 ///   t, n_broken, n_fractures, n_radial, n_radial_reaching_outer, n_secondary, n_arms, n_tensile,
-///   n_shear, max_radial_extent, n_secondary_sizable.
+///   n_shear, max_radial_extent, n_secondary_sizable, n_arms_fixed_gap.
 /// Throws std::runtime_error naming the path if it cannot write.
 void write_fracture_summary(const std::filesystem::path& path, const std::vector<FractureSnapshot>& snapshots);
 
