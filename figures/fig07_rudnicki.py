@@ -62,6 +62,17 @@ def style(label):
     return COLOUR[outer], marker, size * (0.6 if outer == "fixed" else 1.0), f"{outer}, N = {n}, {text}"
 
 
+def setting(folders):
+    """Q and b of the runs from their config.toml (one value each when the runs share it, else every
+    value); the paper's Q = 0.1, b = 0.5 only for folders written without one."""
+    parts = []
+    for key, name in (("Q", "Q"), ("b", "b")):
+        values = sorted({v for v in (hmplot.run_physics(f, key) for f in folders) if v is not None})
+        if values:
+            parts.append(f"${name} = " + ", ".join(f"{v:g}" for v in values) + "$")
+    return ", ".join(parts) if parts else "Q = 0.1, b = 0.5 (no config.toml: the benchmark's setting)"
+
+
 args = hmplot.arguments(__doc__)
 if os.path.exists(os.path.join(args.data, "radial.csv")):
     folders = [args.data]
@@ -95,6 +106,9 @@ for folder in folders:
         elif not (np.allclose(a["p"], reference["p"]) and np.allclose(a["u_r"], reference["u_r"])):
             print(f"warning: {label}/analytic.csv differs from the first run's; the first is drawn")
 
+if not any(len(d["r_mean"]) for _, d in runs):
+    raise SystemExit(f"{args.data}: no radial shell at r* <= {R_MAX:g}, allowed: a point injection's run (Fig. 7 shows "
+                     "the source's neighbourhood; an annulus starts at its borehole)")
 for label, d in runs:
     colour, marker, size, text = style(label)
     marks = dict(linestyle="none", marker=marker, markersize=size, color=colour, markeredgewidth=1.1,
@@ -135,6 +149,9 @@ if reference is None:
 # One legend for both panels, as in the paper (same runs, same markers), where p* has decayed.
 ax[1].legend(loc="upper right")
 t_text = f"{t_shown:.1e}".replace("e-0", "e-").replace(".0e", "e")
-fig.suptitle(f"Fig. 7 — point injection into a disk, Q = 0.1, b = 0.5, $t^*$ = {t_text}; "
+print(f"fig07: {len(folders)} run(s), {setting(folders)}, t* = {t_text}")
+fig.suptitle(f"Fig. 7 — point injection into a disk, {setting(folders)}, $t^*$ = {t_text}; "
              "shaded: $r^*$ in [0.01, 0.05], dotted: ±10%", fontsize=10)
+footer = hmplot.provenance_footer(fig, folders)
+fig.set_layout_engine("tight", rect=(0, footer + 0.01, 1, 1))
 hmplot.save(fig, args.out, name)

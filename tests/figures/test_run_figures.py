@@ -1,5 +1,5 @@
-"""The fracture-pressure figures (Figs. 12, 14, 16, 17) and the displacement figures (13, 15) describe the
-run they draw: the setting comes from
+"""The fracture-pressure figures (Figs. 12, 14, 16, 17), the displacement figures (13, 15) and Fig. 7 describe
+the run they draw: the setting comes from
 its config.toml (a Q = 0.003 run is titled Q = 0.003, not the paper's 0.01), an in-situ field is named, a
 run that stopped early is marked INCOMPLETE, a run without a snapshot is refused with one line, a
 folder of the wrong kind is refused with one line instead of a traceback, and the script says where it
@@ -100,6 +100,21 @@ class RunFigures(unittest.TestCase):
             r = self.script("fig15_displacement_vs_1d.py", data, "fig15_" + data)
             self.assertEqual(r.returncode, 0, r.stderr)
             self.assertIn(f"wrote fig15_{data}/fig15_displacement_vs_1d.png and .pdf\n", r.stdout)
+
+    def test_fig7_is_titled_with_the_runs_setting(self):
+        r = run([HMLATTICE, "run", "case.toml", "--out", "disk", "--set", 'lattice.domain="disk"', "--set", "physics.R_i=0",
+                 "--set", "fracture.enabled=false", "--set", "mechanics.S_H=0", "--set", "mechanics.S_h=0",
+                 "--set", "output.times=[0.001]", "--set", "numerics.t_end=0.001"], self.dir.name)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        r = self.script("fig07_rudnicki.py", "disk", "fig07")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("fig07: 1 run(s), $Q = 0.003$, $b = 0.2$, t* = 1e-3\n", r.stdout)  # not the paper's 0.1, 0.5
+        self.assertIn("wrote fig07/fig07_rudnicki.png and .pdf\n", r.stdout)
+        # An annulus has no shell near a point source: one line, no traceback.
+        r = self.script("fig07_rudnicki.py", "whole", "fig07_annulus")
+        self.assertNotEqual(r.returncode, 0)
+        self.assertEqual(r.stderr.count("\n"), 1, r.stderr)
+        self.assertIn("no radial shell at r* <= 0.1", r.stderr)
 
     def test_a_folder_of_another_kind_is_one_line(self):
         r = self.script("fig10_fdm1d_pressure_displacement.py", "whole", "fig10")

@@ -24,6 +24,7 @@
 #include "hm/verification/benchmark.hpp"
 #include "hm/core/csv_writer.hpp"
 #include "hm/case/run_case.hpp"
+#include "hm/case/provenance.hpp"
 #include "hm/case/run_output.hpp"
 #include "report_writer.hpp"
 
@@ -103,6 +104,10 @@ RudnickiOutcome run_variant(const RudnickiVariant& v, const BenchmarkContext& ct
     recorder.record(m, s, out);
   });
   recorder.finish();
+  // The resolved case beside the results, as `hmlattice run` writes it: the figure reads its setting.
+  core::write_file_atomically(dir / "config.toml", [&](std::ostream& out) {
+    out << cases::run_case_to_toml(c, cases::to_toml(cases::make_provenance("hmlattice verify, run " + v.label)));
+  });
   RudnickiOutcome o;
   o.ok = run.is_ok();
   o.message = run.message;
