@@ -77,6 +77,7 @@ TEST_CASE("Bad 2D cases are rejected with one line naming table, key, value and 
            "case.toml: [coupling] psi = 1.3, allowed: 0 for split = drained");
   rejected(physics + "[coupling]\nxi = 0\n", "case.toml: [coupling] xi = 0, allowed: ");
   rejected(physics + "[coupling]\npressure_tolerance = 2\n", "case.toml: [coupling] pressure_tolerance = 2, allowed: ");
+  rejected(physics + "[coupling]\nbalance_tolerance = 0\n", "case.toml: [coupling] balance_tolerance = 0, allowed: 1e-10 <= ");
   rejected(physics + "[coupling]\nmax_iterations = 0\n", "case.toml: [coupling] max_iterations = 0, allowed: ");
   rejected(physics + "[flow]\nborehole_deformation = \"half\"\n",
            "case.toml: [flow] borehole_deformation = 'half', allowed: biot, none, full");

@@ -25,6 +25,9 @@ void CouplingOptions::validate() const {
     if (!(value >= kMinCouplingTolerance && value < 1.0))
       throw hm::InputError(std::string("coupling.") + name + " = " + format_value(value) + ", allowed: " +
                            format_value(kMinCouplingTolerance) + " <= " + name + " < 1");
+  if (!(balance_tolerance >= kMinCouplingTolerance && balance_tolerance <= 1.0))
+    throw hm::InputError("coupling.balance_tolerance = " + format_value(balance_tolerance) + ", allowed: " +
+                         format_value(kMinCouplingTolerance) + " <= balance_tolerance <= 1");
   require_at_least(max_iterations, "coupling.max_iterations", 1);
   if (events_per_check < 0 || events_per_check > kMaxEventsPerCheck)
     throw hm::InputError("coupling.events_per_check = " + std::to_string(events_per_check) + ", allowed: 0 ... " +
@@ -304,7 +307,8 @@ bool CoupledModel::iterate(double dt, PassGuess& guess, DualGraph& dual, Coupled
     if (pass_observer_) pass_observer_(k, p, u);
     relaxation_->next_guess(guess.pressure, guess.displacement, p, u, breaks_this_pass > 0);
     const bool unchanged = summary.pressure_residual <= options_.pressure_tolerance &&
-                           summary.displacement_residual <= options_.displacement_tolerance;
+                           summary.displacement_residual <= options_.displacement_tolerance &&
+                           summary.flow.balance_error <= options_.balance_tolerance;
     if (breaks_this_pass > 0 || !unchanged) continue;
     if (fracture_ && !check_every_pass) {
       // A coupled equilibrium: break what fails under its forces, then converge again from the
@@ -482,7 +486,8 @@ void CoupledModel::finish_step(double dt, bool converged, DualGraph dual, Couple
       summary.message = "coupling at t = " + hm::core::format_value(summary.time) + ": not converged after " +
                         std::to_string(options_.max_iterations) + " passes (max_iterations); pressure residual " +
                         hm::core::format_value(summary.pressure_residual) + ", displacement residual " +
-                        hm::core::format_value(summary.displacement_residual);
+                        hm::core::format_value(summary.displacement_residual) + ", volume balance error " +
+                        hm::core::format_value(summary.flow.balance_error);
     }
   }
   if (summary.is_ok()) {
