@@ -22,7 +22,10 @@
 ///                  particles, or triangles: [output] fracture_link; fracture_statistics.hpp): kind
 ///                  radial|secondary, extent, angle, modes;
 ///   fracture_summary.csv  per output time: counts of fractures, radial ones, those reaching the outer
-///                  boundary, secondary ones, arms crossing r = R_i + (1 - R_i)/4, tensile/shear breaks.
+///                  boundary, secondary ones, arms crossing r = R_i + (1 - R_i)/4 (gaps of 3 beam lengths
+///                  and of [output] arm_gap), tensile/shear breaks;
+///   fracture_pressure.csv  per output time: the fluid in the fractures and the backflows
+///                  (fracture_pressure.hpp's FracturePressure, one column per field).
 /// With [fracture] law = "sawtooth", also teeth.csv (break_log.hpp's write_tooth_log, load column
 /// "time"): every tooth that gave way, written when the run ends; and the VTK beam field
 /// stiffness_factor (1 intact, between 0 and 1 softened, 0 broken).
