@@ -364,10 +364,12 @@ def fracture_summary_at(folder, t):
 
 
 def fracture_counts(summary):
-    """The second title line of a snapshot panel: fracture_summary.csv's counts at that time."""
+    """The second title line of a snapshot panel: fracture_summary.csv's counts at that time (the
+    arms by the 3-beam gap, and by the fixed gap in R where the run wrote that count)."""
     if summary is None:
         return ""
-    return (f"\n{int(summary['n_radial'])} radial clusters, {int(summary['n_arms'])} arms, "
+    fixed = f" ({int(summary['n_arms_fixed_gap'])} by the fixed gap)" if "n_arms_fixed_gap" in summary else ""
+    return (f"\n{int(summary['n_radial'])} radial clusters, {int(summary['n_arms'])} arms{fixed}, "
             f"{int(summary['n_broken'])} broken")
 
 

@@ -70,6 +70,12 @@ class RunFigures(unittest.TestCase):
         for part in ("$Q = 0.003$", "$\\iota = 1000$", "$b = 0.2$", "$N = 600$", "seed 4",
                      "$S_H = 3 \\times 10^{-4}$", "$S_h = 10^{-4}$", "$\\theta_H = 30°$"):
             self.assertIn(part, setting)
+        # The panel's count line has both arm counts; a summary without the fixed-gap column (an older
+        # run's) only the one it has.
+        summary = hmplot.fracture_summary_at(os.path.join(self.dir.name, "whole"), 0.002)
+        self.assertRegex(hmplot.fracture_counts(summary), r"\d+ arms \(\d+ by the fixed gap\)")
+        del summary["n_arms_fixed_gap"]
+        self.assertNotIn("fixed gap", hmplot.fracture_counts(summary))
         r = self.script("fig12_fracture_pressure.py", "whole", "fig")
         self.assertEqual(r.returncode, 0, r.stderr)
         self.assertIn("fig12: b = 0.2: 2 snapshots\n", r.stdout)
