@@ -87,8 +87,8 @@ FractureReanalysis recompute_fracture_statistics(const std::filesystem::path& ru
   lt::FractureStatisticsOptions& options = c.output.statistics;
   if (change.link) options.link = *change.link;
   if (change.arm_gap) options.arm_gap = *change.arm_gap;
-  if (!(options.arm_gap > 0.0 && options.arm_gap <= 1.0))
-    throw InputError("--arm-gap = " + core::format_value(options.arm_gap) + ", allowed: 0 < arm_gap <= 1");
+  if (!lt::is_allowed_arm_gap(options.arm_gap))
+    throw InputError("--arm-gap = " + core::format_value(options.arm_gap) + ", allowed: " + lt::kArmGapRule);
   // The log names each beam's particles: a lattice that differs from the run's (another version of
   // the generator, an edited config) is caught here instead of giving wrong statistics.
   for (const lt::BreakEvent& ev : log) {

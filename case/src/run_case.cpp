@@ -316,7 +316,7 @@ CaseKeys<RunCase> make_run_case_keys() {
             "outer edge of the radial shells")
       .choice("fracture_link", [](auto& c) -> auto& { return c.output.statistics.link; },
               "which broken beams form one fracture in fractures.csv")
-      .real("arm_gap", [](auto& c) -> auto& { return c.output.statistics.arm_gap; }, "0 < arm_gap <= 1",
+      .real("arm_gap", [](auto& c) -> auto& { return c.output.statistics.arm_gap; }, lt::kArmGapRule,
             "arms crossing the arm circle closer than this (over R, along it) count as one in fracture_summary.csv's "
             "n_arms_fixed_gap (n_arms' gap is 3 mean beam lengths; docs/fracture_statistics.md)")
       .check([](CaseTable& out, CaseTable&, RunCase& c) {
@@ -324,8 +324,8 @@ CaseKeys<RunCase> make_run_case_keys() {
         if (!(c.output.radial_max > R_i && c.output.radial_max <= 1.0))
           out.fail("radial_max = " + core::format_value(c.output.radial_max) + ", allowed: R_i = " +
                    core::format_value(R_i) + " < radial_max <= 1");
-        if (!(c.output.statistics.arm_gap > 0.0 && c.output.statistics.arm_gap <= 1.0))
-          out.fail("arm_gap = " + core::format_value(c.output.statistics.arm_gap) + ", allowed: 0 < arm_gap <= 1");
+        if (!lt::is_allowed_arm_gap(c.output.statistics.arm_gap))
+          out.fail("arm_gap = " + core::format_value(c.output.statistics.arm_gap) + ", allowed: " + lt::kArmGapRule);
         c.stepping.output_times = c.output.times;
       });
   return k;

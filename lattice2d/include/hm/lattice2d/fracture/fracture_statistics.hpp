@@ -62,6 +62,11 @@ struct FractureStatisticsOptions {
   void validate() const;
 };
 
+/// The rule a user's arm gap (a case's [output] arm_gap, `fractures --arm-gap`) must meet: a gap wider
+/// than R merges every crossing of the arm circle (radius < 1) into one arm.
+inline constexpr const char* kArmGapRule = "0 < arm_gap <= 1";
+inline bool is_allowed_arm_gap(double gap) { return gap > 0.0 && gap <= 1.0; }
+
 /// "radial" (connected to the borehole) or "secondary" (everything else).
 enum class FractureKind { radial, secondary };
 constexpr auto enum_names(FractureKind) {
