@@ -176,3 +176,38 @@ TEST_CASE("Coupled fracture checked at convergence: the break sequence does not 
     CHECK(slow[k].load == fast[k].load);
   }
 }
+
+TEST_CASE("Coupled fracture: a step whose first break overshoots ends at that check, leaving no trace",
+          "[lattice2d][coupled_fracture]") {
+  // The step is retried whatever its later passes would do, so it stops at its first failure check
+  // instead of converging the broken state: the passes after that check are saved, the outcome is
+  // the same (the state of t^n, status overshoot).
+  const Lattice lattice = make_lattice(DomainShape::annulus, 2000);
+  CouplingOptions options;
+  options.relaxation = CouplingRelaxation::anderson;
+  options.anderson_depth = 10;
+  options.fracture_check = FractureCheck::at_convergence;
+  const double dt = 8e-4;  // eight of the steps that break above: the first break goes far past its threshold
+  auto whole = make_fracturing_model(lattice, 1, options);
+  const CoupledStepSummary taken = whole->step(dt);
+  REQUIRE(taken.is_ok());
+  REQUIRE(taken.n_breaks > 0);
+  REQUIRE(taken.first_event_ratio > 1.02);
+
+  auto retried = make_fracturing_model(lattice, 1, options);
+  const CoupledStepSummary stopped = retried->step(dt, 0.02);
+  CHECK(stopped.status == CoupledStatus::overshoot);
+  CHECK(stopped.first_event_ratio == taken.first_event_ratio);
+  // The first check's breaks only: the broken state was never re-converged.
+  CHECK(stopped.iterations < taken.iterations);
+  CHECK(stopped.n_breaks <= taken.n_breaks);
+  CHECK(retried->time() == 0.0);
+  CHECK(retried->n_broken() == 0);
+  CHECK(retried->break_log().empty());
+  // And the same step taken after it is the step taken in the first place.
+  const CoupledStepSummary again = retried->step(dt);
+  REQUIRE(again.is_ok());
+  CHECK(again.iterations == taken.iterations);
+  REQUIRE(retried->break_log().size() == whole->break_log().size());
+  for (std::size_t k = 0; k < whole->break_log().size(); ++k) CHECK(retried->break_log()[k].beam == whole->break_log()[k].beam);
+}

@@ -95,7 +95,7 @@ CoupledModel::CoupledModel(Lattice lattice, const BeamParameters& beams, const B
   // The springs go into the matrix once (one refactorisation); Psi = 0 leaves the dry matrix as it is.
   if (options_.terms.psi > 0.0) mechanics_->set_normal_springs(springs_, options_.terms.broken_beam_spring);
   displacement_ = Eigen::VectorXd::Zero(3 * mechanics_->lattice().n_particles());
-  volume_ = unknown_volumes(reference_dual_);
+  volume_ = unknown_volumes(reference_dual_.triangle_area);
   unloaded_ = conditions.is_unloaded();
   relaxation_ = make_pass_relaxation(options_.relaxation, options_.initial_relaxation, options_.anderson_depth);
 }
@@ -164,14 +164,14 @@ Eigen::Matrix2Xd CoupledModel::positions(const Eigen::VectorXd& u) const {
   return x;
 }
 
-Eigen::VectorXd CoupledModel::unknown_volumes(const DualGraph& dual) const {
+Eigen::VectorXd CoupledModel::unknown_volumes(const Eigen::VectorXd& triangle_area) const {
   Eigen::VectorXd v(flow_->n_unknowns());
-  v.head(dual.triangle_area.size()) = dual.triangle_area;
+  v.head(triangle_area.size()) = triangle_area;
   if (flow_->has_borehole()) v[flow_->borehole_index()] = flow_->borehole_volume();
   return v;
 }
 
-Eigen::VectorXd CoupledModel::charged_volumes(Eigen::VectorXd volumes, const DualGraph& dual,
+Eigen::VectorXd CoupledModel::charged_volumes(Eigen::VectorXd volumes, const Eigen::VectorXd& triangle_area,
                                               const Eigen::VectorXd& u) const {
   if (flow_->parameters().crack_coupling != CrackCoupling::full) return volumes;
   // A crack triangle holds b of its area (the rock's pores) and 1 - b of its beams' openings, each
@@ -184,7 +184,7 @@ Eigen::VectorXd CoupledModel::charged_volumes(Eigen::VectorXd volumes, const Dua
   for (int e = 0; e < lattice().n_beams(); ++e)
     if (crack[e] > 0.0)
       for (const int t : lattice().beam_triangles[static_cast<std::size_t>(e)])
-        if (t >= 0) volumes[t] = b * dual.triangle_area[t] + (1.0 - b) * opening[t];
+        if (t >= 0) volumes[t] = b * triangle_area[t] + (1.0 - b) * opening[t];
   return volumes;
 }
 
@@ -221,7 +221,7 @@ CoupledStepSummary CoupledModel::settle() {
     const Eigen::Matrix2Xd x = positions(displacement_);
     current_dual_ = build_dual_graph(lattice(), x, reference_dual_.options);
     flow_->update_geometry(current_dual_, x);
-    volume_ = unknown_volumes(current_dual_);
+    volume_ = unknown_volumes(current_dual_.triangle_area);
   }
   summary.n_broken = n_broken();
   summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -250,14 +250,7 @@ CoupledStepSummary CoupledModel::step(double dt, double overshoot_tolerance) {
   save_model_state(at_start);
   PassGuess guess = predict(dt);
   DualGraph dual;
-  const bool converged = iterate(dt, guess, dual, summary);
-  if (converged && overshoot_tolerance > 0.0 && summary.first_event_ratio > 1.0 + overshoot_tolerance) {
-    summary.status = CoupledStatus::overshoot;
-    summary.message = std::string("first ") + (summary.n_teeth > 0 ? "event" : "break") + " at t = " +
-                      hm::core::format_value(summary.time) + " at failure ratio " +
-                      hm::core::format_value(summary.first_event_ratio) + ", above 1 + overshoot_tolerance (" +
-                      hm::core::format_value(overshoot_tolerance) + ")";
-  }
+  const bool converged = iterate(dt, overshoot_tolerance, guess, dual, summary);
   finish_step(dt, converged, std::move(dual), summary);
   if (!summary.is_ok()) {
     core::StateReader snapshot(at_start.bytes(), "the state at t = " + hm::core::format_value(time()));
@@ -281,7 +274,18 @@ CoupledModel::PassGuess CoupledModel::predict(double dt) const {
   return guess;
 }
 
-bool CoupledModel::iterate(double dt, PassGuess& guess, DualGraph& dual, CoupledStepSummary& summary) {
+bool CoupledModel::iterate(double dt, double overshoot_tolerance, PassGuess& guess, DualGraph& dual,
+                           CoupledStepSummary& summary) {
+  // The step is retried whatever its later passes do once its first event overshoots: stop there.
+  const auto overshot = [&] {
+    if (!(overshoot_tolerance > 0.0 && summary.first_event_ratio > 1.0 + overshoot_tolerance)) return false;
+    summary.status = CoupledStatus::overshoot;
+    summary.message = std::string("first ") + (summary.n_teeth > 0 ? "event" : "break") + " at t = " +
+                      hm::core::format_value(summary.time) + " at failure ratio " +
+                      hm::core::format_value(summary.first_event_ratio) + ", above 1 + overshoot_tolerance (" +
+                      hm::core::format_value(overshoot_tolerance) + ")";
+    return true;
+  };
   const bool check_every_pass = fracture_ && options_.fracture_check == FractureCheck::every_pass;
   relaxation_->start_step();
   bool stabiliser_stale = true;  // the crack stabiliser is linearised at the step's first state and after breaks
@@ -295,7 +299,7 @@ bool CoupledModel::iterate(double dt, PassGuess& guess, DualGraph& dual, Coupled
     }
     summary.iterations = k;
     int breaks_this_pass = 0;
-    if (!solve_mechanics(k, guess, check_every_pass, breaks_this_pass, summary)) return false;
+    if (!solve_mechanics(k, guess, check_every_pass, breaks_this_pass, summary) || overshot()) return false;
     if (stabiliser_stale || breaks_this_pass > 0) update_crack_stabiliser();
     stabiliser_stale = false;
     const Eigen::VectorXd& u = mechanics_->displacement();
@@ -314,7 +318,7 @@ bool CoupledModel::iterate(double dt, PassGuess& guess, DualGraph& dual, Coupled
       // A coupled equilibrium: break what fails under its forces, then converge again from the
       // broken state (springs relaxed there, a fresh relaxation history: the map changed).
       int n_breaks = 0;
-      if (!break_beams(k, n_breaks, summary)) return false;
+      if (!break_beams(k, n_breaks, summary) || overshot()) return false;
       if (n_breaks > 0) {
         guess.displacement = mechanics_->displacement();
         stabiliser_stale = true;
@@ -444,8 +448,8 @@ void CoupledModel::update_crack_stabiliser() {
     const double h = 1e-6 / largest;
     const auto volumes = [&](double step) {
       const Eigen::VectorXd moved = u + step * du;
-      const DualGraph moved_dual = build_dual_graph(lattice(), positions(moved), reference_dual_.options);
-      return charged_volumes(unknown_volumes(moved_dual), moved_dual, moved);
+      const Eigen::VectorXd areas = triangle_areas(lattice(), positions(moved));
+      return charged_volumes(unknown_volumes(areas), areas, moved);
     };
     crack_stabiliser_.volume_response.col(c) = flow_->deformation((volumes(h) - volumes(-h)) / (2 * h));
   }
@@ -464,7 +468,8 @@ bool CoupledModel::solve_flow(double dt, int pass, const Eigen::VectorXd& u, con
   if (stabilised) crack_stabiliser_.reference_pressure = pressure_guess;
   // V^n with the cracks of now: a beam broken in this step is charged its opening since t^n.
   const Eigen::VectorXd volume_change =
-      charged_volumes(unknown_volumes(dual), dual, u) - charged_volumes(volume_, current_dual_, displacement_);
+      charged_volumes(unknown_volumes(dual.triangle_area), dual.triangle_area, u) -
+      charged_volumes(volume_, current_dual_.triangle_area, displacement_);
   summary.flow = flow_->solve(dt, volume_change, stabilised ? &crack_stabiliser_ : nullptr);
   summary.flow_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - tock).count();
   if (summary.flow.is_ok()) return true;
@@ -499,7 +504,7 @@ void CoupledModel::finish_step(double dt, bool converged, DualGraph dual, Couple
     flow_->accept();
     displacement_ = mechanics_->displacement();  // the last pass's u, which the accepted flow saw
     current_dual_ = std::move(dual);
-    volume_ = unknown_volumes(current_dual_);
+    volume_ = unknown_volumes(current_dual_.triangle_area);
   }
 }
 
@@ -711,7 +716,7 @@ void CoupledModel::restore_state(core::StateReader& r) {
   current_dual_ = cursor_.totals.n_steps == 0 && (unloaded_ || !at_rest_)
                       ? reference_dual_
                       : build_dual_graph(lattice(), positions(displacement_), reference_dual_.options);
-  volume_ = unknown_volumes(current_dual_);
+  volume_ = unknown_volumes(current_dual_.triangle_area);
 }
 
 void CoupledModel::save_model_state(core::StateWriter& w) const {

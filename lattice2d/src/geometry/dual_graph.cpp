@@ -9,6 +9,17 @@ namespace hm::lattice2d {
 
 void DualGraphOptions::validate() const { hm::core::require_open(min_dual_ratio, "min_dual_ratio", 0.0, 1.0); }
 
+Eigen::VectorXd triangle_areas(const Lattice& lattice, const Eigen::Matrix2Xd& x) {
+  assert(x.cols() == lattice.n_particles() && "one position per particle");
+  Eigen::VectorXd area(lattice.n_triangles());
+  for (int s = 0; s < lattice.n_triangles(); ++s) {
+    const auto [a, b, c] = lattice.triangles[static_cast<std::size_t>(s)];
+    const Eigen::Vector2d u = x.col(b) - x.col(a), v = x.col(c) - x.col(a);
+    area[s] = 0.5 * (u.x() * v.y() - u.y() * v.x());
+  }
+  return area;
+}
+
 DualGraph build_dual_graph(const Lattice& lattice, const DualGraphOptions& options) {
   return build_dual_graph(lattice, lattice.points, options);
 }
@@ -21,17 +32,16 @@ DualGraph build_dual_graph(const Lattice& lattice, const Eigen::Matrix2Xd& x, co
   const int n_tri = lattice.n_triangles();
   const int n_beams = lattice.n_beams();
 
-  dual.triangle_area.resize(n_tri);
+  dual.triangle_area = triangle_areas(lattice, x);
   dual.dual_point.resize(2, n_tri);
   dual.centroid.resize(2, n_tri);
   for (int s = 0; s < n_tri; ++s) {
     const auto [a, b, c] = lattice.triangles[static_cast<std::size_t>(s)];
     // Relative to vertex a: the circumcentre formula then loses no digits to the absolute position.
     const Eigen::Vector2d u = x.col(b) - x.col(a), v = x.col(c) - x.col(a);
-    const double cross = u.x() * v.y() - u.y() * v.x();
+    const double cross = 2.0 * dual.triangle_area[s];  // exact: the area is half the cross product
     assert(cross > 0.0 && "triangle not counter-clockwise");
     const double uu = u.squaredNorm(), vv = v.squaredNorm();
-    dual.triangle_area[s] = 0.5 * cross;
     dual.dual_point.col(s) = x.col(a) + Eigen::Vector2d(v.y() * uu - u.y() * vv, u.x() * vv - v.x() * uu) / (2.0 * cross);
     dual.centroid.col(s) = (x.col(a) + x.col(b) + x.col(c)) / 3.0;
   }

@@ -372,7 +372,8 @@ class CoupledModel {
   };
   // The sub-steps of step(); each returns false after recording a solver failure in the summary.
   PassGuess predict(double dt) const;
-  bool iterate(double dt, PassGuess& guess, DualGraph& dual, CoupledStepSummary& summary);  // true: converged
+  // true: converged. A first event above 1 + overshoot_tolerance (> 0) ends the step at once.
+  bool iterate(double dt, double overshoot_tolerance, PassGuess& guess, DualGraph& dual, CoupledStepSummary& summary);
   bool solve_mechanics(int pass, const PassGuess& guess, bool check_every_pass, int& n_breaks,
                        CoupledStepSummary& summary);
   bool break_beams(int pass, int& n_breaks, CoupledStepSummary& summary);
@@ -385,13 +386,14 @@ class CoupledModel {
   FlowStabiliser crack_stabiliser_;
   void finish_step(double dt, bool converged, DualGraph dual, CoupledStepSummary& summary);  // accept or restore t^n
   Eigen::Matrix2Xd positions(const Eigen::VectorXd& u) const;
-  Eigen::VectorXd unknown_volumes(const DualGraph& dual) const;  // V_s (areas), then V_h
+  Eigen::VectorXd unknown_volumes(const Eigen::VectorXd& triangle_area) const;  // V_s (areas), then V_h
   // How much of each beam's facet is crack (FlowNetwork::set_crack_weights): 1 broken; with
   // CrackCoupling::full and the saw-tooth law, the damage 1 - s of a softened beam; 0 otherwise.
   Eigen::VectorXd crack_weights() const;
   // The volumes the flow charges: with CrackCoupling::full a crack triangle's is b of its area and 1 - b
   // of its cracked beams' weighted openings at u (crack_opening_volumes); otherwise `volumes` as they are.
-  Eigen::VectorXd charged_volumes(Eigen::VectorXd volumes, const DualGraph& dual, const Eigen::VectorXd& u) const;
+  Eigen::VectorXd charged_volumes(Eigen::VectorXd volumes, const Eigen::VectorXd& triangle_area,
+                                  const Eigen::VectorXd& u) const;
   // save_state without the run cursor: what step() restores after a failed attempt. The accepted
   // geometry (current_dual_, volume_) is not in it: only an accepted step changes it.
   void save_model_state(core::StateWriter& w) const;
