@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <utility>
 
 #include "hm/core/input_error.hpp"
@@ -288,7 +289,10 @@ bool CoupledModel::iterate(double dt, double overshoot_tolerance, PassGuess& gue
   };
   const bool check_every_pass = fracture_ && options_.fracture_check == FractureCheck::every_pass;
   relaxation_->start_step();
-  bool stabiliser_stale = true;  // the crack stabiliser is linearised at the step's first state and after breaks
+  // The crack stabiliser is linearised at the step's first state (every crack: so that a resumed or
+  // retried step starts as the uninterrupted one) and after breaks (the cracks they changed).
+  bool stabiliser_stale = true;
+  bool first_update = true;
   int last_break_pass = 0;  // at_convergence: max_iterations counts from here
   for (int k = 1; k - last_break_pass <= options_.max_iterations; ++k) {
     if (interrupt_ && interrupt_()) {
@@ -300,8 +304,8 @@ bool CoupledModel::iterate(double dt, double overshoot_tolerance, PassGuess& gue
     summary.iterations = k;
     int breaks_this_pass = 0;
     if (!solve_mechanics(k, guess, check_every_pass, breaks_this_pass, summary) || overshot()) return false;
-    if (stabiliser_stale || breaks_this_pass > 0) update_crack_stabiliser();
-    stabiliser_stale = false;
+    if (stabiliser_stale || breaks_this_pass > 0) update_crack_stabiliser(!first_update);
+    stabiliser_stale = first_update = false;
     const Eigen::VectorXd& u = mechanics_->displacement();
     if (!solve_flow(dt, k, u, guess.pressure, dual, summary)) return false;
     const Eigen::VectorXd& p = flow_->trial_pressure();
@@ -428,18 +432,41 @@ Eigen::VectorXd CoupledModel::pressure_load(const Eigen::VectorXd& pressure) con
                          full_crack_pressure ? flow_->crack_weights() : Eigen::VectorXd{});
 }
 
-void CoupledModel::update_crack_stabiliser() {
+void CoupledModel::update_crack_stabiliser(bool keep_unchanged_modes) {
+  FlowStabiliser previous = std::move(crack_stabiliser_);
   crack_stabiliser_ = FlowStabiliser{};
   if (flow_->parameters().crack_coupling != CrackCoupling::full ||
       options_.crack_stabiliser != CrackStabiliser::uniform_pressure)
     return;
   crack_stabiliser_.modes = flow_->crack_modes();
   const auto k = static_cast<Eigen::Index>(crack_stabiliser_.modes.size());
+  const Eigen::VectorXd& weights = flow_->crack_weights();
+  // The stabiliser only sets the passes' path, not their fixed point: a crack whose unknowns and
+  // weights are those of the last update keeps its response (the lattice around it changed by a
+  // tooth elsewhere at most), so an event costs solves for the crack it changed, not for every crack.
+  std::map<std::vector<int>, Eigen::Index> kept;
+  if (keep_unchanged_modes && stabiliser_weights_.size() == weights.size()) {
+    std::vector<char> changed(static_cast<std::size_t>(flow_->n_unknowns()), 0);
+    for (int e = 0; e < lattice().n_beams(); ++e)
+      if (weights[e] != stabiliser_weights_[e])
+        for (const int t : lattice().beam_triangles[static_cast<std::size_t>(e)])
+          if (t >= 0) changed[static_cast<std::size_t>(t)] = 1;
+    for (std::size_t c = 0; c < previous.modes.size(); ++c)
+      if (std::none_of(previous.modes[c].begin(), previous.modes[c].end(),
+                       [&](int v) { return changed[static_cast<std::size_t>(v)]; }))
+        kept.emplace(previous.modes[c], static_cast<Eigen::Index>(c));
+  }
+  stabiliser_weights_ = weights;
   const Eigen::VectorXd& u = mechanics_->displacement();
   crack_stabiliser_.volume_response = Eigen::MatrixXd::Zero(flow_->n_unknowns(), k);
   for (Eigen::Index c = 0; c < k; ++c) {
+    const std::vector<int>& mode = crack_stabiliser_.modes[static_cast<std::size_t>(c)];
+    if (const auto old = kept.find(mode); old != kept.end()) {
+      crack_stabiliser_.volume_response.col(c) = previous.volume_response.col(old->second);
+      continue;
+    }
     Eigen::VectorXd unit = Eigen::VectorXd::Zero(flow_->n_unknowns());
-    for (int v : crack_stabiliser_.modes[static_cast<std::size_t>(c)]) unit[v] = 1.0;
+    for (int v : mode) unit[v] = 1.0;
     const Eigen::VectorXd du = mechanics_->linear_response(pressure_load(unit));
     const double largest = du.cwiseAbs().maxCoeff();
     if (!(largest > 0.0)) continue;

@@ -420,20 +420,27 @@ std::string FlowNetwork::factorise_if_needed(double dt) {
   return factorise(dt);
 }
 
-Eigen::VectorXd FlowNetwork::solve_stabilised(const Eigen::VectorXd& rhs, const FlowStabiliser& stabiliser) {
-  // (A + V W^T) p = rhs + V W^T p_ref by Woodbury with A's factor: W^T x sums x over a mode's unknowns.
-  const Eigen::MatrixXd& V = stabiliser.volume_response;
+Eigen::VectorXd FlowNetwork::solve_stabilised(double dt, const Eigen::VectorXd& rhs, FlowStabiliser& stabiliser) {
+  // (A + A Z W^T) p = rhs + A Z W^T p_ref with Z = A_0^-1 V (A_0 the matrix of the first solve, so
+  // that A_0 Z = V), W^T x summing x over a mode's unknowns. Divided by A: (I + Z W^T) p = y with
+  // y = A^-1 rhs + Z W^T p_ref, and by Woodbury p = y - Z (I + W^T Z)^-1 W^T y.
   const auto k = static_cast<Eigen::Index>(stabiliser.modes.size());
-  assert(V.cols() == k && V.rows() == n_unknowns() && "one volume response per mode");
+  assert(stabiliser.volume_response.cols() == k && stabiliser.volume_response.rows() == n_unknowns() &&
+         "one volume response per mode");
+  if (stabiliser.solved_response.cols() != k || stabiliser.solved_dt != dt) {
+    stabiliser.solved_response.resize(n_unknowns(), k);
+    for (Eigen::Index c = 0; c < k; ++c)
+      stabiliser.solved_response.col(c) = solver_->solve(Eigen::VectorXd(stabiliser.volume_response.col(c)));
+    stabiliser.solved_dt = dt;
+  }
+  const Eigen::MatrixXd& Z = stabiliser.solved_response;
   auto mode_sums = [&](const Eigen::VectorXd& x) {
     Eigen::VectorXd s = Eigen::VectorXd::Zero(k);
     for (Eigen::Index c = 0; c < k; ++c)
       for (int u : stabiliser.modes[static_cast<std::size_t>(c)]) s[c] += x[u];
     return s;
   };
-  const Eigen::VectorXd y = solver_->solve(rhs + V * mode_sums(stabiliser.reference_pressure));
-  Eigen::MatrixXd Z(V.rows(), k);
-  for (Eigen::Index c = 0; c < k; ++c) Z.col(c) = solver_->solve(Eigen::VectorXd(V.col(c)));
+  const Eigen::VectorXd y = solver_->solve(rhs) + Z * mode_sums(stabiliser.reference_pressure);
   Eigen::MatrixXd capacitance = Eigen::MatrixXd::Identity(k, k);
   for (Eigen::Index c = 0; c < k; ++c) capacitance.col(c) += mode_sums(Z.col(c));
   return y - Z * capacitance.partialPivLu().solve(mode_sums(y));
@@ -457,7 +464,7 @@ Eigen::VectorXd FlowNetwork::deformation(const Eigen::VectorXd& volume_change) c
   return deformation;
 }
 
-FlowStepSummary FlowNetwork::solve(double dt, const Eigen::VectorXd& volume_change, const FlowStabiliser* stabiliser) {
+FlowStepSummary FlowNetwork::solve(double dt, const Eigen::VectorXd& volume_change, FlowStabiliser* stabiliser) {
   if (!(dt > 0.0) || !std::isfinite(dt)) throw InputError("dt = " + format_value(dt) + ", allowed: > 0, finite");
   assert((volume_change.size() == 0 || volume_change.size() == n_unknowns()) && "one volume change per unknown");
   const int n = n_unknowns();
@@ -481,7 +488,7 @@ FlowStepSummary FlowNetwork::solve(double dt, const Eigen::VectorXd& volume_chan
 
   summary.factorised = !factor_current && !factor_stale_;
   if (stabiliser) {
-    trial_pressure_ = solve_stabilised(rhs, *stabiliser);
+    trial_pressure_ = solve_stabilised(dt, rhs, *stabiliser);
   } else {
     trial_pressure_ = solver_->solve(rhs);
   }

@@ -380,10 +380,12 @@ class CoupledModel {
   bool solve_flow(double dt, int pass, const Eigen::VectorXd& u, const Eigen::VectorXd& pressure_guess, DualGraph& dual,
                   CoupledStepSummary& summary);
   // Fluid-filled cracks (CrackCoupling::full): each crack's volume response to a uniform pressure at
-  // the current state, for the flow solve (FlowStabiliser); empty without cracks.
-  void update_crack_stabiliser();
+  // the current state, for the flow solve (FlowStabiliser); empty without cracks. keep_unchanged_modes:
+  // a crack with the unknowns and weights of the last update keeps its response.
+  void update_crack_stabiliser(bool keep_unchanged_modes);
   Eigen::VectorXd pressure_load(const Eigen::VectorXd& pressure) const;  // Eq. 17's forces of a pressure
   FlowStabiliser crack_stabiliser_;
+  Eigen::VectorXd stabiliser_weights_;  // the crack weights crack_stabiliser_ was computed with
   void finish_step(double dt, bool converged, DualGraph dual, CoupledStepSummary& summary);  // accept or restore t^n
   Eigen::Matrix2Xd positions(const Eigen::VectorXd& u) const;
   Eigen::VectorXd unknown_volumes(const Eigen::VectorXd& triangle_area) const;  // V_s (areas), then V_h

@@ -154,10 +154,17 @@ FlowParameters flow_parameters_of(const hm::analytic::DimensionlessParameters& p
 /// point is unchanged, while a pass already sees the crack's compliance (as the fixed-stress split
 /// sees the rock's). Without it a fluid-filled crack, whose compliance is thousands of times its
 /// fluid's storage, makes the split diverge.
+///
+/// The first solve() with a stabiliser computes Z = A^-1 V (one solve per mode) and keeps it; later
+/// solves of the same dt take A Z as the response, A being their own matrix: V itself while the
+/// matrix stays, a nearby response once the deformed geometry has moved it, at one solve per pass
+/// instead of one per mode. The fixed point is the same either way.
 struct FlowStabiliser {
   Eigen::MatrixXd volume_response;        ///< n_unknowns x n_modes
   std::vector<std::vector<int>> modes;    ///< the unknowns of each mode
   Eigen::VectorXd reference_pressure;     ///< p_ref: the pressure the mechanics was solved with
+  Eigen::MatrixXd solved_response;        ///< Z = A^-1 V of the first solve (empty until then)
+  double solved_dt = -1.0;                ///< the dt of that solve
 };
 
 struct FlowStepSummary {
@@ -275,7 +282,7 @@ class FlowNetwork {
   /// Solves one implicit Euler step of length dt > 0 from p^n (hm::InputError if dt is not > 0).
   /// volume_change: V^{n+1} - V^n per unknown (triangles, then the borehole), from the mechanics;
   /// empty means zero. Does not change p^n: the result is trial_pressure() until accept().
-  FlowStepSummary solve(double dt, const Eigen::VectorXd& volume_change = {}, const FlowStabiliser* stabiliser = nullptr);
+  FlowStepSummary solve(double dt, const Eigen::VectorXd& volume_change = {}, FlowStabiliser* stabiliser = nullptr);
   /// The deformation term of the balance for a volume change per unknown: b times it, 1 times it on
   /// a crack's triangles with CrackCoupling::full, the borehole's by its coefficient.
   Eigen::VectorXd deformation(const Eigen::VectorXd& volume_change) const;
@@ -309,7 +316,7 @@ class FlowNetwork {
   void restore_state(core::StateReader& r);
 
  private:
-  Eigen::VectorXd solve_stabilised(const Eigen::VectorXd& rhs, const FlowStabiliser& stabiliser);
+  Eigen::VectorXd solve_stabilised(double dt, const Eigen::VectorXd& rhs, FlowStabiliser& stabiliser);
   struct Solver;  // the one place that names the sparse factorisation (flow_network.cpp)
 
   // One flow connection per beam: between triangles s and t, triangle s and the borehole (t = h),
