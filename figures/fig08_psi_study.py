@@ -50,4 +50,4 @@ rate.set(xlabel="coupling pass", ylabel="$|p_k - p_{last}|\\,/\\,|p_{last}|$",
 ax.legend()
 fig.suptitle("Fig. 8 — point injection (Q = 0.1, b = 0.5): one step $\\Delta t^*$ = 3e-4 from rest, "
              "shell Γ: 0.02 < $r^*$ < 0.03", fontsize=10)
-hmplot.save(fig, args.out, "fig08_psi_study")
+hmplot.save(fig, args.out, "fig08_psi_study", sources=[args.data])

@@ -25,4 +25,4 @@ for ax, (column, title) in zip(axes.flat, panels):
     ax.axhline(0.0, color="k", lw=0.5)
     ax.set(xlabel="$r/R$", title=title)
 axes[0, 0].legend()
-hmplot.save(fig, args.out, "fig11_fdm1d_stresses")
+hmplot.save(fig, args.out, "fig11_fdm1d_stresses", sources=[args.data])

@@ -49,4 +49,4 @@ axes[1].plot(d["x_lower"], d["uy_lower"], "v", ms=3.5, color="C3", label="lower-
 axes[1].set(xlabel="x (over R)", ylabel="u_y (over R)",
             title=f"particles along the crack (c = {d['c_nominal'][0]:g}, free)")
 axes[1].legend(fontsize=6.5)
-hmplot.save(fig, args.out, "figC2_sneddon")
+hmplot.save(fig, args.out, "figC2_sneddon", sources=[args.data])

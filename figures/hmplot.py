@@ -238,15 +238,32 @@ def run_title(folder, label):
     return ("INCOMPLETE run: " if not run_is_complete(folder) else "") + (run_setting(folder) or label)
 
 
+def data_provenance(folder):
+    """The [provenance] of what wrote a folder: a run's config.toml, or the provenance.toml of a
+    verification report's data folder ({} without either)."""
+    prov = run_config(folder).get("provenance")
+    if prov is not None:
+        return prov
+    path = os.path.join(folder, "provenance.toml")
+    if not os.path.exists(path):
+        return {}
+    with open(path, "rb") as f:
+        return tomllib.load(f).get("provenance", {})
+
+
 def provenance_footer(fig, folders):
     """A small footer naming what the figure was drawn from: each run's case file (from the command
-    that wrote it), grouped by the hmlattice version and commit that ran it, wrapped to the width.
-    Returns the footer's height as a fraction of the figure's (0 without runs), for the layout to keep free."""
+    that wrote it; "verification data" for a report's data folder), grouped by the hmlattice version
+    and commit that wrote it, wrapped to the width. Returns the footer's height as a fraction of the
+    figure's (0 without provenance), for the layout to keep free."""
     builds = {}
     for folder in folders:
-        prov = run_config(folder).get("provenance", {})
+        prov = data_provenance(folder)
+        if not prov:
+            continue
         words = prov.get("command_line", "").split()
-        case = next((os.path.basename(w) for w in words if w.endswith(".toml")), os.path.basename(os.path.normpath(folder)))
+        fallback = "verification data" if words[1:2] == ["verify"] else os.path.basename(os.path.normpath(folder))
+        case = next((os.path.basename(w) for w in words if w.endswith(".toml")), fallback)
         cases = builds.setdefault(f"hmlattice {prov.get('version', '?')} {prov.get('git_commit', '?')}", [])
         if case not in cases:
             cases.append(case)
@@ -530,10 +547,12 @@ def sweep_runs(data, key):
     return runs, len(rows) - len(done)
 
 
-def save(fig, out, name):
-    """Write <out>/<name>.png and .pdf (each completely or not at all), close the figure, say where."""
+def save(fig, out, name, sources=()):
+    """Write <out>/<name>.png and .pdf (each completely or not at all), close the figure, say where.
+    sources: the folders the figure was drawn from, named in a provenance footer."""
+    footer = provenance_footer(fig, sources) if sources else 0.0
     if fig.get_layout_engine() is None:  # a figure may bring its own (constrained) layout
-        fig.tight_layout()
+        fig.tight_layout(rect=(0, footer + 0.01 if footer else 0, 1, 1))
     _prepare_out(out)
     for ext in ("png", "pdf"):
         path = os.path.join(out, f"{name}.{ext}")

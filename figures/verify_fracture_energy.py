@@ -31,4 +31,4 @@ ax.axhline(1.0, color="k", lw=1, label="$G_f$")
 ax.set(xscale="log", xlabel="particles $N$", ylabel="energy per unit crack length $/\\,G_f$", ylim=(0, None),
        title="Energy a growing crack spends, against resolution")
 ax.legend(fontsize=7)
-hmplot.save(fig, args.out, "verify_fracture_energy")
+hmplot.save(fig, args.out, "verify_fracture_energy", sources=[args.data])

@@ -51,4 +51,4 @@ right.set(xlabel="half length $c/R$", ylabel="$p\\sqrt{\\pi c}\\,/\\,K_c$", ylim
           title="$K$ along the growth, $K_c = \\sqrt{E' G_f}$")
 left.legend(fontsize=6)
 right.legend(fontsize=6, markerscale=4)
-hmplot.save(fig, args.out, "verify_griffith_growth")
+hmplot.save(fig, args.out, "verify_griffith_growth", sources=[args.data])

@@ -36,4 +36,4 @@ right.plot(dS[order], breakdown["p_b_overread"][order], "k--", label="annulus wi
 right.plot(dS[order], breakdown["p_b_hubbert_willis"][order], "k:", label="Hubbert–Willis (Kirsch)")
 right.set(xlabel="(S_H − S_h)/E × 1e4  (mean stress 2e-4 E)", ylabel="breakdown $p_w/E$", title="jacketed breakdown pressure")
 right.legend(fontsize=8)
-hmplot.save(fig, args.out, "verify_insitu")
+hmplot.save(fig, args.out, "verify_insitu", sources=[args.data])

@@ -29,4 +29,4 @@ for row, (outer, d) in enumerate(sorted(by_outer.items())):
     axes[row][1].set(xlabel="$r/R$", ylabel="$\\sigma_\\theta/E$", title=f"hoop stress, {label_outer} outer boundary")
     axes[row][0].legend()
     axes[row][1].legend()
-hmplot.save(fig, args.out, "verify_lattice_lame")
+hmplot.save(fig, args.out, "verify_lattice_lame", sources=[args.data])

@@ -25,4 +25,4 @@ for ax, c in zip(axes, ["xx", "yy", "xy"]):
     ax.axvline(np.mean(s), color="C3", lw=1, label="particle mean")
     ax.set(xlabel=f"σ_{c}*", ylabel="particles", title=f"σ_{c}: sd / |σ| = {np.std(s) / scale:.2f}")
     ax.legend()
-hmplot.save(fig, args.out, "verify_lattice_patch")
+hmplot.save(fig, args.out, "verify_lattice_patch", sources=[args.data])

@@ -26,4 +26,4 @@ sc = axes[1].scatter(breaks["x"], breaks["y"], c=breaks["sequence"], s=4, cmap="
 axes[1].set(xlim=(-0.5, 0.5), ylim=(-0.5, 0.5), aspect="equal", xlabel="x", ylabel="y",
             title=f"broken beams ({len(breaks['x'])}), load along y")
 fig.colorbar(sc, ax=axes[1], label="break order")
-hmplot.save(fig, args.out, "verify_lattice_uniaxial")
+hmplot.save(fig, args.out, "verify_lattice_uniaxial", sources=[args.data])

@@ -82,4 +82,4 @@ for row, b in zip(axes, bs):
         lo, hi = ax.get_ylim()
         ax.set_ylim(lo, hi + 0.45 * (hi - lo))
     row[3].axhline(0.0, color="0.5", lw=0.6)
-hmplot.save(fig, args.out, "verify_lattice_vs_fdm1d")
+hmplot.save(fig, args.out, "verify_lattice_vs_fdm1d", sources=[args.data])

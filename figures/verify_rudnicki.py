@@ -20,4 +20,4 @@ for f, d in data.items():
 axes[0].set(xlabel="$r/R$", ylabel="$u_r/R$", title="radial displacement, t* = 3e-4")
 axes[1].set(xlabel="$r/R$", ylabel="$p/E$", title="pressure, t* = 3e-4")
 axes[0].legend()
-hmplot.save(fig, args.out, "verify_rudnicki")
+hmplot.save(fig, args.out, "verify_rudnicki", sources=[args.data])

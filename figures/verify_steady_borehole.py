@@ -22,4 +22,4 @@ axes[1].set(xlabel="$r/R$", ylabel="$u_r/R$", title="radial displacement (correc
 axes[2].set(xlabel="$r/R$", ylabel="effective stress", title="σθ (solid), σr (dashed)")
 axes[1].legend()
 axes[2].legend(ncol=2, fontsize=6)
-hmplot.save(fig, args.out, "verify_steady_borehole")
+hmplot.save(fig, args.out, "verify_steady_borehole", sources=[args.data])

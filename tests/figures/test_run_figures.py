@@ -1,5 +1,5 @@
 """The fracture-pressure figures (Figs. 12, 14, 16, 17), the displacement figures (13, 15) and Fig. 7 describe
-the run they draw: the setting comes from
+the run they draw (the verification figures the commit of their data): the setting comes from
 its config.toml (a Q = 0.003 run is titled Q = 0.003, not the paper's 0.01), an in-situ field is named, a
 run that stopped early is marked INCOMPLETE, a run without a snapshot is refused with one line, a
 folder of the wrong kind is refused with one line instead of a traceback, and the script says where it
@@ -121,6 +121,24 @@ class RunFigures(unittest.TestCase):
         self.assertNotEqual(r.returncode, 0)
         self.assertEqual(r.stderr.count("\n"), 1, r.stderr)
         self.assertIn("no radial shell at r* <= 0.1", r.stderr)
+
+    def test_a_verification_figure_names_the_commit_its_data_came_from(self):
+        r = run([HMLATTICE, "verify", "--filter", "analytic.steady_borehole", "--out", "verify"], self.dir.name)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        data = os.path.join(self.dir.name, "verify", "data")
+        prov = hmplot.data_provenance(data)
+        self.assertRegex(prov.get("git_commit", ""), r"^[0-9a-f]{12}")
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        fig = plt.figure()
+        self.assertGreater(hmplot.provenance_footer(fig, [data]), 0.0)
+        footer = fig.texts[-1].get_text()
+        self.assertIn(f"verification data (hmlattice {prov['version']} {prov['git_commit']})", footer)
+        # A folder with no provenance adds no footer (rather than one of question marks).
+        self.assertEqual(hmplot.provenance_footer(plt.figure(), [self.dir.name]), 0.0)
+        self.assertTrue(os.path.getsize(os.path.join(self.dir.name, "verify", "figures", "analytic.steady_borehole",
+                                                     "verify_steady_borehole.png")) > 10000)
 
     def test_a_folder_of_another_kind_is_one_line(self):
         r = self.script("fig10_fdm1d_pressure_displacement.py", "whole", "fig10")

@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "figure_runner.hpp"
+#include "hm/core/file_output.hpp"
 #include "hm/core/input_error.hpp"
 #include "hm/core/result_folder.hpp"
 #include "report_writer.hpp"
@@ -19,6 +20,7 @@
 namespace hm::verification {
 
 using cases::make_provenance;
+using cases::Provenance;
 
 namespace fs = std::filesystem;
 
@@ -137,6 +139,9 @@ HarnessSummary run_harness(const std::vector<Benchmark>& benchmarks, const Harne
   const fs::path data_dir = out.path() / "data", figure_dir = out.path() / "figures";
   fs::create_directories(data_dir);
   fs::create_directories(figure_dir);
+  // What the figure scripts name in their footers: the data's version, commit and command.
+  const Provenance provenance = make_provenance(options.command_line);
+  core::write_file_atomically(data_dir / "provenance.toml", [&](std::ostream& os) { os << cases::to_toml(provenance); });
 
   const std::size_t n = selected.size();
   const int jobs = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(options.jobs), n));
@@ -193,7 +198,7 @@ HarnessSummary run_harness(const std::vector<Benchmark>& benchmarks, const Harne
   }
   summary.n_benchmarks = static_cast<int>(outcomes.size());
 
-  write_report_markdown(out.path() / "report.md", outcomes, make_provenance(options.command_line), options.tier);
+  write_report_markdown(out.path() / "report.md", outcomes, provenance, options.tier);
   write_metrics_json(out.path() / "metrics.json", outcomes);
   out.commit();
   summary.report = out.target() / "report.md";
