@@ -458,11 +458,14 @@ void CoupledModel::update_crack_stabiliser(bool keep_unchanged_modes) {
   }
   stabiliser_weights_ = weights;
   const Eigen::VectorXd& u = mechanics_->displacement();
-  crack_stabiliser_.volume_response = Eigen::MatrixXd::Zero(flow_->n_unknowns(), k);
+  // (Its flow solve A^-1 V is not kept: the event changed the flow matrix too, by up to iota times a
+  // facet's conductance, and A (A^-1 V) with the old solve would be far from V.)
+  FlowStabiliser& next = crack_stabiliser_;
+  next.volume_response = Eigen::MatrixXd::Zero(flow_->n_unknowns(), k);
   for (Eigen::Index c = 0; c < k; ++c) {
-    const std::vector<int>& mode = crack_stabiliser_.modes[static_cast<std::size_t>(c)];
+    const std::vector<int>& mode = next.modes[static_cast<std::size_t>(c)];
     if (const auto old = kept.find(mode); old != kept.end()) {
-      crack_stabiliser_.volume_response.col(c) = previous.volume_response.col(old->second);
+      next.volume_response.col(c) = previous.volume_response.col(old->second);
       continue;
     }
     Eigen::VectorXd unit = Eigen::VectorXd::Zero(flow_->n_unknowns());
@@ -478,7 +481,7 @@ void CoupledModel::update_crack_stabiliser(bool keep_unchanged_modes) {
       const Eigen::VectorXd areas = triangle_areas(lattice(), positions(moved));
       return charged_volumes(unknown_volumes(areas), areas, moved);
     };
-    crack_stabiliser_.volume_response.col(c) = flow_->deformation((volumes(h) - volumes(-h)) / (2 * h));
+    next.volume_response.col(c) = flow_->deformation((volumes(h) - volumes(-h)) / (2 * h));
   }
 }
 

@@ -247,7 +247,7 @@ void FlowNetwork::set_crack_weights(const Eigen::VectorXd& weights) {
   assert((weights.array() >= 0.0).all() && (weights.array() <= 1.0).all() && "weights in [0, 1]");
   if (weights.size() == crack_weight_.size() && weights == crack_weight_) return;
   crack_weight_ = weights;
-  factor_stale_ = true;
+  factor_stale_ = cracks_changed_ = true;
 }
 
 void FlowNetwork::set_broken(const std::vector<bool>& broken) {
@@ -343,7 +343,7 @@ std::string FlowNetwork::factorise(double dt) {
   const std::string error = solver_->factorise(solver_->factorisation, solver_->matrix, values);
   solver_->factor_values = std::move(values);
   factorised_dt_ = error.empty() ? dt : -1.0;
-  factor_stale_ = false;
+  factor_stale_ = cracks_changed_ = false;
   refresh_factor_ = false;
   return error;
 }
@@ -396,6 +396,9 @@ void FlowNetwork::restore_state(core::StateReader& r) {
   if (factor_values.size() != 0 && static_cast<std::size_t>(factor_values.size()) != nnz) fail("flow.factor_values");
   r.get("flow.factorised_dt", factorised_dt_);
   r.get("flow.factor_stale", factor_stale_);
+  // Not saved: a step that changes the cracks solves the flow after, which factorises when it is
+  // stabilised, so between steps it is false wherever it is read.
+  cracks_changed_ = false;
   r.get("flow.refresh_factor", refresh_factor_);
   // The factor is a function of the matrix it was computed from: refactorising those values gives it
   // bitwise (a reused factor may be older than the current matrix, which is restored after it).
@@ -420,19 +423,25 @@ std::string FlowNetwork::factorise_if_needed(double dt) {
   return factorise(dt);
 }
 
-Eigen::VectorXd FlowNetwork::solve_stabilised(double dt, const Eigen::VectorXd& rhs, FlowStabiliser& stabiliser) {
-  // (A + A Z W^T) p = rhs + A Z W^T p_ref with Z = A_0^-1 V (A_0 the matrix of the first solve, so
-  // that A_0 Z = V), W^T x summing x over a mode's unknowns. Divided by A: (I + Z W^T) p = y with
-  // y = A^-1 rhs + Z W^T p_ref, and by Woodbury p = y - Z (I + W^T Z)^-1 W^T y.
+Eigen::VectorXd FlowNetwork::stabilised(double dt, const Eigen::VectorXd& plain, FlowStabiliser& stabiliser) {
+  // (A + A Z W^T) p = rhs + A Z W^T p_ref, W^T x summing x over a mode's unknowns, with Z = A_f^-1 V
+  // solved with the factor at hand (A_f = A when it is fresh, so that A Z = V). Divided by A:
+  // (I + Z W^T) p = y with y = A^-1 rhs + Z W^T p_ref (A^-1 rhs = plain, from the factor or its
+  // CG refinement), and by Woodbury p = y - Z (I + W^T Z)^-1 W^T y.
   const auto k = static_cast<Eigen::Index>(stabiliser.modes.size());
   assert(stabiliser.volume_response.cols() == k && stabiliser.volume_response.rows() == n_unknowns() &&
          "one volume response per mode");
-  if (stabiliser.solved_response.cols() != k || stabiliser.solved_dt != dt) {
-    stabiliser.solved_response.resize(n_unknowns(), k);
-    for (Eigen::Index c = 0; c < k; ++c)
-      stabiliser.solved_response.col(c) = solver_->solve(Eigen::VectorXd(stabiliser.volume_response.col(c)));
+  if (stabiliser.solved_dt != dt || stabiliser.solved_response.cols() != k ||
+      stabiliser.is_solved.size() != static_cast<std::size_t>(k)) {
+    stabiliser.solved_response = Eigen::MatrixXd::Zero(n_unknowns(), k);
+    stabiliser.is_solved.assign(static_cast<std::size_t>(k), 0);
     stabiliser.solved_dt = dt;
   }
+  for (Eigen::Index c = 0; c < k; ++c)
+    if (!stabiliser.is_solved[static_cast<std::size_t>(c)]) {
+      stabiliser.solved_response.col(c) = solver_->solve(Eigen::VectorXd(stabiliser.volume_response.col(c)));
+      stabiliser.is_solved[static_cast<std::size_t>(c)] = 1;
+    }
   const Eigen::MatrixXd& Z = stabiliser.solved_response;
   auto mode_sums = [&](const Eigen::VectorXd& x) {
     Eigen::VectorXd s = Eigen::VectorXd::Zero(k);
@@ -440,7 +449,7 @@ Eigen::VectorXd FlowNetwork::solve_stabilised(double dt, const Eigen::VectorXd& 
       for (int u : stabiliser.modes[static_cast<std::size_t>(c)]) s[c] += x[u];
     return s;
   };
-  const Eigen::VectorXd y = solver_->solve(rhs) + Z * mode_sums(stabiliser.reference_pressure);
+  const Eigen::VectorXd y = plain + Z * mode_sums(stabiliser.reference_pressure);
   Eigen::MatrixXd capacitance = Eigen::MatrixXd::Identity(k, k);
   for (Eigen::Index c = 0; c < k; ++c) capacitance.col(c) += mode_sums(Z.col(c));
   return y - Z * capacitance.partialPivLu().solve(mode_sums(y));
@@ -474,8 +483,9 @@ FlowStepSummary FlowNetwork::solve(double dt, const Eigen::VectorXd& volume_chan
   summary.injected = parameters_.Q * dt;
   has_trial_ = false;
   const bool factor_current = factorised_dt_ == dt && !factor_stale_;  // reused as it is, no factorisation
-  // The stabiliser's Woodbury solve needs the factor of the current matrix, not a stale one refined by CG.
-  summary.message = stabiliser && factor_stale_ ? factorise(dt) : factorise_if_needed(dt);
+  // A stabiliser's A^-1 V comes from the factor at hand, which must know the cracks as they are: with
+  // an older factor a changed crack would put A (A^-1 V) far from V, by up to iota times.
+  summary.message = stabiliser && cracks_changed_ ? factorise(dt) : factorise_if_needed(dt);
   if (!summary.message.empty()) return summary;
 
   Eigen::VectorXd storage_coefficient(n);
@@ -487,11 +497,7 @@ FlowStepSummary FlowNetwork::solve(double dt, const Eigen::VectorXd& volume_chan
   rhs[has_borehole_ ? n_triangles_ : source_triangle_] += summary.injected;
 
   summary.factorised = !factor_current && !factor_stale_;
-  if (stabiliser) {
-    trial_pressure_ = solve_stabilised(dt, rhs, *stabiliser);
-  } else {
-    trial_pressure_ = solver_->solve(rhs);
-  }
+  trial_pressure_ = solver_->solve(rhs);
   if (factor_stale_) {
     // Conjugate gradients on the current matrix, preconditioned by the last factor
     // (reuse_factorisation). Measured on a fracturing annulus (N = 1e4): ~8 iterations per solve at
@@ -522,6 +528,7 @@ FlowStepSummary FlowNetwork::solve(double dt, const Eigen::VectorXd& volume_chan
       trial_pressure_ = solver_->solve(rhs);
     }
   }
+  if (stabiliser) trial_pressure_ = stabilised(dt, trial_pressure_, *stabiliser);
   if (solver_->factorisation.info() != Eigen::Success || !trial_pressure_.allFinite()) {
     summary.message = "flow solve failed";
     return summary;

@@ -155,16 +155,18 @@ FlowParameters flow_parameters_of(const hm::analytic::DimensionlessParameters& p
 /// sees the rock's). Without it a fluid-filled crack, whose compliance is thousands of times its
 /// fluid's storage, makes the split diverge.
 ///
-/// The first solve() with a stabiliser computes Z = A^-1 V (one solve per mode) and keeps it; later
-/// solves of the same dt take A Z as the response, A being their own matrix: V itself while the
-/// matrix stays, a nearby response once the deformed geometry has moved it, at one solve per pass
-/// instead of one per mode. The fixed point is the same either way.
+/// The first solve() that uses mode c computes column c of Z = A_f^-1 V with the factor at hand and
+/// keeps it; every solve takes A Z as the response, A being its own matrix: V itself while the
+/// factor is that of the matrix, a nearby response once the deformed geometry has moved the matrix
+/// (or the factor is an older one, reuse_factorisation), at one solve per pass instead of one per
+/// mode. The fixed point is the same either way.
 struct FlowStabiliser {
-  Eigen::MatrixXd volume_response;        ///< n_unknowns x n_modes
+  Eigen::MatrixXd volume_response;        ///< V: n_unknowns x n_modes
   std::vector<std::vector<int>> modes;    ///< the unknowns of each mode
   Eigen::VectorXd reference_pressure;     ///< p_ref: the pressure the mechanics was solved with
-  Eigen::MatrixXd solved_response;        ///< Z = A^-1 V of the first solve (empty until then)
-  double solved_dt = -1.0;                ///< the dt of that solve
+  Eigen::MatrixXd solved_response;        ///< Z, column c valid where is_solved[c]
+  std::vector<char> is_solved;            ///< per mode: its column of Z is solved (a kept one may be)
+  double solved_dt = -1.0;                ///< the dt of those solves (another dt solves them again)
 };
 
 struct FlowStepSummary {
@@ -316,7 +318,8 @@ class FlowNetwork {
   void restore_state(core::StateReader& r);
 
  private:
-  Eigen::VectorXd solve_stabilised(double dt, const Eigen::VectorXd& rhs, FlowStabiliser& stabiliser);
+  // The stabilised pressure from the plain one A^-1 rhs (FlowStabiliser).
+  Eigen::VectorXd stabilised(double dt, const Eigen::VectorXd& plain, FlowStabiliser& stabiliser);
   struct Solver;  // the one place that names the sparse factorisation (flow_network.cpp)
 
   // One flow connection per beam: between triangles s and t, triangle s and the borehole (t = h),
@@ -355,6 +358,7 @@ class FlowNetwork {
   double factorised_dt_ = -1.0;  // dt of the current numeric factorisation; < 0: none
   bool factor_stale_ = false;    // geometry or iota changed since: refine with the old factor
   bool refresh_factor_ = false;  // the last refinement was slow: refactorise at the next solve
+  bool cracks_changed_ = false;  // crack weights changed since the last factorisation
 };
 
 }  // namespace hm::lattice2d
