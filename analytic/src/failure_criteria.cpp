@@ -6,9 +6,8 @@
 namespace hm::analytic {
 
 Principal2D principal_stresses(double s_xx, double s_yy, double s_xy) {
-  const double mean = 0.5 * (s_xx + s_yy);
-  const double radius = std::hypot(0.5 * (s_xx - s_yy), s_xy);
-  return {mean + radius, mean - radius, 0.5 * std::atan2(2.0 * s_xy, s_xx - s_yy)};
+  const PrincipalPair p = principal_pair(s_xx, s_yy, s_xy);
+  return {p.sigma_1, p.sigma_3, 0.5 * std::atan2(2.0 * s_xy, s_xx - s_yy)};
 }
 
 MajorMinor major_minor(const std::array<double, 3>& principal) {
@@ -17,8 +16,7 @@ MajorMinor major_minor(const std::array<double, 3>& principal) {
 }
 
 double coulomb_stress(double sigma_1, double sigma_3, double friction) {
-  const double k = std::sqrt(1.0 + friction * friction) + friction;
-  return k * k * sigma_1 - sigma_3;
+  return coulomb_factor(friction) * sigma_1 - sigma_3;
 }
 
 FailureCheck check_failure(double sigma_1, double sigma_3, double tensile_strength,

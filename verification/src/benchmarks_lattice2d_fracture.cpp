@@ -14,6 +14,7 @@
 
 #include <Eigen/Dense>
 
+#include "hm/analytic/failure_criteria.hpp"
 #include "hm/analytic/sneddon.hpp"
 #include "hm/core/file_output.hpp"
 #include "hm/lattice2d/mechanics/calibration.hpp"
@@ -526,7 +527,7 @@ BenchmarkResult cylinder_first_break(const BenchmarkContext& ctx) {
   // p = C_u / (K (1 + R_i^2)/(1 - R_i^2) + 1), larger for Table 1's C_u/T_u = 16.7.
   const double hoop = (1 + r_i * r_i) / (1 - r_i * r_i);
   const double p_crit = t_u / hoop;
-  const double k = std::pow(std::sqrt(1 + strength_spec.friction * strength_spec.friction) + strength_spec.friction, 2);
+  const double k = hm::analytic::coulomb_factor(strength_spec.friction);
   const double p_shear = strength_spec.compressive_strength / (k * hoop + 1);
 
   Table table{"First break of the annulus R_i = 0.138 (N = " + std::to_string(lattice.n_particles()) +

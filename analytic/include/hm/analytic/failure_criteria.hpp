@@ -2,10 +2,23 @@
 /// \file
 /// Principal stresses and the paper's failure criteria (Section 2.1, Eq. 11, Fig. 3). Tension positive.
 #include <array>
+#include <cmath>
 
 #include "hm/core/enum_names.hpp"
 
 namespace hm::analytic {
+
+/// In-plane principal stresses of (s_xx, s_yy, s_xy), sigma_1 >= sigma_3, without the angle (an atan2
+/// per call): the form for loops over every beam. principal_stresses gives the same two values.
+struct PrincipalPair {
+  double sigma_1;
+  double sigma_3;
+};
+inline PrincipalPair principal_pair(double s_xx, double s_yy, double s_xy) {
+  const double mean = 0.5 * (s_xx + s_yy);
+  const double radius = std::hypot(0.5 * (s_xx - s_yy), s_xy);
+  return {mean + radius, mean - radius};
+}
 
 /// Principal values of a symmetric 2D tensor, sigma_1 >= sigma_2, and the angle (rad) of sigma_1's
 /// direction from the x axis.
@@ -22,6 +35,12 @@ struct MajorMinor {
   double sigma_3;  ///< minor (most compressive)
 };
 MajorMinor major_minor(const std::array<double, 3>& principal);
+
+/// Eq. 11's factor K = [(1 + mu_i^2)^(1/2) + mu_i]^2 on sigma_1 (formed once for loops over every beam).
+inline double coulomb_factor(double friction) {
+  const double k = std::sqrt(1.0 + friction * friction) + friction;
+  return k * k;
+}
 
 /// Coulomb stress of Eq. 11: [(1 + mu_i^2)^(1/2) + mu_i]^2 sigma_1 - sigma_3 (tension positive;
 /// shear failure when it exceeds C_u). Equivalent to the compression-positive Coulomb line

@@ -34,10 +34,7 @@ using hm::analytic::FailureMode;
 /// loops over every beam (evaluate_failure, the break loop of fracture.hpp).
 class FailureCriterion {
  public:
-  explicit FailureCriterion(double friction) {
-    const double k = std::sqrt(1.0 + friction * friction) + friction;  // as hm::analytic::coulomb_stress
-    k_squared_ = k * k;
-  }
+  explicit FailureCriterion(double friction) : k_squared_(hm::analytic::coulomb_factor(friction)) {}
   /// max(sigma_1 / T_u, sigma_CC / C_u); mode none below 1, else the larger criterion (tensile on a tie).
   hm::analytic::FailureCheck check(double sigma_1, double sigma_3, double tensile_strength,
                                    double compressive_strength) const {

@@ -16,6 +16,7 @@
 
 #include <Eigen/Core>
 
+#include "hm/analytic/failure_criteria.hpp"
 #include "hm/lattice2d/mechanics/beam_stiffness.hpp"
 #include "hm/lattice2d/geometry/dual_graph.hpp"
 #include "hm/lattice2d/geometry/lattice.hpp"
@@ -106,18 +107,8 @@ struct BeamStress {
   Eigen::VectorXd crack_tip_factor;  ///< (L/2L_m)^(1/2) at a crack tip, else 1
 };
 
-/// In-plane principal stresses of (s_xx, s_yy, s_xy), sigma_1 >= sigma_3: hm::analytic::principal_stresses'
-/// sigma_1 and sigma_2 bit for bit (the same operations), without its angle (an atan2 per call), for
-/// the loops over every beam.
-struct PrincipalPair {
-  double sigma_1;
-  double sigma_3;
-};
-inline PrincipalPair principal_pair(double s_xx, double s_yy, double s_xy) {
-  const double mean = 0.5 * (s_xx + s_yy);
-  const double radius = std::hypot(0.5 * (s_xx - s_yy), s_xy);
-  return {mean + radius, mean - radius};
-}
+using hm::analytic::principal_pair;
+using hm::analytic::PrincipalPair;
 
 /// Beam stresses from particle stresses (Section 2.1: "the mean value of the stress in the particles
 /// that it connects", times the crack-tip factor). Computed for every beam, broken ones included
