@@ -19,7 +19,7 @@ for b, d in data.items():
     axes[2].plot(d["r"], d["sigma_r"], "--", color=line.get_color(), label=f"σr, b = {b:g}")
 axes[0].set(xlabel="$r/R$", ylabel="$p/E$", title="pressure (B3, b-independent)")
 axes[1].set(xlabel="$r/R$", ylabel="$u_r/R$", title="radial displacement (corrected B6)")
-axes[2].set(xlabel="$r/R$", ylabel="effective stress", title="σθ (solid), σr (dashed)")
+axes[2].set(xlabel="$r/R$", ylabel="effective stress $\\sigma'/E$", title="$\\sigma'_\\theta$ (solid), $\\sigma'_r$ (dashed)")
 axes[1].legend()
 axes[2].legend(ncol=2, fontsize=6)
 hmplot.save(fig, args.out, "verify_steady_borehole", sources=[args.data])
