@@ -431,17 +431,12 @@ Eigen::VectorXd FlowNetwork::stabilised(double dt, const Eigen::VectorXd& plain,
   const auto k = static_cast<Eigen::Index>(stabiliser.modes.size());
   assert(stabiliser.volume_response.cols() == k && stabiliser.volume_response.rows() == n_unknowns() &&
          "one volume response per mode");
-  if (stabiliser.solved_dt != dt || stabiliser.solved_response.cols() != k ||
-      stabiliser.is_solved.size() != static_cast<std::size_t>(k)) {
-    stabiliser.solved_response = Eigen::MatrixXd::Zero(n_unknowns(), k);
-    stabiliser.is_solved.assign(static_cast<std::size_t>(k), 0);
+  if (stabiliser.solved_dt != dt || stabiliser.solved_response.cols() != k) {
+    stabiliser.solved_response.resize(n_unknowns(), k);
+    for (Eigen::Index c = 0; c < k; ++c)
+      stabiliser.solved_response.col(c) = solver_->solve(Eigen::VectorXd(stabiliser.volume_response.col(c)));
     stabiliser.solved_dt = dt;
   }
-  for (Eigen::Index c = 0; c < k; ++c)
-    if (!stabiliser.is_solved[static_cast<std::size_t>(c)]) {
-      stabiliser.solved_response.col(c) = solver_->solve(Eigen::VectorXd(stabiliser.volume_response.col(c)));
-      stabiliser.is_solved[static_cast<std::size_t>(c)] = 1;
-    }
   const Eigen::MatrixXd& Z = stabiliser.solved_response;
   auto mode_sums = [&](const Eigen::VectorXd& x) {
     Eigen::VectorXd s = Eigen::VectorXd::Zero(k);

@@ -155,8 +155,8 @@ FlowParameters flow_parameters_of(const hm::analytic::DimensionlessParameters& p
 /// sees the rock's). Without it a fluid-filled crack, whose compliance is thousands of times its
 /// fluid's storage, makes the split diverge.
 ///
-/// The first solve() that uses mode c computes column c of Z = A_f^-1 V with the factor at hand and
-/// keeps it; every solve takes A Z as the response, A being its own matrix: V itself while the
+/// The first solve() with a stabiliser computes Z = A_f^-1 V with the factor at hand and keeps it;
+/// every solve of the same dt takes A Z as the response, A being its own matrix: V itself while the
 /// factor is that of the matrix, a nearby response once the deformed geometry has moved the matrix
 /// (or the factor is an older one, reuse_factorisation), at one solve per pass instead of one per
 /// mode. The fixed point is the same either way.
@@ -164,9 +164,8 @@ struct FlowStabiliser {
   Eigen::MatrixXd volume_response;        ///< V: n_unknowns x n_modes
   std::vector<std::vector<int>> modes;    ///< the unknowns of each mode
   Eigen::VectorXd reference_pressure;     ///< p_ref: the pressure the mechanics was solved with
-  Eigen::MatrixXd solved_response;        ///< Z, column c valid where is_solved[c]
-  std::vector<char> is_solved;            ///< per mode: its column of Z is solved (a kept one may be)
-  double solved_dt = -1.0;                ///< the dt of those solves (another dt solves them again)
+  Eigen::MatrixXd solved_response;        ///< Z (empty until the first solve)
+  double solved_dt = -1.0;                ///< the dt of that solve (another dt solves again)
 };
 
 struct FlowStepSummary {
