@@ -165,8 +165,9 @@ CaseKeys<RunCase> make_run_case_keys() {
             "...and the displacement's relative change is below this")
       .real("balance_tolerance", [](auto& c) -> auto& { return c.coupling.balance_tolerance; },
             "1e-10 <= value <= 1 (1: off)",
-            "...and the step's volume balance error is at most this (it is round-off unless fluid-filled cracks' "
-            "stabiliser is on: docs/fracture_convergence.md)")
+            "...and the run's volume balance error after the step is at most this (round-off unless fluid-filled "
+            "cracks' stabiliser is on: then the fluid it charged ahead of the opening, which the next step takes "
+            "back; docs/fracture_convergence.md)")
       .integer("max_iterations", [](auto& c) -> auto& { return c.coupling.max_iterations; }, 1, 1000000,
                "1 <= max_iterations <= 1e6", "cap on the passes of one step")
       .boolean("accept_unconverged", [](auto& c) -> auto& { return c.coupling.accept_unconverged; },

@@ -356,6 +356,7 @@ void FlowNetwork::save_state(core::StateWriter& w) const {
   w.put("flow.borehole_volume", borehole_volume_);
   w.put("flow.crack_weight", crack_weight_);
   w.put("flow.pressure", pressure_);
+  w.put("flow.charged_ahead", charged_ahead_);
   w.put("flow.totals", std::vector<double>{totals_.time, totals_.injected, totals_.storage, totals_.deformation,
                                            totals_.outflow, static_cast<double>(totals_.n_steps)});
   w.put("flow.matrix_values", std::vector<double>(solver_->matrix.valuePtr(),
@@ -383,6 +384,8 @@ void FlowNetwork::restore_state(core::StateReader& r) {
     throw InputError(r.source() + ": at 'flow.crack_weight': a weight outside [0, 1]");
   r.get("flow.pressure", pressure_);
   if (pressure_.size() != n_unknowns()) fail("flow.pressure");
+  r.get("flow.charged_ahead", charged_ahead_);
+  if (charged_ahead_.size() != 0 && charged_ahead_.size() != n_unknowns()) fail("flow.charged_ahead");
   std::vector<double> totals;
   r.get("flow.totals", totals);
   if (totals.size() != 6) fail("flow.totals");
@@ -490,6 +493,10 @@ FlowStepSummary FlowNetwork::solve(double dt, const Eigen::VectorXd& volume_chan
   const Eigen::VectorXd deformation = this->deformation(volume_change);
   Eigen::VectorXd rhs = storage_coefficient.cwiseProduct(pressure_) - deformation;
   rhs[has_borehole_ ? n_triangles_ : source_triangle_] += summary.injected;
+  if (charged_ahead_.size() > 0) {
+    rhs += charged_ahead_;
+    summary.resupplied = charged_ahead_.sum();
+  }
 
   summary.factorised = !factor_current && !factor_stale_;
   trial_pressure_ = solver_->solve(rhs);
@@ -523,7 +530,12 @@ FlowStepSummary FlowNetwork::solve(double dt, const Eigen::VectorXd& volume_chan
       trial_pressure_ = solver_->solve(rhs);
     }
   }
-  if (stabiliser) trial_pressure_ = stabilised(dt, trial_pressure_, *stabiliser);
+  trial_charged_ahead_.resize(0);
+  if (stabiliser) {
+    trial_pressure_ = stabilised(dt, trial_pressure_, *stabiliser);
+    trial_charged_ahead_ = rhs - solver_->matrix * trial_pressure_;
+    summary.charged_ahead = trial_charged_ahead_.sum();
+  }
   if (solver_->factorisation.info() != Eigen::Success || !trial_pressure_.allFinite()) {
     summary.message = "flow solve failed";
     return summary;
@@ -532,7 +544,9 @@ FlowStepSummary FlowNetwork::solve(double dt, const Eigen::VectorXd& volume_chan
   summary.storage = storage_coefficient.dot(trial_pressure_ - pressure_);
   summary.deformation = deformation.sum();
   summary.outflow = dt * outflow_rate(trial_pressure_);
-  summary.balance_error = relative_imbalance(summary.injected, summary.storage, summary.deformation, summary.outflow);
+  summary.balance_error =
+      relative_imbalance(totals_.injected + summary.injected, totals_.storage + summary.storage,
+                         totals_.deformation + summary.deformation, totals_.outflow + summary.outflow);
   summary.solved = true;
   trial_summary_ = summary;
   has_trial_ = true;
@@ -542,6 +556,8 @@ FlowStepSummary FlowNetwork::solve(double dt, const Eigen::VectorXd& volume_chan
 void FlowNetwork::accept() {
   assert(has_trial_ && "accept() needs a successful solve()");
   pressure_ = trial_pressure_;
+  charged_ahead_ = std::move(trial_charged_ahead_);
+  trial_charged_ahead_.resize(0);
   totals_.time = trial_summary_.time;
   totals_.injected += trial_summary_.injected;
   totals_.storage += trial_summary_.storage;

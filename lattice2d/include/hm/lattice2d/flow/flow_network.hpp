@@ -175,8 +175,15 @@ struct FlowStepSummary {
   double storage = 0.0;      ///< sum (E/M) V^{n+1} (p^{n+1} - p^n), borehole included if it stores (signed)
   double deformation = 0.0;  ///< b sum (V^{n+1} - V^n), triangles and (unless its term is off) borehole (signed)
   double outflow = 0.0;      ///< sum over outer segments dt (A/d_su) (p_s^{n+1} - 0) (signed)
+  /// Fluid the crack stabiliser charged to cracks ahead of their opening, V W^T (p - p_ref) = rhs - A p
+  /// summed over unknowns (signed; 0 without a stabiliser): in neither storage nor deformation, it is
+  /// missing from this step's balance, and the next step supplies it again, unknown by unknown, when the
+  /// mechanics opens the crack for it. So the stabiliser shifts fluid by one step and loses none.
+  double charged_ahead = 0.0;
+  double resupplied = 0.0;  ///< the previous step's charged_ahead, added to this step's supply
+  /// The run's volume balance after this step (FlowTotals with this step added):
   /// |injected - storage - deformation - outflow| / (|injected| + |storage| + |deformation| + |outflow|),
-  /// 0 when all four vanish.
+  /// 0 when all four vanish. Round-off, plus the last step's charged_ahead.
   double balance_error = 0.0;
   bool solved = false;  ///< the factorisation and solve succeeded
   bool factorised = false;  ///< this solve factorised the matrix (else it reused the last factor)
@@ -349,6 +356,10 @@ class FlowNetwork {
 
   Eigen::VectorXd pressure_;
   Eigen::VectorXd trial_pressure_;
+  // Per unknown, the fluid the last accepted stabilised solve charged ahead of the cracks' opening
+  // (rhs - A p), which the next step supplies again; empty when that solve had no stabiliser.
+  Eigen::VectorXd charged_ahead_;
+  Eigen::VectorXd trial_charged_ahead_;
   FlowStepSummary trial_summary_;
   bool has_trial_ = false;
   FlowTotals totals_;
