@@ -30,13 +30,18 @@ for name in sorted(os.listdir(runs)):
 table = pd.DataFrame(rows).sort_values(["t", "N", "seed"])
 table.to_csv(os.path.join(out, "summary.csv"), index=False, float_format="%.6g")
 means = table.groupby(["t", "N"]).mean(numeric_only=True).drop(columns=["seed"])
+spread = table.groupby(["t", "N"]).std(numeric_only=True)  # the seeds' standard deviation (NaN for one)
 counts = table.groupby(["t", "N"]).size()
 with open(os.path.join(out, "table.md"), "w") as f:
-    f.write("Means over the seeds that reached each time (saw-tooth Fig. 12 b = 0.2, G_f/(ER) = 2.34e-9).\n\n")
+    f.write("Means over the seeds that reached each time, ± their standard deviation (saw-tooth Fig. 12 b = 0.2, "
+                "G_f/(ER) = 2.34e-9).\n\n")
     f.write("| t* | N | seeds | p_h | teeth | dissipated | broken | arms (3 beams) | arms (gap 0.03 R) | radial | at r = 1 "
             "| max radial extent | secondaries | sizable secondaries |\n|" + "---|" * 14 + "\n")
     for (t, n), m in means.iterrows():
-        f.write(f"| {t:g} | {n} | {counts[(t, n)]} | {m.p_h:.3e} | {m.teeth:.0f} | {m.dissipated:.3e} | {m.broken:.0f} | "
+        sd = spread.loc[(t, n)]
+        pm = (lambda v, fmt: "" if pd.isna(v) else f" ± {v:{fmt}}")
+        f.write(f"| {t:g} | {n} | {counts[(t, n)]} | {m.p_h:.3e}{pm(sd.p_h, '.1e')} | {m.teeth:.0f} | "
+                f"{m.dissipated:.3e}{pm(sd.dissipated, '.1e')} | {m.broken:.0f}{pm(sd.broken, '.0f')} | "
                 f"{m.arms_3_beams:.1f} | {m['arms_gap_0.03']:.1f} | {m.radial:.1f} | {m.reaching_r1:.1f} | "
                 f"{m.max_radial_extent:.3f} | {m.secondary:.0f} | {m.secondary_sizable:.1f} |\n")
 print(f"wrote {out}/summary.csv and table.md ({len(table)} rows)")
