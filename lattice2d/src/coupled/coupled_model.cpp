@@ -458,14 +458,23 @@ void CoupledModel::update_crack_stabiliser(bool keep_unchanged_modes) {
   }
   stabiliser_weights_ = weights;
   const Eigen::VectorXd& u = mechanics_->displacement();
-  // (Its flow solve A^-1 V is not kept: the event changed the flow matrix too, by up to iota times a
-  // facet's conductance, and A (A^-1 V) with the old solve would be far from V.)
+  // A kept crack keeps its flow solve A^-1 V too, which the flow solves again if the event changed
+  // the cracks' conductances (FlowStabiliser).
   FlowStabiliser& next = crack_stabiliser_;
   next.volume_response = Eigen::MatrixXd::Zero(flow_->n_unknowns(), k);
+  next.solved_response = Eigen::MatrixXd::Zero(flow_->n_unknowns(), k);
+  next.solved.assign(static_cast<std::size_t>(k), 0);
+  next.solved_dt = previous.solved_dt;
+  next.solved_conductances = previous.solved_conductances;
   for (Eigen::Index c = 0; c < k; ++c) {
     const std::vector<int>& mode = next.modes[static_cast<std::size_t>(c)];
     if (const auto old = kept.find(mode); old != kept.end()) {
       next.volume_response.col(c) = previous.volume_response.col(old->second);
+      const auto o = static_cast<std::size_t>(old->second);
+      if (o < previous.solved.size() && previous.solved[o]) {
+        next.solved_response.col(c) = previous.solved_response.col(old->second);
+        next.solved[static_cast<std::size_t>(c)] = 1;
+      }
       continue;
     }
     Eigen::VectorXd unit = Eigen::VectorXd::Zero(flow_->n_unknowns());

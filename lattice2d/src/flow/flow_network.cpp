@@ -247,7 +247,12 @@ void FlowNetwork::set_crack_weights(const Eigen::VectorXd& weights) {
   assert((weights.array() >= 0.0).all() && (weights.array() <= 1.0).all() && "weights in [0, 1]");
   if (weights.size() == crack_weight_.size() && weights == crack_weight_) return;
   crack_weight_ = weights;
-  factor_stale_ = cracks_changed_ = true;
+  factor_stale_ = true;
+  // With iota = 1 a crack conducts as the rock (conductance(): exactly c), so the matrix is unchanged.
+  if (parameters_.fracture_flow.law == FractureFlow::transmissivity || parameters_.iota != 1.0) {
+    cracks_changed_ = true;
+    ++crack_conductance_changes_;
+  }
 }
 
 void FlowNetwork::set_broken(const std::vector<bool>& broken) {
@@ -402,6 +407,7 @@ void FlowNetwork::restore_state(core::StateReader& r) {
   // Not saved: a step that changes the cracks solves the flow after, which factorises when it is
   // stabilised, so between steps it is false wherever it is read.
   cracks_changed_ = false;
+  ++crack_conductance_changes_;
   r.get("flow.refresh_factor", refresh_factor_);
   // The factor is a function of the matrix it was computed from: refactorising those values gives it
   // bitwise (a reused factor may be older than the current matrix, which is restored after it).
@@ -434,11 +440,18 @@ Eigen::VectorXd FlowNetwork::stabilised(double dt, const Eigen::VectorXd& plain,
   const auto k = static_cast<Eigen::Index>(stabiliser.modes.size());
   assert(stabiliser.volume_response.cols() == k && stabiliser.volume_response.rows() == n_unknowns() &&
          "one volume response per mode");
-  if (stabiliser.solved_dt != dt || stabiliser.solved_response.cols() != k) {
-    stabiliser.solved_response.resize(n_unknowns(), k);
-    for (Eigen::Index c = 0; c < k; ++c)
-      stabiliser.solved_response.col(c) = solver_->solve(Eigen::VectorXd(stabiliser.volume_response.col(c)));
+  if (stabiliser.solved_dt != dt || stabiliser.solved_conductances != crack_conductance_changes_ ||
+      stabiliser.solved_response.cols() != k ||
+      stabiliser.solved_response.rows() != n_unknowns() || stabiliser.solved.size() != static_cast<std::size_t>(k)) {
+    stabiliser.solved_response = Eigen::MatrixXd::Zero(n_unknowns(), k);
+    stabiliser.solved.assign(static_cast<std::size_t>(k), 0);
     stabiliser.solved_dt = dt;
+    stabiliser.solved_conductances = crack_conductance_changes_;
+  }
+  for (Eigen::Index c = 0; c < k; ++c) {
+    if (stabiliser.solved[static_cast<std::size_t>(c)]) continue;
+    stabiliser.solved_response.col(c) = solver_->solve(Eigen::VectorXd(stabiliser.volume_response.col(c)));
+    stabiliser.solved[static_cast<std::size_t>(c)] = 1;
   }
   const Eigen::MatrixXd& Z = stabiliser.solved_response;
   auto mode_sums = [&](const Eigen::VectorXd& x) {

@@ -155,17 +155,21 @@ FlowParameters flow_parameters_of(const hm::analytic::DimensionlessParameters& p
 /// sees the rock's). Without it a fluid-filled crack, whose compliance is thousands of times its
 /// fluid's storage, makes the split diverge.
 ///
-/// The first solve() with a stabiliser computes Z = A_f^-1 V with the factor at hand and keeps it;
-/// every solve of the same dt takes A Z as the response, A being its own matrix: V itself while the
-/// factor is that of the matrix, a nearby response once the deformed geometry has moved the matrix
-/// (or the factor is an older one, reuse_factorisation), at one solve per pass instead of one per
-/// mode. The fixed point is the same either way.
+/// solve() computes Z = A_f^-1 V with the factor at hand, column by column where a column is not
+/// solved yet, and keeps it; every solve of the same dt takes A Z as the response, A being its own
+/// matrix: V itself while the factor is that of the matrix, a nearby response once the deformed
+/// geometry has moved the matrix (or the factor is an older one, reuse_factorisation), at one solve
+/// per pass instead of one per mode. The fixed point is the same either way. A change of the cracks'
+/// conductances (iota != 1) refactorises and solves every column again: an older Z would put A Z far
+/// from V, by up to iota times a facet's conductance.
 struct FlowStabiliser {
   Eigen::MatrixXd volume_response;        ///< V: n_unknowns x n_modes
   std::vector<std::vector<int>> modes;    ///< the unknowns of each mode
   Eigen::VectorXd reference_pressure;     ///< p_ref: the pressure the mechanics was solved with
-  Eigen::MatrixXd solved_response;        ///< Z (empty until the first solve)
-  double solved_dt = -1.0;                ///< the dt of that solve (another dt solves again)
+  Eigen::MatrixXd solved_response;        ///< Z: n_unknowns x n_modes where solved
+  std::vector<char> solved;               ///< per mode: its column of Z is A_f^-1 V for solved_dt
+  double solved_dt = -1.0;                ///< the dt of those solves (another dt solves again)
+  long solved_conductances = -1;          ///< FlowNetwork::crack_conductance_changes() at those solves
 };
 
 struct FlowStepSummary {
@@ -275,6 +279,9 @@ class FlowNetwork {
   /// The cracks as sets of unknowns: the triangles (and the borehole) joined by the connections of
   /// beams with a crack weight above 0, one set per connected crack, in order of their first unknown.
   std::vector<std::vector<int>> crack_modes() const { return crack_modes(crack_weight_); }
+  /// How many times the cracks' conductances have changed in this object's life (set_crack_weights with
+  /// iota != 1 or a transmissivity, restore_state): a stabiliser's Z of another count is stale.
+  long crack_conductance_changes() const { return crack_conductance_changes_; }
   /// The same for other weights (size n_beams).
   std::vector<std::vector<int>> crack_modes(const Eigen::VectorXd& weights) const;
 
@@ -369,6 +376,7 @@ class FlowNetwork {
   bool factor_stale_ = false;    // geometry or iota changed since: refine with the old factor
   bool refresh_factor_ = false;  // the last refinement was slow: refactorise at the next solve
   bool cracks_changed_ = false;  // crack weights changed since the last factorisation
+  long crack_conductance_changes_ = 0;  // never restored: a count that only grows never repeats
 };
 
 }  // namespace hm::lattice2d
