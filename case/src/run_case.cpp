@@ -166,8 +166,8 @@ CaseKeys<RunCase> make_run_case_keys() {
       .real("balance_tolerance", [](auto& c) -> auto& { return c.coupling.balance_tolerance; },
             "1e-10 <= value <= 1 (1: off)",
             "...and the run's volume balance error after the step is at most this (round-off unless fluid-filled "
-            "cracks' stabiliser is on: then the fluid it charged ahead of the opening, which the next step takes "
-            "back; docs/fracture_convergence.md)")
+            "cracks' stabiliser is on: then the fluid it charged ahead of the opening, which the next step supplies "
+            "again; docs/fracture_convergence.md)")
       .integer("max_iterations", [](auto& c) -> auto& { return c.coupling.max_iterations; }, 1, 1000000,
                "1 <= max_iterations <= 1e6", "cap on the passes of one step")
       .boolean("accept_unconverged", [](auto& c) -> auto& { return c.coupling.accept_unconverged; },

@@ -249,10 +249,8 @@ void FlowNetwork::set_crack_weights(const Eigen::VectorXd& weights) {
   crack_weight_ = weights;
   factor_stale_ = true;
   // With iota = 1 a crack conducts as the rock (conductance(): exactly c), so the matrix is unchanged.
-  if (parameters_.fracture_flow.law == FractureFlow::transmissivity || parameters_.iota != 1.0) {
-    cracks_changed_ = true;
+  if (parameters_.fracture_flow.law == FractureFlow::transmissivity || parameters_.iota != 1.0)
     ++crack_conductance_changes_;
-  }
 }
 
 void FlowNetwork::set_broken(const std::vector<bool>& broken) {
@@ -348,7 +346,8 @@ std::string FlowNetwork::factorise(double dt) {
   const std::string error = solver_->factorise(solver_->factorisation, solver_->matrix, values);
   solver_->factor_values = std::move(values);
   factorised_dt_ = error.empty() ? dt : -1.0;
-  factor_stale_ = cracks_changed_ = false;
+  factor_stale_ = false;
+  factorised_conductances_ = crack_conductance_changes_;
   refresh_factor_ = false;
   return error;
 }
@@ -405,9 +404,9 @@ void FlowNetwork::restore_state(core::StateReader& r) {
   r.get("flow.factorised_dt", factorised_dt_);
   r.get("flow.factor_stale", factor_stale_);
   // Not saved: a step that changes the cracks solves the flow after, which factorises when it is
-  // stabilised, so between steps it is false wherever it is read.
-  cracks_changed_ = false;
-  ++crack_conductance_changes_;
+  // stabilised, so between steps the factor knows the cracks wherever that is read. The count moves on,
+  // so that no stabiliser's Z from before the restore is taken for current.
+  factorised_conductances_ = ++crack_conductance_changes_;
   r.get("flow.refresh_factor", refresh_factor_);
   // The factor is a function of the matrix it was computed from: refactorising those values gives it
   // bitwise (a reused factor may be older than the current matrix, which is restored after it).
@@ -496,7 +495,8 @@ FlowStepSummary FlowNetwork::solve(double dt, const Eigen::VectorXd& volume_chan
   const bool factor_current = factorised_dt_ == dt && !factor_stale_;  // reused as it is, no factorisation
   // A stabiliser's A^-1 V comes from the factor at hand, which must know the cracks as they are: with
   // an older factor a changed crack would put A (A^-1 V) far from V, by up to iota times.
-  summary.message = stabiliser && cracks_changed_ ? factorise(dt) : factorise_if_needed(dt);
+  summary.message = stabiliser && factorised_conductances_ != crack_conductance_changes_ ? factorise(dt)
+                                                                                      : factorise_if_needed(dt);
   if (!summary.message.empty()) return summary;
 
   Eigen::VectorXd storage_coefficient(n);

@@ -375,8 +375,8 @@ class FlowNetwork {
   double factorised_dt_ = -1.0;  // dt of the current numeric factorisation; < 0: none
   bool factor_stale_ = false;    // geometry or iota changed since: refine with the old factor
   bool refresh_factor_ = false;  // the last refinement was slow: refactorise at the next solve
-  bool cracks_changed_ = false;  // crack weights changed since the last factorisation
   long crack_conductance_changes_ = 0;  // never restored: a count that only grows never repeats
+  long factorised_conductances_ = 0;    // that count at the last factorisation (else the cracks changed)
 };
 
 }  // namespace hm::lattice2d
