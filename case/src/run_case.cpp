@@ -157,6 +157,11 @@ CaseKeys<RunCase> make_run_case_keys() {
             "0 < xi <= 1e3 (1 by the divergence theorem; 1e12 swamps the beams)", "xi, scaling of the pressure force (Eq. 17)")
       .choice("broken_beam_spring", [](auto& c) -> auto& { return c.coupling.terms.broken_beam_spring; },
               "the Psi spring of a beam that breaks: kept, or dropped with the beam (docs/coupling.md)")
+      .choice("borehole_spring", [](auto& c) -> auto& { return c.coupling.terms.borehole_spring; },
+              "the borehole fluid inside a mechanical solve (a break cascade): none (its pressure is the pass's "
+              "guess), or undrained (its wall is held by the hole's undrained stiffness, relaxed at the pass "
+              "iterate; needs [lattice] domain = \"annulus\" and [flow] borehole_storage and borehole_deformation "
+              "not \"none\"; docs/coupling.md)")
       .real("pressure_tolerance", [](auto& c) -> auto& { return c.coupling.pressure_tolerance; },
             "1e-10 <= value < 1 (a pass's change stalls at round-off, ~1e-11)",
             "a step has converged when the pressure's change between passes, relative to its largest value, is below this...")
@@ -198,7 +203,15 @@ CaseKeys<RunCase> make_run_case_keys() {
               "with [flow] crack_coupling = \"full\": each crack's response to a uniform pressure in the flow "
               "solve (same fixed point; without it a fluid-filled crack's passes stall or diverge), or none "
               "(docs/coupling.md)")
-      .check([](CaseTable&, CaseTable&, RunCase& c) { c.coupling.validate(); });
+      .check([](CaseTable& coupling, CaseTable&, RunCase& c) {
+        c.coupling.validate();
+        if (c.coupling.terms.borehole_spring != lt::BoreholeSpring::undrained) return;
+        if (c.lattice.domain != lt::DomainShape::annulus)
+          coupling.fail("borehole_spring = \"undrained\", allowed: only with [lattice] domain = \"annulus\" (a borehole)");
+        if (c.borehole_storage == lt::BoreholeStorage::none || c.borehole_deformation == lt::BoreholeDeformation::none)
+          coupling.fail("borehole_spring = \"undrained\", allowed: only with [flow] borehole_storage and "
+                        "borehole_deformation not \"none\" (the hole's volume must set its pressure)");
+      });
   k.table("numerics")
       .real("dt_initial", [](auto& c) -> auto& { return c.stepping.dt_initial; }, "> 0, finite, <= t_end", "first time step")
       // 1.2: the shipped cases' growth; dt_initial = 1e-6 with a constant step would take 27,200 steps

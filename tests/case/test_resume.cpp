@@ -133,3 +133,28 @@ TEST_CASE("A checkpoint is refused, the folder untouched, when its case was edit
   r = run_hmlattice("run case.toml --resume part", dir.path);
   CHECK(r.exit_code == 2);
 }
+
+TEST_CASE("With the borehole's undrained spring a stopped and resumed run is bitwise the uninterrupted one",
+          "[case][cli]") {
+  // The spring keeps K^-1 g of the current factor; the checkpoint carries it. A water-filled borehole
+  // (its volume sets its pressure), Q = 0.04 so that the wall breaks before t* = 0.0045: none broken by
+  // step 18, 35 by step 21, 179 at the end (step 27). Stops at 22 and 25, amid the breaks.
+  TempDir dir("run-resume-borehole-spring");
+  dir.write("case.toml", hm::test::edited(fig12_to_first_snapshot(),
+                                          {{"\nQ = 0.01", "\nQ = 0.04"},
+                                           {"borehole_storage = \"none\"", "borehole_storage = \"fluid\""},
+                                           {"borehole_deformation = \"none\"", "borehole_deformation = \"full\""},
+                                           {"split = \"undrained\"", "split = \"undrained\"\nborehole_spring = \"undrained\""}}));
+  REQUIRE(run_hmlattice("run case.toml --out whole", dir.path).exit_code == 0);
+  const std::string breaks = slurp(dir.path / "whole/breaks.csv");
+  CHECK(count_lines(breaks) > 100);
+  REQUIRE(run_hmlattice("run case.toml --out part --stop-after-steps 22", dir.path).exit_code == 0);
+  REQUIRE(run_hmlattice("run --resume part --stop-after-steps 25", dir.path).exit_code == 0);
+  const auto r = run_hmlattice("run --resume part", dir.path);
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  for (const auto& file : result_files) {
+    INFO(file);
+    CHECK(slurp(dir.path / "part" / file) == slurp(dir.path / "whole" / file));
+  }
+}

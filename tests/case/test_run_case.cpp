@@ -93,6 +93,14 @@ TEST_CASE("Bad 2D cases are rejected with one line naming table, key, value and 
            "case.toml: [physics] iota = 1000, allowed: 1 with [flow] fracture_flow = \"transmissivity\"");
   rejected(physics + "[coupling]\nbroken_beam_spring = \"soft\"\n",
            "case.toml: [coupling] broken_beam_spring = 'soft', allowed: keep, drop");
+  rejected(physics + "[coupling]\nborehole_spring = \"soft\"\n",
+           "case.toml: [coupling] borehole_spring = 'soft', allowed: none, undrained");
+  rejected(physics + "[coupling]\nborehole_spring = \"undrained\"\n",
+           "case.toml: [coupling] borehole_spring = \"undrained\", allowed: only with [lattice] domain = \"annulus\"");
+  rejected("[physics]\nQ = 0.1\n[lattice]\ndomain = \"annulus\"\n[flow]\nborehole_storage = \"none\"\n"
+           "[coupling]\nborehole_spring = \"undrained\"\n",
+           "case.toml: [coupling] borehole_spring = \"undrained\", allowed: only with [flow] borehole_storage and "
+           "borehole_deformation not \"none\"");
   rejected(physics + "[flow]\nreuse_factorisation = 1\n", "case.toml: [flow] reuse_factorisation = ");
   rejected(physics + "[coupling]\nrelaxation = \"secant\"\n", "case.toml: [coupling] relaxation = 'secant', allowed: ");
   rejected(physics + "[coupling]\nanderson_depth = 0\n", "case.toml: [coupling] anderson_depth = 0, allowed: 1 ... 50");

@@ -23,6 +23,14 @@ FlowParameters rudnicki_flow() {
   return flow;
 }
 
+// The annulus tests' borehole: Q = 0.01, b = 0.5, the paper's Eq. 16 node.
+FlowParameters borehole_flow() {
+  FlowParameters flow;
+  flow.Q = 0.01;
+  flow.b = 0.5;
+  return flow;
+}
+
 CoupledModel make_model(const Lattice& lattice, CouplingOptions options, BoundarySupport outer = BoundarySupport::free) {
   BoundaryConditions bc;
   bc.outer = outer;
@@ -220,9 +228,7 @@ TEST_CASE("In a borehole the plain loop diverges and is reported: Aitken relaxat
           "[lattice2d]") {
   // The borehole node's feedback: the wall traction p_h moves the wall, b dV_h changes p_h by
   // ~ b dV_h / ((E/M) V_h), a loop gain ~2 at Table 1's E/M (measured residual ratio 1.93 per pass).
-  FlowParameters flow;
-  flow.Q = 0.01;
-  flow.b = 0.5;
+  FlowParameters flow = borehole_flow();
   const Lattice annulus = make_lattice(DomainShape::annulus, 2000);
   CouplingOptions options;
   SECTION("plain: not converged, state kept") {
@@ -262,6 +268,45 @@ TEST_CASE("In a borehole the plain loop diverges and is reported: Aitken relaxat
   }
 }
 
+TEST_CASE("The borehole's undrained spring converges the plain loop in a borehole, at the fixed point found without it",
+          "[lattice2d]") {
+  // The loop gain ~2 through the borehole (above) is the hole's undrained response missing from the
+  // mechanics; with beta_h / s_h g g^T in it, relaxed at the iterate, the plain loop contracts.
+  FlowParameters flow = borehole_flow();
+  const Lattice annulus = make_lattice(DomainShape::annulus, 2000);
+  CouplingOptions sprung;
+  sprung.relaxation = CouplingRelaxation::none;
+  sprung.terms.borehole_spring = BoreholeSpring::undrained;
+  // This borehole's passes stall at a change of ~5e-9 with or without the spring (Aitken without it:
+  // ~3e-9; the first steps' borehole pressure is ~1e-6): 1e-8 is reached.
+  sprung.pressure_tolerance = sprung.displacement_tolerance = 1e-8;
+  sprung.max_iterations = 60;
+  CouplingOptions reference = sprung;
+  reference.terms.borehole_spring = BoreholeSpring::none;
+  reference.relaxation = CouplingRelaxation::anderson;
+  reference.max_iterations = 200;
+  CoupledModel a(annulus, BeamParameters{}, BoundaryConditions{}, MechanicsOptions{}, flow, sprung);
+  CoupledModel b(annulus, BeamParameters{}, BoundaryConditions{}, MechanicsOptions{}, flow, reference);
+  for (int n = 0; n < 3; ++n) {
+    const CoupledStepSummary sa = a.step(1e-5 * (n + 1)), sb = b.step(1e-5 * (n + 1));
+    REQUIRE(sa.status == CoupledStatus::converged);
+    REQUIRE(sb.status == CoupledStatus::converged);
+    CHECK(sa.flow.balance_error <= 1e-8);
+    std::printf("borehole, step %d: plain loop with the borehole spring %d passes, Anderson without it %d\n", n + 1,
+                sa.iterations, sb.iterations);
+  }
+  // Both stop at a relative change of 1e-8 per pass; the fixed points agree to a hundred times that
+  // (the slower loop's contraction factor amplifies its last change).
+  CHECK(max_abs(a.pressure() - b.pressure()) < 1e-6 * max_abs(a.pressure()));
+  CHECK(max_abs(a.displacement() - b.displacement()) < 1e-6 * max_abs(a.displacement()));
+  SECTION("refused without a borehole storage, whose volume then sets no pressure") {
+    flow.borehole_storage = BoreholeStorage::none;
+    flow.borehole_deformation = BoreholeDeformation::none;
+    REQUIRE_THROWS_WITH(CoupledModel(annulus, BeamParameters{}, BoundaryConditions{}, MechanicsOptions{}, flow, sprung),
+                        Catch::Contains("borehole_spring"));
+  }
+}
+
 TEST_CASE("The linear predictor reaches the same states as the previous-state start, in fewer passes", "[lattice2d]") {
   // The borehole of Fig. 12 without fracture: continuous injection, Anderson as in the cases.
   FlowParameters flow;
@@ -294,3 +339,4 @@ TEST_CASE("The linear predictor reaches the same states as the previous-state st
   CHECK(max_abs(u1 - u0) < 1e-7 * max_abs(u0));
   CHECK(linear_passes < previous_passes);
 }
+

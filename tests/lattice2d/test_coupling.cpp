@@ -346,3 +346,131 @@ TEST_CASE("A crack's opening volume is work-conjugate to the full pressure on it
   opened.segment<2>(3 * i) = opened.segment<2>(3 * j);
   CHECK(crack_opening_volumes(lattice, dual, one, opened).cwiseAbs().maxCoeff() < 1e-20);
 }
+
+TEST_CASE("The borehole's volume gradient is the wall traction per unit pressure and the wall polygon's area change",
+          "[lattice2d]") {
+  const Lattice lattice = make_lattice(DomainShape::annulus, 2000);
+  const DualGraph dual = build_dual_graph(lattice);
+  const Eigen::VectorXd g = borehole_volume_gradient(lattice);
+  // The wall traction of a unit borehole pressure with b = 0 (no Voronoi-segment forces): the same bits.
+  Eigen::VectorXd unit_hole = Eigen::VectorXd::Zero(lattice.n_triangles() + 1);
+  unit_hole[lattice.n_triangles()] = 1.0;
+  CHECK(g == pressure_forces(lattice, dual, unit_hole, 0.0, CouplingTerms{}));
+  // The area of the wall polygon (the flow's V_h) moved by eps du changes by eps g.du + O(eps^2).
+  FlowParameters parameters;
+  parameters.Q = 0.1;
+  parameters.b = 0.5;
+  FlowNetwork flow(lattice, dual, parameters);
+  const double V0 = flow.borehole_volume();
+  Eigen::VectorXd du = Eigen::VectorXd::Zero(g.size());
+  for (int i = 0; i < lattice.n_particles(); ++i) {  // a smooth field that stretches, shears and turns the wall
+    const Eigen::Vector2d x = lattice.points.col(i);
+    du[dof_index(i, 0)] = 0.3 * x.x() + 0.2 * x.y() + std::sin(7.0 * x.y());
+    du[dof_index(i, 1)] = -0.1 * x.x() + 0.4 * x.y() + std::cos(5.0 * x.x());
+  }
+  for (const double eps : {1e-4, 1e-5}) {
+    Eigen::Matrix2Xd x = lattice.points;
+    for (int i = 0; i < lattice.n_particles(); ++i) x.col(i) += eps * Eigen::Vector2d(du[dof_index(i, 0)], du[dof_index(i, 1)]);
+    flow.update_geometry(build_dual_graph(lattice, x), x);
+    const double dV = flow.borehole_volume() - V0;
+    // The polygon's area is quadratic in the positions: the error is O(eps^2 |du|^2), here < 1e-3
+    // of the first-order term at eps = 1e-4.
+    CHECK(dV == Approx(eps * g.dot(du)).epsilon(10.0 * eps));
+  }
+  // A rigid motion leaves the hole's volume alone: g is orthogonal to translations and rotations.
+  double tx = 0.0, ty = 0.0, turn = 0.0, scale = 0.0;
+  for (int i = 0; i < lattice.n_particles(); ++i) {
+    tx += g[dof_index(i, 0)];
+    ty += g[dof_index(i, 1)];
+    turn += -lattice.points(1, i) * g[dof_index(i, 0)] + lattice.points(0, i) * g[dof_index(i, 1)];
+    scale += std::abs(g[dof_index(i, 0)]) + std::abs(g[dof_index(i, 1)]);
+  }
+  CHECK(std::abs(tx) < 1e-14 * scale);
+  CHECK(std::abs(ty) < 1e-14 * scale);
+  CHECK(std::abs(turn) < 1e-14 * scale);
+}
+
+TEST_CASE("The borehole's undrained spring is beta_h / s_h g g^T, and refused where the hole's volume sets no pressure",
+          "[lattice2d]") {
+  const Lattice lattice = make_lattice(DomainShape::annulus, 1000);
+  const RankOneStiffness spring = borehole_spring(lattice, 0.25, 0.5);
+  CHECK(spring.stiffness() == 2.0);
+  CHECK(spring.vector() == borehole_volume_gradient(lattice));
+  REQUIRE_THROWS_WITH(borehole_spring(lattice, 0.0, 1.0), Catch::Contains("coupling.borehole_spring") &&
+                                                              Catch::Contains("borehole_storage"));
+  REQUIRE_THROWS_AS(borehole_spring(lattice, 1.0, 0.0), hm::InputError);
+}
+
+TEST_CASE("A rank-1 stiffness solved by Sherman-Morrison equals the assembled matrix's solve, through breaks",
+          "[lattice2d]") {
+  // The annulus pressed from its borehole, with the hole's spring k g g^T (k of the order of a water-filled
+  // hole's beta_h / s_h = K_w / (E V_h)), against an independent sparse LDL' of K_ff + k g_f g_f^T.
+  const Lattice lattice = make_lattice(DomainShape::annulus, 1500);
+  const DualGraph dual = build_dual_graph(lattice);
+  const Eigen::VectorXd g = borehole_volume_gradient(lattice);
+  const double k = 1.0 / (4.5 * 0.06);
+  BoundaryConditions bc;
+  bc.inner_pressure = 1e-4;
+  bc.outer = BoundarySupport::fixed;  // no pin: the reported displacement is the solved one
+  BeamMechanics mechanics(lattice, BeamParameters{}, bc);
+  mechanics.set_rank_one_stiffness(RankOneStiffness(g, k));
+  // K_ff + k g_f g_f^T assembled (dense) from the solver's matrix, and the displacement and the loads
+  // on the free dofs: an independent check of the Sherman-Morrison solve (held dofs are at 0 here).
+  const auto assembled_residual = [&] {
+    std::vector<int> free;
+    for (int d = 0; d < g.size(); ++d)
+      if (!mechanics.held_dofs()[static_cast<std::size_t>(d)]) free.push_back(d);
+    const auto n = static_cast<Eigen::Index>(free.size());
+    Eigen::VectorXd gf(n), uf(n), ff(n);
+    const Eigen::VectorXd f = mechanics.loads();
+    for (Eigen::Index a = 0; a < n; ++a) {
+      gf[a] = g[free[static_cast<std::size_t>(a)]];
+      uf[a] = mechanics.displacement()[free[static_cast<std::size_t>(a)]];
+      ff[a] = f[free[static_cast<std::size_t>(a)]];
+    }
+    const Eigen::MatrixXd A = Eigen::MatrixXd(mechanics.solver().matrix()) + k * gf * gf.transpose();
+    return (A * uf - ff).cwiseAbs().maxCoeff() / ff.cwiseAbs().maxCoeff();
+  };
+  MechanicsSummary solved = mechanics.solve();
+  REQUIRE(solved.is_converged());
+  // reactions() includes the term: the free dofs balance to round-off; so does the assembled matrix.
+  CHECK(solved.equilibrium_residual < 1e-10);
+  CHECK(assembled_residual() < 1e-10);
+  // The spring resists the hole's growth: less opening than the beams alone.
+  BeamMechanics beams_only(lattice, BeamParameters{}, bc);
+  REQUIRE(beams_only.solve().is_converged());
+  const double opening = g.dot(mechanics.displacement()), opening_beams = g.dot(beams_only.displacement());
+  CHECK(opening > 0.0);
+  CHECK(opening < 0.8 * opening_beams);
+  // Exactly as much less as the rank-1 term says: the hole's opening with the spring is the beams'
+  // opening over 1 + k g.K^-1 g (Sherman-Morrison on g.u), to round-off.
+  const Eigen::VectorXd K_inv_g = beams_only.linear_response(g);
+  CHECK(opening == Approx(opening_beams / (1.0 + k * g.dot(K_inv_g))).epsilon(1e-9));
+  // After breaks at the wall (the factor downdated: K^-1 g must be solved again) the same identities.
+  // Hoop beams crossing y = 0 just outside the wall: in hoop tension, so they open in both models
+  // (the same matrix K).
+  std::vector<int> cut;
+  for (int e = 0; e < lattice.n_beams(); ++e) {
+    const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
+    const Eigen::Vector2d mid = 0.5 * (lattice.points.col(i) + lattice.points.col(j));
+    if (lattice.beam_boundary[static_cast<std::size_t>(e)] == BoundaryTag::interior && mid.x() > 0.0 &&
+        mid.x() < lattice.spec.inner_radius + 0.08 && std::abs(mid.y()) < 0.03 &&
+        std::abs(lattice.direction(1, e)) > 0.7)
+      cut.push_back(e);
+  }
+  REQUIRE(cut.size() >= 2);
+  for (int e : cut) {
+    mechanics.break_beam(e);
+    beams_only.break_beam(e);
+  }
+  solved = mechanics.solve();
+  REQUIRE(solved.is_converged());
+  REQUIRE(beams_only.solve().is_converged());
+  CHECK(mechanics.states() == beams_only.states());  // the same open and contact beams: the same K
+  CHECK(solved.equilibrium_residual < 1e-10);
+  const double opening_cut = g.dot(mechanics.displacement()), opening_beams_cut = g.dot(beams_only.displacement());
+  CHECK(opening_beams_cut > opening_beams);  // the breaks soften the wall
+  CHECK(opening_cut == Approx(opening_beams_cut / (1.0 + k * g.dot(beams_only.linear_response(g)))).epsilon(1e-9));
+  // The kept K^-1 g was solved again for the downdated factor: the assembled matrix agrees.
+  CHECK(assembled_residual() < 1e-10);
+}

@@ -95,6 +95,14 @@ CoupledModel::CoupledModel(Lattice lattice, const BeamParameters& beams, const B
   springs_ = undrained_spring_stiffness(mechanics_->lattice(), reference_dual_, flow.b, flow.E_over_M, options_.terms);
   // The springs go into the matrix once (one refactorisation); Psi = 0 leaves the dry matrix as it is.
   if (options_.terms.psi > 0.0) mechanics_->set_normal_springs(springs_, options_.terms.broken_beam_spring);
+  if (options_.terms.borehole_spring == BoreholeSpring::undrained) {
+    if (!flow_->has_borehole())
+      throw hm::InputError("coupling.borehole_spring = \"undrained\", allowed: only with a borehole (lattice.domain = annulus)");
+    // At the undeformed hole's storage: V_h changes by the strains (~1e-4), and the spring only sets
+    // the passes' path.
+    mechanics_->set_rank_one_stiffness(borehole_spring(mechanics_->lattice(), flow_->borehole_storage_coefficient(),
+                                                       flow_->borehole_deformation_coefficient()));
+  }
   displacement_ = Eigen::VectorXd::Zero(3 * mechanics_->lattice().n_particles());
   volume_ = unknown_volumes(reference_dual_.triangle_area);
   unloaded_ = conditions.is_unloaded();
@@ -200,6 +208,8 @@ CoupledStepSummary CoupledModel::settle() {
   // springs belong to the split, not to the rock: they are out of the matrix for this solve.
   const bool sprung = options_.terms.psi > 0.0;
   if (sprung) mechanics_->set_normal_springs(Eigen::VectorXd());
+  RankOneStiffness borehole = mechanics_->rank_one_stiffness();  // the split's too: out at rest
+  mechanics_->set_rank_one_stiffness({});
   mechanics_->set_external_forces(Eigen::VectorXd::Zero(3 * lattice().n_particles()));
   bool ok = true;
   if (fracture_) {
@@ -217,6 +227,7 @@ CoupledStepSummary CoupledModel::settle() {
     }
   }
   if (sprung) mechanics_->set_normal_springs(springs_, options_.terms.broken_beam_spring);
+  mechanics_->set_rank_one_stiffness(std::move(borehole));
   if (ok) {
     displacement_ = mechanics_->displacement();
     const Eigen::Matrix2Xd x = positions(displacement_);
@@ -341,6 +352,8 @@ bool CoupledModel::solve_mechanics(int pass, const PassGuess& guess, bool check_
   // The pressure force of the guess (Eq. 17) and the undrained predictor's springs (Eq. 20).
   Eigen::VectorXd f = pressure_load(guess.pressure);
   if (options_.terms.psi > 0.0) f += spring_preload(lattice(), mechanics_->normal_springs(), guess.displacement);
+  // The borehole's undrained spring, relaxed at the same iterate.
+  if (mechanics_->rank_one_stiffness().is_active()) mechanics_->set_rank_one_reference(guess.displacement);
   mechanics_->set_external_forces(f);
   // Solve, then break one beam at a time until none fails (the stresses of the effective, i.e. beam,
   // forces; V_i of the undeformed dual like the rest of the linear mechanics).

@@ -32,6 +32,7 @@ void SpdSolverOptions::validate() const {
 void SpdSolver::add_low_rank(const Matrix& W, int sigma) {
   assert(W.rows() == matrix_.rows() && "modify: W must have as many rows as A");
   assert((sigma == 1 || sigma == -1) && "modify: sigma must be +1 or -1");
+  ++report_.matrix_revision;
   for (int c = 0; c < W.outerSize(); ++c)
     for (Matrix::InnerIterator p(W, c); p; ++p)
       for (Matrix::InnerIterator q(W, c); q; ++q)
@@ -160,6 +161,7 @@ SpdSolveReport report_keeping_totals(const SpdSolveReport& old) {
   r.n_factorizations = old.n_factorizations;
   r.n_update_failures = old.n_update_failures;
   r.last_update_failure = old.last_update_failure;
+  r.matrix_revision = old.matrix_revision + 1;  // a new matrix
   return r;
 }
 
@@ -237,6 +239,7 @@ void transfer_report(Archive& a, Report& r) {
   a.io("report.n_modifications", r.n_modifications);
   a.io("report.n_update_failures", r.n_update_failures);
   a.io("report.last_update_failure", r.last_update_failure);
+  a.io("report.matrix_revision", r.matrix_revision);
   a.io("report.message", r.message);
 }
 

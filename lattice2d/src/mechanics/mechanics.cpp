@@ -327,7 +327,9 @@ Eigen::VectorXd BeamMechanics::linear_response(const Eigen::VectorXd& forces) co
                          std::to_string(3 * lattice_.n_particles()) + ")");
   Eigen::VectorXd b(n_free_dofs());
   for (std::size_t k = 0; k < free_dofs_.size(); ++k) b[static_cast<Eigen::Index>(k)] = forces[free_dofs_[k]];
-  const Eigen::VectorXd x = solver_->solve(b);
+  Eigen::VectorXd x = solver_->solve(b);
+  // The response to forces alone: no held values, no reference.
+  if (rank_one_.is_active()) rank_one_.correct(*solver_, free_dofs_, Eigen::VectorXd::Zero(forces.size()), x, false);
   Eigen::VectorXd du = Eigen::VectorXd::Zero(forces.size());
   for (std::size_t k = 0; k < free_dofs_.size(); ++k) du[free_dofs_[k]] = x[static_cast<Eigen::Index>(k)];
   return du;
@@ -623,6 +625,18 @@ void BeamMechanics::set_normal_springs(const Eigen::VectorXd& stiffness, BrokenB
   setup_system();
 }
 
+void BeamMechanics::set_rank_one_stiffness(RankOneStiffness term) {
+  if (term.is_active() && term.vector().size() != 3 * lattice_.n_particles())
+    throw hm::InputError("rank-one stiffness: size = " + std::to_string(term.vector().size()) +
+                         ", allowed: 3 n_particles = " + std::to_string(3 * lattice_.n_particles()));
+  rank_one_ = std::move(term);
+}
+
+void BeamMechanics::set_rank_one_reference(const Eigen::VectorXd& u_reference) {
+  assert(u_reference.size() == 3 * lattice_.n_particles() && "set_rank_one_reference: 3 entries per particle");
+  rank_one_.set_reference(u_reference);
+}
+
 void BeamMechanics::set_external_forces(const Eigen::VectorXd& forces) {
   assert(forces.size() == 3 * lattice_.n_particles() && "set_external_forces: 3 entries per particle");
   extra_loads_ = forces;
@@ -651,10 +665,11 @@ MechanicsSummary BeamMechanics::solve(bool equilibrium_check) {
     const Eigen::VectorXd f = pressure_loads_ + extra_loads_ - held_term_;
     Eigen::VectorXd b(n_free_dofs());
     for (std::size_t k = 0; k < free_dofs_.size(); ++k) b[static_cast<Eigen::Index>(k)] = f[free_dofs_[k]];
-    const Eigen::VectorXd x = solver_->solve(b);
+    Eigen::VectorXd x = solver_->solve(b);
     ++summary.contact_iterations;
     summary.info = solver_->info();
     summary.solver_residual = solver_->report().relative_residual;
+    if (summary.info == Eigen::Success && !rank_one_.correct(*solver_, free_dofs_, held_value_, x)) summary.info = solver_->info();
     if (summary.info != Eigen::Success) {
       summary.message = "linear solver: " + solver_->report().message;
       break;
@@ -762,6 +777,7 @@ Eigen::VectorXd BeamMechanics::reactions() const {
     r[dof_index(j, 0)] += f.x();
     r[dof_index(j, 1)] += f.y();
   }
+  if (rank_one_.is_active()) r += rank_one_.force(raw_);
   return r;
 }
 
@@ -785,6 +801,7 @@ void BeamMechanics::save_state(core::StateWriter& w) const {
   w.put("mechanics.springs", springs_);
   w.put("mechanics.softening", softening_);
   w.put("mechanics.closed", closed_);
+  rank_one_.save_state(w);
   w.put("mechanics.solver", solver_->name());
   solver_->save_state(w);
 }
@@ -865,6 +882,7 @@ void BeamMechanics::restore_state(core::StateReader& r) {
           "mechanics.softening");
     if (softened) softened_.push_back(static_cast<int>(e));
   }
+  rank_one_.restore_state(r);
   std::string solver;
   r.get("mechanics.solver", solver);
   check(solver == solver_->name(), "mechanics.solver");

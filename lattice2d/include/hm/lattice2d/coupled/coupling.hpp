@@ -14,6 +14,7 @@
 #include "hm/lattice2d/geometry/dual_graph.hpp"
 #include "hm/lattice2d/geometry/lattice.hpp"
 #include "hm/lattice2d/mechanics/beam_stiffness.hpp"
+#include "hm/lattice2d/mechanics/rank_one_stiffness.hpp"
 
 namespace hm::lattice2d {
 
@@ -24,6 +25,18 @@ namespace hm::lattice2d {
 /// mechanical factor lose its digits.
 inline constexpr double kMaxPressureForceScale = 1e3;
 inline constexpr double kMaxSplitFeedback = 1e6;
+
+/// Whether the borehole fluid answers its wall's motion inside the mechanics (BoreholeSpring::undrained:
+/// a rank-1 stiffness, borehole_spring_stiffness). Without it the borehole's pressure is fixed for a
+/// whole mechanical solve, a break cascade included, and its compliance acts only at the next flow
+/// solve, after the beams are broken for good.
+enum class BoreholeSpring {
+  none,       ///< the paper's split: the borehole pressure is the pass's guess; default
+  undrained,  ///< the hole's undrained stiffness (beta_h / s_h) g g^T, relaxed at the pass iterate
+};
+constexpr auto enum_names(BoreholeSpring) {
+  return core::enum_table<BoreholeSpring>({{BoreholeSpring::none, "none"}, {BoreholeSpring::undrained, "undrained"}});
+}
 
 struct CouplingTerms {
   /// xi, scaling of the pressure force (Eq. 17). Our choice 1: by the divergence theorem xi = 1
@@ -40,6 +53,10 @@ struct CouplingTerms {
   /// dropped with the beam. Psi is a convergence parameter of the split; with "keep" and fracture
   /// checks at every pass it also stiffens cracks while they form (docs/coupling.md).
   BrokenBeamSpring broken_beam_spring = BrokenBeamSpring::keep;
+  /// The borehole's undrained spring (BoreholeSpring). Default none (the paper's split). Needs a
+  /// borehole whose volume change enters its pressure (FlowParameters::borehole_storage and
+  /// borehole_deformation not "none"); checked by CoupledModel.
+  BoreholeSpring borehole_spring = BoreholeSpring::none;
 
   /// Throws hm::InputError "coupling.field = value, allowed: rule".
   void validate() const;
@@ -76,6 +93,19 @@ inline double face_pressure_share(double b, double w) { return w == 0.0 ? b : w 
 /// triangles' areas by w (h_k + h_l) / 2, 1.5 w d_e on an equilateral lattice.
 Eigen::VectorXd crack_opening_volumes(const Lattice& lattice, const DualGraph& dual, const Eigen::VectorXd& crack_weight,
                                       const Eigen::VectorXd& u);
+
+/// The borehole's volume gradient dV_h/du (3 n_particles; zero off the wall): for each wall beam, half
+/// its length times the normal into the solid on each end, the wall traction of pressure_forces per
+/// unit p_h (and exactly the gradient of the wall polygon's area). Undeformed geometry, as the rest.
+Eigen::VectorXd borehole_volume_gradient(const Lattice& lattice);
+
+/// The undrained borehole's stiffness on the wall, BoreholeSpring::undrained: a wall motion du
+/// changes V_h by g.du, and with no time for flow the borehole's balance (Eq. 16) s_h dp_h +
+/// beta_h dV_h = 0 gives dp_h = -(beta_h / s_h) g.du, whose wall traction is dp_h g: a stiffness
+/// k g g^T with k = beta_h / s_h (FlowNetwork's borehole coefficients). Relaxed at the pass iterate
+/// like the Psi springs (RankOneStiffness's reference), so the converged step is unchanged.
+/// Throws hm::InputError when s_h or beta_h is 0 (the hole's volume then does not set its pressure).
+RankOneStiffness borehole_spring(const Lattice& lattice, double storage_coefficient, double deformation_coefficient);
 
 /// Stiffness per beam of the undrained split's normal spring (Eq. 20 linearised, docs/coupling.md):
 ///   k_ij = Psi xi b^2 (M/E) max(d_st, 0) / L_ij,

@@ -264,6 +264,10 @@ class FlowNetwork {
   int source_triangle() const { return source_triangle_; }
   /// V_h, area of the polygon the wall particles enclose at the current geometry (0 without borehole).
   double borehole_volume() const { return borehole_volume_; }
+  /// s_h of Eq. 16 per borehole_storage at the current V_h: (E/M) V_h, (E/K_w) V_h or 0.
+  double borehole_storage_coefficient() const;
+  /// The weight of dV_h in the borehole's balance per borehole_deformation: b, 1 or 0.
+  double borehole_deformation_coefficient() const;
 
   /// Replaces the geometry (V_s^{n+1}, A/d) by that of a deformed configuration: `dual` must be
   /// build_dual_graph(lattice, positions). V_h is recomputed from `positions`.
@@ -343,8 +347,6 @@ class FlowNetwork {
   };
 
   double conductance(int beam) const;  // (1 + w (iota - 1)) A/d, or (A + w T)/d
-  double borehole_storage_coefficient() const;      // s_h of Eq. 16 per borehole_storage
-  double borehole_deformation_coefficient() const;  // the weight of dV_h per borehole_deformation
   void assemble_values(double dt, double storage_scale, Eigen::VectorXd& values) const;
   std::string factorise_if_needed(double dt);  // empty on success
   std::string factorise(double dt);            // assemble and factorise for dt; empty on success

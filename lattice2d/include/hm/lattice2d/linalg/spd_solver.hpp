@@ -104,6 +104,8 @@ struct SpdSolveReport {
   int n_modifications = 0;         ///< modify() calls since the last factorisation
   int n_update_failures = 0;       ///< modify() calls whose factor update failed and fell back to refactorize(),
                                    ///< since construction
+  int matrix_revision = 0;         ///< changes of A (compute, modify) since construction: a solve A^-1 g kept
+                                   ///< by a caller is current while this is unchanged
   std::string last_update_failure; ///< the last such failure: CHOLMOD's status, rank, sign, modifications before it
   std::string message;             ///< human-readable reason when info != Success
 };

@@ -16,6 +16,7 @@
 #include <Eigen/Core>
 
 #include "hm/lattice2d/mechanics/beam_stiffness.hpp"
+#include "hm/lattice2d/mechanics/rank_one_stiffness.hpp"
 #include "hm/lattice2d/geometry/lattice.hpp"
 #include "hm/lattice2d/linalg/spd_solver.hpp"
 #include "hm/core/enum_names.hpp"
@@ -191,6 +192,16 @@ class BeamMechanics {
   void set_normal_springs(const Eigen::VectorXd& stiffness, BrokenBeamSpring broken = BrokenBeamSpring::keep);
   /// The springs of set_normal_springs (empty if none), zero where a dropped spring's beam broke.
   const Eigen::VectorXd& normal_springs() const { return springs_; }
+  /// A stiffness k g g^T over all degrees of freedom on top of the beams and springs (g of size
+  /// 3 n_particles), relaxed at set_rank_one_reference's displacement and applied in every solve by
+  /// Sherman-Morrison, not put into the factor (RankOneStiffness): the coupling's borehole fluid
+  /// answering its wall's motion, which couples the whole wall. Part of solve(), linear_response()
+  /// (without the reference) and reactions(); not of beam_forces(). A default-constructed term
+  /// removes it. Throws hm::InputError for a vector of the wrong size.
+  void set_rank_one_stiffness(RankOneStiffness term);
+  /// The displacement at which the rank-1 term is relaxed (its force k g g.(u - u_ref)).
+  void set_rank_one_reference(const Eigen::VectorXd& u_reference);
+  const RankOneStiffness& rank_one_stiffness() const { return rank_one_; }
 
   /// The displacement (3 n_particles; 0 at held dofs) that `forces` (3 n_particles) add under the
   /// current matrix (beam states, contacts, springs) with the kept factor: one solve, no state
@@ -262,6 +273,7 @@ class BeamMechanics {
   Eigen::VectorXd displacement_;
   std::vector<int> broken_;      // beams not intact
   Eigen::VectorXd springs_;      // set_normal_springs, per beam (empty: none)
+  mutable RankOneStiffness rank_one_;  // mutable: it keeps K^-1 g of the current matrix for linear_response
   BrokenBeamSpring broken_spring_ = BrokenBeamSpring::keep;
   void remove_normal_spring(int beam);  // a rank-1 downdate of k n n^T
   std::unique_ptr<SpdSolver> solver_;
