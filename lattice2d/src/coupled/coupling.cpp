@@ -20,22 +20,6 @@ void CouplingTerms::validate() const {
     throw hm::InputError("coupling.psi = " + format_value(psi) + ", allowed: 0 <= psi <= " + format_value(kMaxSplitFeedback));
 }
 
-namespace {
-
-// The unit normal of borehole wall beam e pointing out of the solid, into the hole: away from the
-// wall triangle's third vertex.
-Eigen::Vector2d wall_outward_normal(const Lattice& lattice, int e) {
-  const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
-  const auto& tri = lattice.triangles[static_cast<std::size_t>(lattice.beam_triangles[static_cast<std::size_t>(e)][0])];
-  const int k = tri[0] != i && tri[0] != j ? tri[0] : tri[1] != i && tri[1] != j ? tri[1] : tri[2];
-  const Eigen::Vector2d n = lattice.direction.col(e);
-  Eigen::Vector2d m(-n.y(), n.x());
-  if (m.dot(lattice.points.col(k) - lattice.points.col(i)) > 0.0) m = -m;
-  return m;
-}
-
-}  // namespace
-
 Eigen::VectorXd pressure_forces(const Lattice& lattice, const DualGraph& dual, const Eigen::VectorXd& pressure,
                                 double b, const CouplingTerms& terms, const Eigen::VectorXd& crack_weight) {
   const int n_t = lattice.n_triangles();
@@ -57,7 +41,7 @@ Eigen::VectorXd pressure_forces(const Lattice& lattice, const DualGraph& dual, c
     f[dof_index(j, 0)] -= F_i.x();
     f[dof_index(j, 1)] -= F_i.y();
     if (tag == BoundaryTag::inner && terms.borehole_wall_traction && p_h != 0.0) {
-      const Eigen::Vector2d w = -0.5 * p_h * lattice.length[e] * wall_outward_normal(lattice, e);
+      const Eigen::Vector2d w = -0.5 * p_h * lattice.length[e] * lattice.outward_normal(e);
       for (int q : {i, j}) {
         f[dof_index(q, 0)] += w.x();
         f[dof_index(q, 1)] += w.y();
@@ -71,7 +55,7 @@ Eigen::VectorXd borehole_volume_gradient(const Lattice& lattice) {
   Eigen::VectorXd g = Eigen::VectorXd::Zero(3 * lattice.n_particles());
   for (int e = 0; e < lattice.n_beams(); ++e) {
     if (lattice.beam_boundary[static_cast<std::size_t>(e)] != BoundaryTag::inner) continue;
-    const Eigen::Vector2d w = -0.5 * lattice.length[e] * wall_outward_normal(lattice, e);  // per unit p_h
+    const Eigen::Vector2d w = -0.5 * lattice.length[e] * lattice.outward_normal(e);  // per unit p_h
     for (const int q : lattice.beams[static_cast<std::size_t>(e)]) {
       g[dof_index(q, 0)] += w.x();
       g[dof_index(q, 1)] += w.y();

@@ -78,6 +78,17 @@ detail::PointSet sample_to_target(const LatticeSpec& spec, double& r) {
 
 }  // namespace
 
+Eigen::Vector2d Lattice::outward_normal(int beam) const {
+  assert(is_boundary_beam(beam) && "outward_normal: a boundary beam");
+  const auto [i, j] = beams[static_cast<std::size_t>(beam)];
+  const auto& tri = triangles[static_cast<std::size_t>(beam_triangles[static_cast<std::size_t>(beam)][0])];
+  const int k = tri[0] != i && tri[0] != j ? tri[0] : tri[1] != i && tri[1] != j ? tri[1] : tri[2];
+  const Eigen::Vector2d n = direction.col(beam);
+  Eigen::Vector2d m(-n.y(), n.x());
+  if (m.dot(points.col(k) - points.col(i)) > 0.0) m = -m;
+  return m;
+}
+
 Lattice generate_lattice(const LatticeSpec& spec) {
   spec.validate();
   Lattice lattice;

@@ -226,11 +226,7 @@ BeamMechanics::BeamMechanics(Lattice lattice, const BeamParameters& parameters, 
     const bool stressed = tag == BoundaryTag::outer && outer_stressed;
     if (p == 0.0 && !stressed) continue;
     const auto [i, j] = lattice_.beams[static_cast<std::size_t>(e)];
-    const auto& tri = lattice_.triangles[static_cast<std::size_t>(lattice_.beam_triangles[static_cast<std::size_t>(e)][0])];
-    const int k = tri[0] != i && tri[0] != j ? tri[0] : tri[1] != i && tri[1] != j ? tri[1] : tri[2];
-    const Eigen::Vector2d n = lattice_.direction.col(e);
-    Eigen::Vector2d m(-n.y(), n.x());  // outward normal: away from the triangle's third vertex
-    if (m.dot(lattice_.points.col(k) - lattice_.points.col(i)) > 0.0) m = -m;
+    const Eigen::Vector2d m = lattice_.outward_normal(e);
     Eigen::Vector2d f = -0.5 * p * lattice_.length[e] * m;  // positive p pushes into the solid
     if (stressed) f += 0.5 * lattice_.length[e] * (conditions_.outer_stress * m);
     for (int q : {i, j}) {

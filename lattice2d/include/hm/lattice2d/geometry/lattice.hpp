@@ -102,6 +102,9 @@ struct Lattice {
   int n_beams() const { return static_cast<int>(beams.size()); }
   int n_triangles() const { return static_cast<int>(triangles.size()); }
   bool is_boundary_beam(int beam) const { return beam_triangles[beam][1] < 0; }
+  /// The unit normal of boundary beam `beam` pointing out of the solid (away from its triangle's third
+  /// vertex): a boundary traction t acts as -p m for a pressure p, lumped half to each end.
+  Eigen::Vector2d outward_normal(int beam) const;
 };
 
 /// Generates the lattice of `spec` (validated first; throws hm::InputError).
