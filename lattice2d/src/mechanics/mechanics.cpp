@@ -324,8 +324,7 @@ Eigen::VectorXd BeamMechanics::linear_response(const Eigen::VectorXd& forces) co
   Eigen::VectorXd b(n_free_dofs());
   for (std::size_t k = 0; k < free_dofs_.size(); ++k) b[static_cast<Eigen::Index>(k)] = forces[free_dofs_[k]];
   Eigen::VectorXd x = solver_->solve(b);
-  // The response to forces alone: no held values, no reference.
-  if (rank_one_.is_active()) rank_one_.correct(*solver_, free_dofs_, Eigen::VectorXd::Zero(forces.size()), x, false);
+  rank_one_.correct(*solver_, free_dofs_, nullptr, x);  // the response to forces alone
   Eigen::VectorXd du = Eigen::VectorXd::Zero(forces.size());
   for (std::size_t k = 0; k < free_dofs_.size(); ++k) du[free_dofs_[k]] = x[static_cast<Eigen::Index>(k)];
   return du;
@@ -665,7 +664,7 @@ MechanicsSummary BeamMechanics::solve(bool equilibrium_check) {
     ++summary.contact_iterations;
     summary.info = solver_->info();
     summary.solver_residual = solver_->report().relative_residual;
-    if (summary.info == Eigen::Success && !rank_one_.correct(*solver_, free_dofs_, held_value_, x)) summary.info = solver_->info();
+    if (summary.info == Eigen::Success && !rank_one_.correct(*solver_, free_dofs_, &held_value_, x)) summary.info = solver_->info();
     if (summary.info != Eigen::Success) {
       summary.message = "linear solver: " + solver_->report().message;
       break;

@@ -14,12 +14,12 @@ RankOneStiffness::RankOneStiffness(Eigen::VectorXd g, double k) : g_(std::move(g
   if (!g_.allFinite()) throw hm::InputError("rank-one stiffness vector: not finite, allowed: finite entries");
 }
 
-void RankOneStiffness::set_reference(Eigen::VectorXd u_reference) {
+void RankOneStiffness::set_reference(const Eigen::VectorXd& u_reference) {
   reference_volume_ = u_reference.size() == 0 ? 0.0 : g_.dot(u_reference);
 }
 
-bool RankOneStiffness::correct(SpdSolver& solver, const std::vector<int>& free_dofs, const Eigen::VectorXd& held_value,
-                               Eigen::VectorXd& x_free, bool relaxed) {
+bool RankOneStiffness::correct(SpdSolver& solver, const std::vector<int>& free_dofs, const Eigen::VectorXd* held_value,
+                               Eigen::VectorXd& x_free) {
   if (!is_active()) return true;
   const auto n = static_cast<Eigen::Index>(free_dofs.size());
   Eigen::VectorXd g(n);
@@ -31,7 +31,7 @@ bool RankOneStiffness::correct(SpdSolver& solver, const std::vector<int>& free_d
     z_revision_ = solver.report().matrix_revision;
   }
   // g.u - g.u_r; held_value is 0 at the free degrees of freedom.
-  const double excess = g.dot(x_free) + g_.dot(held_value) - (relaxed ? reference_volume_ : 0.0);
+  const double excess = held_value ? g.dot(x_free) + g_.dot(*held_value) - reference_volume_ : g.dot(x_free);
   x_free -= z_ * (k_ * excess / (1.0 + k_ * g.dot(z_)));
   return true;
 }

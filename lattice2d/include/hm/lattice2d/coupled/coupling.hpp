@@ -27,7 +27,7 @@ inline constexpr double kMaxPressureForceScale = 1e3;
 inline constexpr double kMaxSplitFeedback = 1e6;
 
 /// Whether the borehole fluid answers its wall's motion inside the mechanics (BoreholeSpring::undrained:
-/// a rank-1 stiffness, borehole_spring_stiffness). Without it the borehole's pressure is fixed for a
+/// a rank-1 stiffness, borehole_spring()). Without it the borehole's pressure is fixed for a
 /// whole mechanical solve, a break cascade included, and its compliance acts only at the next flow
 /// solve, after the beams are broken for good.
 enum class BoreholeSpring {

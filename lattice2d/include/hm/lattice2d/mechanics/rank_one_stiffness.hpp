@@ -29,15 +29,15 @@ class RankOneStiffness {
   const Eigen::VectorXd& vector() const { return g_; }
   double stiffness() const { return k_; }
   /// The reference displacement u_r (all degrees of freedom); empty: 0.
-  void set_reference(Eigen::VectorXd u_reference);
+  void set_reference(const Eigen::VectorXd& u_reference);
   /// x_free = K^-1 b on the free degrees of freedom (free_dofs: their indices into g) becomes the
   /// solution with the term: with u the displacement of x_free and the held values u_h (`held_value`,
-  /// all degrees of freedom, 0 where free), x_free - z k (g.u - g.u_r) / (1 + k g_f.z). With
-  /// `relaxed` false the reference is taken as 0 (a response to forces alone). Solves for z with
+  /// all degrees of freedom, 0 where free), x_free - z k (g.u - g.u_r) / (1 + k g_f.z). Without
+  /// held values (nullptr) the response to forces alone: u_h and u_r taken as 0. Solves for z with
   /// `solver` when K changed since the last call. False if that solve failed (solver.info() says
   /// why); x_free is then unchanged.
-  bool correct(SpdSolver& solver, const std::vector<int>& free_dofs, const Eigen::VectorXd& held_value,
-               Eigen::VectorXd& x_free, bool relaxed = true);
+  bool correct(SpdSolver& solver, const std::vector<int>& free_dofs, const Eigen::VectorXd* held_value,
+               Eigen::VectorXd& x_free);
   /// Its force k g g.(u - u_r) at displacement u (all degrees of freedom), for reactions.
   Eigen::VectorXd force(const Eigen::VectorXd& u) const;
 
