@@ -2,7 +2,7 @@
 # The saw-tooth Fig. 12 b = 0.2 study (cases/studies/sawtooth_fig12_b0.2.toml: N = 3000, 1e4 and 3e4, lattice
 # seeds 1-3, to t* = 0.009), one thread per run, then this folder's summary.csv and table.md:
 #   HMLATTICE=build/hmlattice bash docs/reports/sawtooth-fig12-2026-12-06/run.sh OUT
-# (N = 3000: 2-3 min each; N = 1e4: ~20 min; N = 3e4: ~1 h. A run stopped part-way continues with --resume.)
+# (N = 3000: 2-3 min each; N = 1e4: ~20 min; N = 3e4: ~2 h. A run stopped part-way continues with --resume.)
 # The same runs through the workflow: snakemake -j 2 --snakefile workflow/Snakefile
 #   --config sweep=cases/studies/sawtooth_fig12_b0.2.toml
 set -euo pipefail

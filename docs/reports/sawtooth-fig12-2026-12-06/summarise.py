@@ -1,11 +1,13 @@
 """summary.csv and table.md of the saw-tooth Fig. 12 study from its run folders (complete or not).
-Usage: /usr/bin/python3 summarise.py RUNS OUT"""
+Usage: /usr/bin/python3 summarise.py RUNS OUT [LABEL]   (LABEL names the setting in table.md)"""
 import os
 import sys
 
 import pandas as pd
 
 runs, out = sys.argv[1], sys.argv[2]
+os.makedirs(out, exist_ok=True)
+label = sys.argv[3] if len(sys.argv) > 3 else "saw-tooth Fig. 12 b = 0.2, G_f/(ER) = 2.34e-9"
 rows = []
 for name in sorted(os.listdir(runs)):
     folder = os.path.join(runs, name)
@@ -33,8 +35,7 @@ means = table.groupby(["t", "N"]).mean(numeric_only=True).drop(columns=["seed"])
 spread = table.groupby(["t", "N"]).std(numeric_only=True)  # the seeds' standard deviation (NaN for one)
 counts = table.groupby(["t", "N"]).size()
 with open(os.path.join(out, "table.md"), "w") as f:
-    f.write("Means over the seeds that reached each time, ± their standard deviation (saw-tooth Fig. 12 b = 0.2, "
-                "G_f/(ER) = 2.34e-9).\n\n")
+    f.write(f"Means over the seeds that reached each time, ± their standard deviation ({label}).\n\n")
     f.write("| t* | N | seeds | p_h | teeth | dissipated | broken | arms (3 beams) | arms (gap 0.03 R) | radial | at r = 1 "
             "| max radial extent | secondaries | sizable secondaries |\n|" + "---|" * 14 + "\n")
     for (t, n), m in means.iterrows():
