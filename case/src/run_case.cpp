@@ -1,5 +1,6 @@
 #include "hm/case/run_case.hpp"
 
+#include <cmath>
 #include <limits>
 #include <numbers>
 
@@ -52,6 +53,39 @@ std::string calibration_comment(const RunCase& c) {
          ", nu0 = " + core::format_value(beams.beam_poisson) + ";\n# measured continuum (calibration, " +
          "docs/lattice.md): E = " + core::format_value(continuum.youngs_modulus) +
          ", nu = " + core::format_value(continuum.poisson_ratio) + " (plane strain)\n";
+}
+
+// k/R^2 of a [physics_si] case (the cubic law's scale); 0 for a dimensionless one, which must give it.
+double si_permeability(const RunCase& c) {
+  if (!c.physics.physical) return 0.0;
+  return c.physics.physical->k_si / (c.physics.physical->R_si * c.physics.physical->R_si);
+}
+
+void check_cubic_law(CaseTable& flow, const RunCase& c) {
+  const lt::FractureFlowSpec& f = c.fracture_flow;
+  const bool cubic = f.law == lt::FractureFlow::cubic;
+  const double w_r = f.residual_aperture;
+  // 1% of R (1 cm at R = 1 m) is an open crack, not the roughness of closed faces.
+  if (!(w_r >= 0.0 && w_r <= 0.01))
+    flow.fail("residual_aperture = " + core::format_value(w_r) + ", allowed: 0 <= value <= 0.01 (over R)");
+  if (!cubic && w_r != 0.0)
+    flow.fail("residual_aperture = " + core::format_value(w_r) + ", allowed: only with fracture_flow = \"cubic\"");
+  const double k = f.permeability;
+  if (!cubic) {
+    if (k != 0.0)
+      flow.fail("rock_permeability = " + core::format_value(k) + ", allowed: only with fracture_flow = \"cubic\"");
+    return;
+  }
+  if (k == 0.0 && !c.physics.physical)
+    flow.fail("rock_permeability is missing, allowed: 1e-25 <= value <= 1e-2 (k/R^2), required with fracture_flow = "
+              "\"cubic\" and [physics]");
+  // 1e-25: a nanodarcy shale (1e-21 m^2) in a domain of 100 m; 1e-2: a pore as wide as a tenth of R.
+  if (!(k >= 1e-25 && k <= 1e-2))
+    flow.fail("rock_permeability = " + core::format_value(k) + ", allowed: 1e-25 <= value <= 1e-2 (k/R^2)");
+  const double si = si_permeability(c);
+  if (c.physics.physical && std::abs(k - si) > 1e-12 * si)
+    flow.fail("rock_permeability = " + core::format_value(k) + ", allowed: k/R^2 of [physics_si] (" +
+              core::format_value(si) + ")");
 }
 
 CaseKeys<RunCase> make_run_case_keys() {
@@ -119,12 +153,25 @@ CaseKeys<RunCase> make_run_case_keys() {
               "or 1 (full: a fluid-filled void, docs/flow.md)")
       .choice("fracture_flow", [](auto& c) -> auto& { return c.fracture_flow.law; },
               "how a crack conducts: [physics] iota times the rock's A/d (Eq. 24; the crack's transmissivity then "
-              "scales with the beam length), or the rock's A/d plus crack_transmissivity / d (the same at every N; "
-              "docs/flow.md)")
+              "scales with the beam length), the rock's A/d plus crack_transmissivity / d (the same at every N), or "
+              "the rock's A/d plus the parallel plates' a^3/(12 k) / d of the crack's aperture a (the cubic law, "
+              "Eqs. 25-26; docs/flow.md)")
       .real("crack_transmissivity", [](auto& c) -> auto& { return c.fracture_flow.transmissivity; },
             "0 <= value <= 1e12, finite; > 0 only with fracture_flow = \"transmissivity\"",
             "T = k_f w / (k R), a crack's permeability times its aperture over the rock's permeability times R")
+      .real("rock_permeability", [](auto& c) -> auto& { return c.fracture_flow.permeability; },
+            "1e-25 <= value <= 1e-2, finite; only with fracture_flow = \"cubic\", where it is required with "
+            "[physics] and is k/R^2 of [physics_si]",
+            "k/R^2, the rock's permeability over the domain radius squared: the cubic law's scale (an aperture a "
+            "conducts a^3/12 where the rock conducts k)",
+            [](const RunCase& c) { return c.fracture_flow.law == lt::FractureFlow::cubic ? si_permeability(c) : 0.0; },
+            "`0`; k/R^2 of [physics_si] with fracture_flow = \"cubic\"")
+      .real("residual_aperture", [](auto& c) -> auto& { return c.fracture_flow.residual_aperture; },
+            "0 <= value <= 0.01, finite; > 0 only with fracture_flow = \"cubic\"",
+            "w_r/R, the aperture a crack keeps when its faces touch (the cubic law): a pinched point does not "
+            "block the crack's flow")
       .check([](CaseTable& flow, CaseTable& root, RunCase& c) {
+        check_cubic_law(flow, c);
         const double T = c.fracture_flow.transmissivity;
         if (!(T >= 0.0 && T <= 1e12))
           flow.fail("crack_transmissivity = " + core::format_value(T) +
@@ -134,9 +181,11 @@ CaseKeys<RunCase> make_run_case_keys() {
           flow.fail("crack_transmissivity = " + core::format_value(T) +
                     ", allowed: only with fracture_flow = \"transmissivity\" (iota sets the crack's conductance otherwise)");
         const double iota = c.physics.parameters.iota;
-        if (c.fracture_flow.law == lt::FractureFlow::transmissivity && iota != 1.0) {
-          const std::string rule = " with [flow] fracture_flow = \"transmissivity\" (the crack's conductance is "
-                                   "crack_transmissivity's)";
+        if (c.fracture_flow.law != lt::FractureFlow::permeability && iota != 1.0) {
+          const std::string law = core::name_of(c.fracture_flow.law);
+          const std::string rule = " with [flow] fracture_flow = \"" + law + "\" (the crack's conductance is " +
+                                   (c.fracture_flow.law == lt::FractureFlow::cubic ? "its aperture's"
+                                                                                  : "crack_transmissivity's") + ")";
           if (c.physics.physical)
             root.table("physics_si").fail("k_f = " + core::format_value(iota) + " k, allowed: k_f = k" + rule);
           root.table("physics").fail("iota = " + core::format_value(iota) + ", allowed: 1" + rule);

@@ -263,6 +263,12 @@ void RunRecorder::record(const lt::CoupledModel& model, const lt::CoupledStepSum
       snapshot.beam_fields.push_back({"stiffness_factor", stiffness});
     }
     snapshot.beam_fields.push_back({"crack_opening", crack_openings(model)});
+    if (model.flow().parameters().fracture_flow.law == lt::FractureFlow::cubic) {
+      // The aperture that conducts (w (opening + residual)), where crack_opening is the opening alone.
+      Eigen::VectorXd aperture(model.lattice().n_beams());
+      for (int e = 0; e < aperture.size(); ++e) aperture[e] = model.flow().crack_aperture(e);
+      snapshot.beam_fields.push_back({"crack_aperture", aperture});
+    }
     vtk_->write(model.lattice(), model.current_dual(), snapshot);
   }
 }

@@ -83,8 +83,26 @@ TEST_CASE("Bad 2D cases are rejected with one line naming table, key, value and 
            "case.toml: [flow] borehole_deformation = 'half', allowed: biot, none, full");
   rejected(physics + "[flow]\ncrack_coupling = \"half\"\n",
            "case.toml: [flow] crack_coupling = 'half', allowed: biot, full");
+  rejected(physics + "[flow]\nfracture_flow = \"plates\"\n",
+           "case.toml: [flow] fracture_flow = 'plates', allowed: permeability, transmissivity, cubic");
   rejected(physics + "[flow]\nfracture_flow = \"cubic\"\n",
-           "case.toml: [flow] fracture_flow = 'cubic', allowed: permeability, transmissivity");
+           "case.toml: [flow] rock_permeability is missing, allowed: 1e-25 <= value <= 1e-2 (k/R^2), required with "
+           "fracture_flow = \"cubic\" and [physics]");
+  rejected(physics + "[flow]\nfracture_flow = \"cubic\"\nrock_permeability = 1e-30\n",
+           "case.toml: [flow] rock_permeability = 1e-30, allowed: 1e-25 <= value <= 1e-2 (k/R^2)");
+  rejected(physics + "[flow]\nrock_permeability = 1e-14\n",
+           "case.toml: [flow] rock_permeability = 1e-14, allowed: only with fracture_flow = \"cubic\"");
+  rejected(physics + "[flow]\nfracture_flow = \"cubic\"\nrock_permeability = 1e-14\nresidual_aperture = 0.1\n",
+           "case.toml: [flow] residual_aperture = 0.1, allowed: 0 <= value <= 0.01 (over R)");
+  rejected(physics + "[flow]\nfracture_flow = \"cubic\"\nrock_permeability = 1e-14\nresidual_aperture = nan\n",
+           "case.toml: [flow] residual_aperture = nan, allowed: a finite number");
+  rejected(physics + "[flow]\nresidual_aperture = 1e-4\n",
+           "case.toml: [flow] residual_aperture = 1e-04, allowed: only with fracture_flow = \"cubic\"");
+  rejected("[physics_si]\nq = 1e-4\nb = 0.5\nk = 1e-15\nR = 10\nR_i = 0\n[flow]\nfracture_flow = \"cubic\"\nrock_permeability = 1e-14\n",
+           "case.toml: [flow] rock_permeability = 1e-14, allowed: k/R^2 of [physics_si] (1e-17)");
+  rejected("[physics]\nQ = 0.1\nR_i = 0\niota = 1000\n[flow]\nfracture_flow = \"cubic\"\nrock_permeability = 1e-14\n",
+           "case.toml: [physics] iota = 1000, allowed: 1 with [flow] fracture_flow = \"cubic\" (the crack's "
+           "conductance is its aperture's)");
   rejected(physics + "[flow]\nfracture_flow = \"transmissivity\"\ncrack_transmissivity = -1\n",
            "case.toml: [flow] crack_transmissivity = -1, allowed: 0 <= value <= 1e12");
   rejected(physics + "[flow]\ncrack_transmissivity = 5\n",

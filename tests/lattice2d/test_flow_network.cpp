@@ -436,6 +436,90 @@ TEST_CASE("Flow parameters refuse a transmissivity that is negative or not finit
   CHECK_THROWS_WITH(parameters.validate(), Catch::Contains("crack_transmissivity"));
 }
 
+// --- fractures: the cubic law ------------------------------------------------------------------------
+
+// The through crack of crack_borehole_pressure with the cubic law, every crack beam opened by `opening`.
+FlowSteadyState cubic_crack_steady_state(const Lattice& lattice, const DualGraph& dual, double opening,
+                                         double residual, double permeability) {
+  FlowParameters parameters;
+  parameters.fracture_flow = {FractureFlow::cubic, 0.0, permeability, residual};
+  FlowNetwork network(lattice, dual, parameters);
+  network.set_broken(radial_crack(lattice, true));
+  network.set_crack_openings(Eigen::VectorXd::Constant(lattice.n_beams(), opening));
+  const FlowSteadyState steady = network.solve_steady_state();
+  REQUIRE(steady.solved);
+  return steady;
+}
+
+TEST_CASE("Parallel plates: a crack held open by a uniform aperture a conducts a^3/12 along its Voronoi path",
+          "[lattice2d]") {
+  const Lattice lattice = make_lattice(DomainShape::annulus, 2500);
+  const DualGraph dual = build_dual_graph(lattice);
+  const std::vector<bool> crack = radial_crack(lattice, true);
+  // a = 2e-3 R in a rock of k = 1e-17 R^2: the plates' transmissivity a^3/(12 k) = 6.7e7 over the
+  // rock's per unit R.
+  const double k = 1e-17, a = 2e-3;
+  const double T = a * a * a / (12.0 * k);
+  const FlowSteadyState open = cubic_crack_steady_state(lattice, dual, 1e-3, 1e-3, k);
+  const double Q = FlowParameters{}.Q;
+  const int h = static_cast<int>(open.pressure.size()) - 1;  // the borehole, the last unknown
+  // The crack is one chain of Voronoi segments from the borehole to the outer surface, each of length
+  // d_e conducting (A_e + T)/d_e: in series, p_h = Q sum_e d_e / (A_e + T), with the rock beside the
+  // crack taking a share ~ (2 pi / ln(1/R_i)) / (T / path) ~ 4e-8 of Q, far below the tolerance.
+  double series = 0.0;
+  int n_crack = 0;
+  for (int e = 0; e < lattice.n_beams(); ++e) {
+    if (!crack[static_cast<std::size_t>(e)]) continue;
+    series += dual.flow_distance[e] / (dual.conductance[e] * dual.flow_distance[e] + T);
+    ++n_crack;
+  }
+  REQUIRE(n_crack > 20);
+  CHECK(open.pressure[h] == Approx(Q * series).epsilon(1e-6));
+  // The same crack closed by its contact (opening -1e-3) keeps the residual aperture 2e-3: the same
+  // plates, bit for bit (1e-3 + 1e-3 is exactly 2e-3).
+  CHECK(cubic_crack_steady_state(lattice, dual, -1e-3, 2e-3, k).pressure == open.pressure);
+  // And the same as a crack of the constant transmissivity a^3/(12 k), bit for bit.
+  FlowParameters constant;
+  constant.fracture_flow = {FractureFlow::transmissivity, T};
+  FlowNetwork plates(lattice, dual, constant);
+  plates.set_broken(crack);
+  CHECK(plates.solve_steady_state().pressure == open.pressure);
+}
+
+TEST_CASE("The cubic law's aperture is the crack's share of the opening plus the residual", "[lattice2d]") {
+  const Lattice lattice = make_lattice(DomainShape::annulus, 600);
+  const DualGraph dual = build_dual_graph(lattice);
+  FlowParameters parameters;
+  parameters.fracture_flow = {FractureFlow::cubic, 0.0, 1e-14, 1e-4};
+  FlowNetwork network(lattice, dual, parameters);
+  Eigen::VectorXd weights = Eigen::VectorXd::Zero(lattice.n_beams());
+  weights[0] = 1.0;   // broken
+  weights[1] = 0.25;  // a softened beam: a quarter of its elongation is crack opening
+  weights[2] = 1.0;   // broken and closed
+  network.set_crack_weights(weights);
+  Eigen::VectorXd opening = Eigen::VectorXd::Constant(lattice.n_beams(), 3e-4);
+  opening[2] = -5e-4;
+  const long changes = network.crack_conductance_changes();
+  network.set_crack_openings(opening);
+  CHECK(network.crack_conductance_changes() == changes + 1);  // a stabiliser's A^-1 V is stale
+  CHECK(network.crack_aperture(0) == Approx(4e-4).epsilon(1e-15));
+  CHECK(network.crack_aperture(1) == Approx(1e-4).epsilon(1e-15));
+  CHECK(network.crack_aperture(2) == 1e-4);
+  CHECK(network.crack_aperture(3) == 0.0);  // intact rock: no crack
+  network.set_crack_openings(opening);
+  CHECK(network.crack_conductance_changes() == changes + 1);  // the same openings change nothing
+}
+
+TEST_CASE("Flow parameters refuse a cubic law without the rock's permeability", "[lattice2d]") {
+  FlowParameters parameters;
+  parameters.fracture_flow = {FractureFlow::cubic, 0.0, 0.0, 0.0};
+  CHECK_THROWS_WITH(parameters.validate(), Catch::Contains("rock_permeability = 0"));
+  parameters.fracture_flow.permeability = 1e-14;
+  CHECK_NOTHROW(parameters.validate());
+  parameters.fracture_flow.residual_aperture = -1e-4;
+  CHECK_THROWS_WITH(parameters.validate(), Catch::Contains("residual_aperture"));
+}
+
 // --- the borehole node ---------------------------------------------------------------------------------
 
 TEST_CASE("Borehole storage delays the borehole pressure but not the steady state", "[lattice2d]") {

@@ -233,6 +233,7 @@ CoupledStepSummary CoupledModel::settle() {
     const Eigen::Matrix2Xd x = positions(displacement_);
     current_dual_ = build_dual_graph(lattice(), x, reference_dual_.options);
     flow_->update_geometry(current_dual_, x);
+    update_crack_openings(displacement_);
     volume_ = unknown_volumes(current_dual_.triangle_area);
   }
   summary.n_broken = n_broken();
@@ -507,6 +508,18 @@ void CoupledModel::update_crack_stabiliser(bool keep_unchanged_modes) {
   }
 }
 
+void CoupledModel::update_crack_openings(const Eigen::VectorXd& u) {
+  if (flow_->parameters().fracture_flow.law != FractureFlow::cubic) return;
+  const Eigen::VectorXd& weight = flow_->crack_weights();
+  Eigen::VectorXd opening = Eigen::VectorXd::Zero(weight.size());
+  // The axial opening, the one the crack's charged volume and its face force use (work-conjugate):
+  // rotations move the facet's ends by -s (theta_j - theta_i) about it, second order for a crack
+  // much longer than a beam.
+  for (Eigen::Index e = 0; e < weight.size(); ++e)
+    if (weight[e] > 0.0) opening[e] = normal_elongation(lattice(), u, static_cast<int>(e));
+  flow_->set_crack_openings(opening);
+}
+
 bool CoupledModel::solve_flow(double dt, int pass, const Eigen::VectorXd& u, const Eigen::VectorXd& pressure_guess,
                               DualGraph& dual, CoupledStepSummary& summary) {
   // The deformed flow geometry, then the flow step with b (V^{n+1} - V^n).
@@ -514,6 +527,7 @@ bool CoupledModel::solve_flow(double dt, int pass, const Eigen::VectorXd& u, con
   const Eigen::Matrix2Xd x = positions(u);
   dual = build_dual_graph(lattice(), x, reference_dual_.options);
   flow_->update_geometry(dual, x);
+  update_crack_openings(u);
   const auto tock = std::chrono::steady_clock::now();
   summary.geometry_seconds += std::chrono::duration<double>(tock - tick).count();
   const bool stabilised = !crack_stabiliser_.modes.empty();

@@ -42,11 +42,18 @@ void FlowParameters::validate() const {
   require_finite(E_over_Kw, "E_over_Kw");
   require_positive(E_over_Kw, "E_over_Kw");
   require_positive(iota, "iota");
-  if (fracture_flow.law != FractureFlow::permeability && fracture_flow.law != FractureFlow::transmissivity)
+  if (fracture_flow.law != FractureFlow::permeability && fracture_flow.law != FractureFlow::transmissivity &&
+      fracture_flow.law != FractureFlow::cubic)
     throw InputError("fracture_flow = " + std::to_string(static_cast<int>(fracture_flow.law)) +
-                     ", allowed: permeability, transmissivity");
+                     ", allowed: permeability, transmissivity, cubic");
   require_finite(fracture_flow.transmissivity, "crack_transmissivity");
   require_non_negative(fracture_flow.transmissivity, "crack_transmissivity");
+  require_finite(fracture_flow.residual_aperture, "residual_aperture");
+  require_non_negative(fracture_flow.residual_aperture, "residual_aperture");
+  if (fracture_flow.law == FractureFlow::cubic) {
+    require_finite(fracture_flow.permeability, "rock_permeability");
+    require_positive(fracture_flow.permeability, "rock_permeability");
+  }
   require_positive(time_step, "time_step");
   if (!(refinement_tolerance > 0.0 && refinement_tolerance < 1e-6))
     throw InputError("refinement_tolerance = " + format_value(refinement_tolerance) + ", allowed: 0 < value < 1e-6");
@@ -249,8 +256,26 @@ void FlowNetwork::set_crack_weights(const Eigen::VectorXd& weights) {
   crack_weight_ = weights;
   factor_stale_ = true;
   // With iota = 1 a crack conducts as the rock (conductance(): exactly c), so the matrix is unchanged.
-  if (parameters_.fracture_flow.law == FractureFlow::transmissivity || parameters_.iota != 1.0)
+  if (parameters_.fracture_flow.law != FractureFlow::permeability || parameters_.iota != 1.0)
     ++crack_conductance_changes_;
+}
+
+void FlowNetwork::set_crack_openings(const Eigen::VectorXd& openings) {
+  assert(openings.size() == static_cast<Eigen::Index>(connections_.size()) && "one opening per beam");
+  assert(parameters_.fracture_flow.law == FractureFlow::cubic && "openings set the cubic law's apertures");
+  if (openings.size() == crack_opening_.size() && openings == crack_opening_) return;
+  crack_opening_ = openings;
+  factor_stale_ = true;
+  ++crack_conductance_changes_;
+}
+
+double FlowNetwork::crack_aperture(int beam) const {
+  const double w = crack_weight_[beam];
+  if (parameters_.fracture_flow.law != FractureFlow::cubic || w == 0.0) return 0.0;
+  const double opening = crack_opening_.size() == 0 ? 0.0 : std::max(crack_opening_[beam], 0.0);
+  // The crack's share of the facet's opening: a softening beam's secant leaves 1 - s = w of its
+  // elongation as inelastic (crack) opening, all of it once broken.
+  return w * (opening + parameters_.fracture_flow.residual_aperture);
 }
 
 void FlowNetwork::set_broken(const std::vector<bool>& broken) {
@@ -301,6 +326,11 @@ double FlowNetwork::conductance(int beam) const {
   if (w == 0.0) return c;
   if (parameters_.fracture_flow.law == FractureFlow::transmissivity)
     return c + w * parameters_.fracture_flow.transmissivity * inverse_flow_distance_[beam];
+  if (parameters_.fracture_flow.law == FractureFlow::cubic) {
+    // Parallel plates (Eqs. 25-26): a^3/12 per unit pressure gradient, over the rock's k (both per R).
+    const double a = crack_aperture(beam);
+    return c + a * a * a / (12.0 * parameters_.fracture_flow.permeability) * inverse_flow_distance_[beam];
+  }
   return w == 1.0 ? parameters_.iota * c : (1.0 + w * (parameters_.iota - 1.0)) * c;
 }
 
@@ -359,6 +389,7 @@ void FlowNetwork::save_state(core::StateWriter& w) const {
   w.put("flow.inverse_flow_distance", inverse_flow_distance_);
   w.put("flow.borehole_volume", borehole_volume_);
   w.put("flow.crack_weight", crack_weight_);
+  w.put("flow.crack_opening", crack_opening_);
   w.put("flow.pressure", pressure_);
   w.put("flow.charged_ahead", charged_ahead_);
   w.put("flow.totals", std::vector<double>{totals_.time, totals_.injected, totals_.storage, totals_.deformation,
@@ -386,6 +417,10 @@ void FlowNetwork::restore_state(core::StateReader& r) {
   if (crack_weight_.size() != static_cast<Eigen::Index>(connections_.size())) fail("flow.crack_weight");
   if (!((crack_weight_.array() >= 0.0).all() && (crack_weight_.array() <= 1.0).all()))
     throw InputError(r.source() + ": at 'flow.crack_weight': a weight outside [0, 1]");
+  r.get("flow.crack_opening", crack_opening_);
+  if (crack_opening_.size() != 0 && crack_opening_.size() != crack_weight_.size()) fail("flow.crack_opening");
+  if (!crack_opening_.allFinite())
+    throw InputError(r.source() + ": at 'flow.crack_opening': a value not finite");
   r.get("flow.pressure", pressure_);
   if (pressure_.size() != n_unknowns()) fail("flow.pressure");
   r.get("flow.charged_ahead", charged_ahead_);

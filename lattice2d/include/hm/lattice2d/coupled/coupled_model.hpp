@@ -383,6 +383,9 @@ class CoupledModel {
   // the current state, for the flow solve (FlowStabiliser); empty without cracks. keep_unchanged_modes:
   // a crack with the unknowns and weights of the last update keeps its response.
   void update_crack_stabiliser(bool keep_unchanged_modes);
+  // With the cubic law: the cracked beams' openings at displacement u, whose apertures set the cracks'
+  // conductances (the flow of a pass sees the pass's mechanics, so the converged step is implicit).
+  void update_crack_openings(const Eigen::VectorXd& u);
   Eigen::VectorXd pressure_load(const Eigen::VectorXd& pressure) const;  // Eq. 17's forces of a pressure
   FlowStabiliser crack_stabiliser_;
   Eigen::VectorXd stabiliser_weights_;  // the crack weights crack_stabiliser_ was computed with

@@ -64,10 +64,14 @@ enum class FractureFlow {
   /// The rock's A/d plus T/d: a crack of its own transmissivity T (k_f w over k R, dimensionless) in
   /// the facet beside the rock, the same whatever the beam length.
   transmissivity,
+  /// The rock's A/d plus the parallel plates' a^3/(12 k R) / d (Eqs. 25-26, the cubic law): the crack's
+  /// transmissivity from its aperture a = w (opening + residual), w its crack weight.
+  cubic,
 };
 constexpr auto enum_names(FractureFlow) {
-  return core::enum_table<FractureFlow>(
-      {{FractureFlow::permeability, "permeability"}, {FractureFlow::transmissivity, "transmissivity"}});
+  return core::enum_table<FractureFlow>({{FractureFlow::permeability, "permeability"},
+                                         {FractureFlow::transmissivity, "transmissivity"},
+                                         {FractureFlow::cubic, "cubic"}});
 }
 
 /// A crack's conduction: the law, and its transmissivity where the law has one.
@@ -77,6 +81,13 @@ struct FractureFlowSpec {
   /// R, the flux along a unit pressure gradient per unit thickness, over the rock's per unit R.
   /// Used with law = transmissivity. Allowed: finite, >= 0.
   double transmissivity = 0.0;
+  /// k / R^2, the rock's permeability over the domain radius squared: the cubic law's scale (an
+  /// aperture a conducts a^3/12 where the rock conducts k, so over the rock's per unit R it is
+  /// a^3 / (12 k R) = (a/R)^3 / (12 k / R^2)). Used with law = cubic. Allowed: finite, > 0.
+  double permeability = 0.0;
+  /// w_r / R, the residual aperture of a crack: a crack closed by its contact still conducts as a
+  /// plate this wide, so a pinched point does not block it. Used with law = cubic. Allowed: finite, >= 0.
+  double residual_aperture = 0.0;
 };
 
 /// Parameters of the flow network. Every default is set here; validate() checks each rule.
@@ -225,7 +236,8 @@ struct FlowSteadyState {
 /// with A = beam length, d = DualGraph::flow_distance (the Voronoi segment, floored), the t-sum over
 /// interior beams and the borehole wall (p_t = p_h there), the u-sum over outer beams (p = 0), and
 /// iota_e = iota on broken beams, 1 on intact ones (1 + w (iota - 1) for a crack weight w in between);
-/// with FractureFlow::transmissivity the segment conducts (A_st + w T)/d_st instead. Every interior
+/// with FractureFlow::transmissivity the segment conducts (A_st + w T)/d_st instead, with
+/// FractureFlow::cubic (A_st + a^3 / (12 k/R^2))/d_st for the crack's aperture a. Every interior
 /// flux appears in two rows with opposite signs, so the scheme conserves volume exactly up to
 /// round-off.
 ///
@@ -279,6 +291,12 @@ class FlowNetwork {
   void set_crack_weights(const Eigen::VectorXd& weights);
   /// The same with weight 1 on the flagged beams and 0 elsewhere.
   void set_broken(const std::vector<bool>& broken);
+  /// With FractureFlow::cubic: each beam's opening (u_j - u_i).n (size n_beams; a closed one, < 0,
+  /// counts as 0), from which a crack's aperture a = w (max(opening, 0) + residual) is taken.
+  void set_crack_openings(const Eigen::VectorXd& openings);
+  /// a / R of a beam's crack: w (max(opening, 0) + w_r / R) with the cubic law, 0 for intact rock or
+  /// another law.
+  double crack_aperture(int beam) const;
   const Eigen::VectorXd& crack_weights() const { return crack_weight_; }
   /// The cracks as sets of unknowns: the triangles (and the borehole) joined by the connections of
   /// beams with a crack weight above 0, one set per connected crack, in order of their first unknown.
@@ -346,7 +364,7 @@ class FlowNetwork {
     int t = -1;
   };
 
-  double conductance(int beam) const;  // (1 + w (iota - 1)) A/d, or (A + w T)/d
+  double conductance(int beam) const;  // (1 + w (iota - 1)) A/d, (A + w T)/d or (A + a^3/(12 k))/d
   void assemble_values(double dt, double storage_scale, Eigen::VectorXd& values) const;
   std::string factorise_if_needed(double dt);  // empty on success
   std::string factorise(double dt);            // assemble and factorise for dt; empty on success
@@ -362,6 +380,7 @@ class FlowNetwork {
   Eigen::VectorXd inverse_flow_distance_;      // 1/d_flow per beam: a crack's T/d is T times it
   double borehole_volume_ = 0.0;
   Eigen::VectorXd crack_weight_;               // per beam, 0 rock ... 1 broken
+  Eigen::VectorXd crack_opening_;              // per beam with the cubic law (else empty)
 
   Eigen::VectorXd pressure_;
   Eigen::VectorXd trial_pressure_;
