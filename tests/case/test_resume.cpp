@@ -32,6 +32,20 @@ const std::vector<std::string> result_files = {"series.csv",         "breaks.csv
                                                "vtk/lattice.pvd",    "vtk/lattice_0000.vtu", "vtk/lattice_0001.vtu",
                                                "vtk/lattice_0002.vtu"};
 
+// case.toml in `dir` run whole (into whole/, already there), then stopped after `first` and `second` steps
+// and resumed to its end in part/: every result file bitwise the same.
+void check_resumed_twice_as_whole(const TempDir& dir, int first, int second) {
+  REQUIRE(run_hmlattice("run case.toml --out part --stop-after-steps " + std::to_string(first), dir.path).exit_code == 0);
+  REQUIRE(run_hmlattice("run --resume part --stop-after-steps " + std::to_string(second), dir.path).exit_code == 0);
+  const auto r = run_hmlattice("run --resume part", dir.path);
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  for (const auto& file : result_files) {
+    INFO(file);
+    CHECK(slurp(dir.path / "part" / file) == slurp(dir.path / "whole" / file));
+  }
+}
+
 }  // namespace
 
 TEST_CASE("Stopped at several steps and resumed, a run gives bitwise the files of an uninterrupted one",
@@ -148,15 +162,7 @@ TEST_CASE("With the borehole's undrained spring a stopped and resumed run is bit
   REQUIRE(run_hmlattice("run case.toml --out whole", dir.path).exit_code == 0);
   const std::string breaks = slurp(dir.path / "whole/breaks.csv");
   CHECK(count_lines(breaks) > 100);
-  REQUIRE(run_hmlattice("run case.toml --out part --stop-after-steps 22", dir.path).exit_code == 0);
-  REQUIRE(run_hmlattice("run --resume part --stop-after-steps 25", dir.path).exit_code == 0);
-  const auto r = run_hmlattice("run --resume part", dir.path);
-  INFO(r.err);
-  REQUIRE(r.exit_code == 0);
-  for (const auto& file : result_files) {
-    INFO(file);
-    CHECK(slurp(dir.path / "part" / file) == slurp(dir.path / "whole" / file));
-  }
+  check_resumed_twice_as_whole(dir, 22, 25);
 }
 
 TEST_CASE("With the cubic law a stopped and resumed run is bitwise the uninterrupted one", "[case][cli]") {
@@ -172,13 +178,5 @@ TEST_CASE("With the cubic law a stopped and resumed run is bitwise the uninterru
   const std::string breaks = slurp(dir.path / "whole/breaks.csv");
   CHECK(count_lines(breaks) > 50);
   CHECK(slurp(dir.path / "whole/vtk/lattice_0001.vtu").find("Name=\"crack_aperture\"") != std::string::npos);
-  REQUIRE(run_hmlattice("run case.toml --out part --stop-after-steps 14", dir.path).exit_code == 0);
-  REQUIRE(run_hmlattice("run --resume part --stop-after-steps 20", dir.path).exit_code == 0);
-  const auto r = run_hmlattice("run --resume part", dir.path);
-  INFO(r.err);
-  REQUIRE(r.exit_code == 0);
-  for (const auto& file : result_files) {
-    INFO(file);
-    CHECK(slurp(dir.path / "part" / file) == slurp(dir.path / "whole" / file));
-  }
+  check_resumed_twice_as_whole(dir, 14, 20);
 }
