@@ -250,8 +250,9 @@ CaseKeys<RunCase> make_run_case_keys() {
               "the first pass's guess: the last step's state or its linear extrapolation")
       .choice("crack_stabiliser", [](auto& c) -> auto& { return c.coupling.crack_stabiliser; },
               "with [flow] crack_coupling = \"full\": each crack's response to a uniform pressure in the flow "
-              "solve (same fixed point; without it a fluid-filled crack's passes stall or diverge), or none "
-              "(docs/coupling.md)")
+              "solve (same fixed point; without it a fluid-filled crack's passes stall or diverge), each crack "
+              "unknown's own response (for a crack whose pressure is far from uniform: a viscous fluid, the cubic "
+              "law; a solve per crack unknown), or none (docs/coupling.md)")
       .check([](CaseTable& coupling, CaseTable&, RunCase& c) {
         c.coupling.validate();
         if (c.coupling.terms.borehole_spring != lt::BoreholeSpring::undrained) return;

@@ -449,10 +449,17 @@ Eigen::VectorXd CoupledModel::pressure_load(const Eigen::VectorXd& pressure) con
 void CoupledModel::update_crack_stabiliser(bool keep_unchanged_modes) {
   FlowStabiliser previous = std::move(crack_stabiliser_);
   crack_stabiliser_ = FlowStabiliser{};
-  if (flow_->parameters().crack_coupling != CrackCoupling::full ||
-      options_.crack_stabiliser != CrackStabiliser::uniform_pressure)
+  if (flow_->parameters().crack_coupling != CrackCoupling::full || options_.crack_stabiliser == CrackStabiliser::none)
     return;
-  crack_stabiliser_.modes = flow_->crack_modes();
+  const std::vector<std::vector<int>> cracks = flow_->crack_modes();
+  const bool per_unknown = options_.crack_stabiliser == CrackStabiliser::crack_unknowns;
+  crack_stabiliser_.modes = cracks;
+  if (per_unknown) {
+    std::vector<std::vector<int>> unknowns;
+    for (const std::vector<int>& crack : cracks)
+      for (const int v : crack) unknowns.push_back({v});
+    crack_stabiliser_.modes = std::move(unknowns);
+  }
   const auto k = static_cast<Eigen::Index>(crack_stabiliser_.modes.size());
   const Eigen::VectorXd& weights = flow_->crack_weights();
   // The stabiliser only sets the passes' path, not their fixed point: a crack whose unknowns and
@@ -465,6 +472,11 @@ void CoupledModel::update_crack_stabiliser(bool keep_unchanged_modes) {
       if (weights[e] != stabiliser_weights_[e])
         for (const int t : lattice().beam_triangles[static_cast<std::size_t>(e)])
           if (t >= 0) changed[static_cast<std::size_t>(t)] = 1;
+    // An event changes the response of every unknown of its crack, not only of those beside it.
+    if (per_unknown)
+      for (const std::vector<int>& crack : cracks)
+        if (std::any_of(crack.begin(), crack.end(), [&](int v) { return changed[static_cast<std::size_t>(v)]; }))
+          for (const int v : crack) changed[static_cast<std::size_t>(v)] = 1;
     for (std::size_t c = 0; c < previous.modes.size(); ++c)
       if (std::none_of(previous.modes[c].begin(), previous.modes[c].end(),
                        [&](int v) { return changed[static_cast<std::size_t>(v)]; }))
