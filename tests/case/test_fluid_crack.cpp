@@ -116,6 +116,18 @@ TEST_CASE("A viscous fluid-filled crack converges with each crack unknown's own 
   // uniform at iota = 1e12 (the test above).
   CHECK(hi > 0.0);
   CHECK(hi - lo > hi);
+
+  // The uniform response misses most of this crack's compliance: its passes settle on a fixed point
+  // with pressures ~100 E and displacements ~1e3 R (their deformed areas' storage balancing the books),
+  // which a step refuses as outside the small-strain model instead of accepting it.
+  dir.write("uniform.toml", fluid_crack_case("uniform_pressure", "1e-8", "1e-3", "10"));
+  const auto uniform = hm::cases::make_coupled_model(hm::cases::read_run_case(dir.path / "uniform.toml"));
+  REQUIRE(uniform->settle().is_ok());
+  const lt::CoupledStepSummary s = uniform->step(1e-10);
+  INFO(s.message);
+  CHECK(s.status == lt::CoupledStatus::not_converged);
+  CHECK_THAT(s.message, Catch::Contains("outside the small-strain model"));
+  CHECK(uniform->time() == 0.0);  // not taken
 }
 
 TEST_CASE("With the saw-tooth law a fluid-filled crack's process zone is crack in proportion to its damage",

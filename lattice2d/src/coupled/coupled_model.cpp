@@ -557,10 +557,30 @@ bool CoupledModel::solve_flow(double dt, int pass, const Eigen::VectorXd& u, con
   return false;
 }
 
+bool CoupledModel::within_small_strain(CoupledStepSummary& summary) const {
+  // The model is linear elasticity on the undeformed lattice with pressures over E: a pass map can
+  // have fixed points far outside that range (a fluid-filled crack whose stabiliser misses most of its
+  // compliance: pressures ~100 E, displacements ~1e3 R, the deformed areas' storage balancing the
+  // books). No rock reaches them: such a step is refused like one that did not converge, and retried.
+  constexpr double kMaxDisplacement = 0.1;  // over R: a tenth of the domain, 1e3 times a rock's strain at failure
+  constexpr double kMaxPressure = 1.0;      // over E
+  const double u_max = mechanics_->displacement().cwiseAbs().maxCoeff();
+  const double p_max = flow_->trial_pressure().cwiseAbs().maxCoeff();
+  if (u_max <= kMaxDisplacement && p_max <= kMaxPressure) return true;
+  summary.message = "coupling at t = " + hm::core::format_value(summary.time) +
+                    ": converged to a state outside the small-strain model (largest |u| = " +
+                    hm::core::format_value(u_max) + " R, largest |p| = " + hm::core::format_value(p_max) +
+                    " E; limits " + hm::core::format_value(kMaxDisplacement) + " R and " +
+                    hm::core::format_value(kMaxPressure) + " E)";
+  return false;
+}
+
 void CoupledModel::finish_step(double dt, bool converged, DualGraph dual, CoupledStepSummary& summary) {
   if (summary.status != CoupledStatus::solver_failure && summary.status != CoupledStatus::overshoot &&
       summary.status != CoupledStatus::interrupted) {
-    if (converged) {
+    if (converged && !within_small_strain(summary)) {
+      summary.status = CoupledStatus::not_converged;
+    } else if (converged) {
       summary.status = CoupledStatus::converged;
     } else if (options_.accept_unconverged) {
       summary.status = CoupledStatus::accepted_unconverged;
