@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 
 #include "hm/case/coupled_model_of_case.hpp"
 #include "hm/case/run_case.hpp"
@@ -30,6 +31,16 @@ std::string fluid_crack_case(const std::string& stabiliser, const std::string& t
          "[numerics]\nt_end = 5e-10\ndt_initial = 1e-10\n"
          "[fracture]\nenabled = true\nnotch = [[-0.2, 0.0, 0.2, 0.0]]\n"
          "[output]\nvtk = false\n";
+}
+
+// The lowest and highest pressure of the model's one crack.
+std::pair<double, double> crack_pressure_range(const lt::CoupledModel& model) {
+  const auto modes = model.flow().crack_modes();
+  REQUIRE(modes.size() == 1);
+  const Eigen::VectorXd& p = model.flow().pressure();
+  double lo = p[modes[0][0]], hi = lo;
+  for (int u : modes[0]) lo = std::min(lo, p[u]), hi = std::max(hi, p[u]);
+  return {lo, hi};
 }
 
 }  // namespace
@@ -61,11 +72,7 @@ TEST_CASE("A fluid-filled crack at b = 0 converges with the crack stabiliser and
   CHECK(totals.injected == Approx(1000.0 * t).epsilon(1e-12));
   CHECK(totals.deformation == Approx(totals.injected).epsilon(0.01));
   // With iota = 1e12 the crack's pressure is uniform: its viscous drop ~ Q/iota = 1e-9 against ~2e-6.
-  const auto modes = model->flow().crack_modes();
-  REQUIRE(modes.size() == 1);
-  const Eigen::VectorXd& p = model->flow().pressure();
-  double lo = p[modes[0][0]], hi = lo;
-  for (int u : modes[0]) lo = std::min(lo, p[u]), hi = std::max(hi, p[u]);
+  const auto [lo, hi] = crack_pressure_range(*model);
   CHECK(lo > 0.0);
   CHECK((hi - lo) / hi < 0.01);
 
@@ -107,11 +114,7 @@ TEST_CASE("A viscous fluid-filled crack converges with each crack unknown's own 
   // pressure pushes ~12% into the rock beside it: measured coupling 1.14 and storage -0.14 of Q t).
   CHECK(totals.deformation > 0.9 * totals.injected);
   CHECK(totals.deformation < 1.3 * totals.injected);
-  const auto modes = model->flow().crack_modes();
-  REQUIRE(modes.size() == 1);
-  const Eigen::VectorXd& p = model->flow().pressure();
-  double lo = p[modes[0][0]], hi = lo;
-  for (int u : modes[0]) lo = std::min(lo, p[u]), hi = std::max(hi, p[u]);
+  const auto [lo, hi] = crack_pressure_range(*model);
   // The viscous drop: high at the source, suction at the tips (measured 0.020 and -0.021); within 1% of
   // uniform at iota = 1e12 (the test above).
   CHECK(hi > 0.0);
