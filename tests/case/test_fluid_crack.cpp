@@ -200,6 +200,39 @@ TEST_CASE("With the saw-tooth law a fluid-filled crack's process zone is crack i
   CHECK(totals.deformation == Approx(totals.injected).epsilon(0.02));
 }
 
+TEST_CASE("In the tight-rock limit the cubic law's crack grows as iota = 1e12's: the toughness-dominated KGD",
+          "[case][coupling]") {
+  // k/R^2 = 1e-24: an aperture of 1e-5 R conducts 1e-15 / 1.2e-23 ~ 1e8 times the rock, so the crack's
+  // pressure is uniform as with iota = 1e12 and the same teeth give way at the same states. Measured at
+  // N = 3000 to t = 8e-8: 594 teeth and 64 broken beams in both, p_h within 4e-5.
+  TempDir dir("cubic-tight");
+  const std::string kgd = hm::test::edited(
+      hm::test::slurp(std::filesystem::path(HM_SOURCE_DIR) / "cases/kgd_toughness_quick.toml"),
+      {{"n_particles = 3000", "n_particles = 1500"}, {"t_end = 8e-8", "t_end = 1.2e-8"},
+       {"times = [2e-8, 4e-8]", "times = [1.2e-8]"}, {"vtk = true", "vtk = false"}});
+  dir.write("iota.toml", kgd);
+  dir.write("cubic.toml", hm::test::edited(kgd, {{"iota = 1e12", "iota = 1.0"},
+                                                 {"crack_coupling = \"full\"",
+                                                  "crack_coupling = \"full\"\nfracture_flow = \"cubic\"\n"
+                                                  "rock_permeability = 1e-24\nresidual_aperture = 1e-6"}}));
+  const auto run_of = [&](const std::string& name) {
+    const hm::cases::RunCase c = hm::cases::read_run_case(dir.path / name);
+    auto model = hm::cases::make_coupled_model(c);
+    const lt::CoupledRunSummary run = model->run(c.stepping);
+    INFO(name << ": " << run.message);
+    REQUIRE(run.status == lt::CoupledStatus::converged);
+    return model;
+  };
+  const auto iota = run_of("iota.toml");
+  const auto cubic = run_of("cubic.toml");
+  REQUIRE(iota->tooth_log().size() > 20);
+  CHECK(cubic->tooth_log().size() == iota->tooth_log().size());
+  CHECK(cubic->n_broken() == iota->n_broken());
+  // The cubic crack's conductance is finite: its pressure differs by the viscous drop, ~1e-4 here.
+  CHECK(cubic->flow().pressure()[cubic->flow().source_triangle()] ==
+        Approx(iota->flow().pressure()[iota->flow().source_triangle()]).epsilon(1e-3));
+}
+
 TEST_CASE("The balance tolerance keeps passing until a fluid-filled crack holds the run's fluid", "[case][coupling]") {
   // Loose pass tolerances (1e-2) stop the passes while the stabiliser's term, fluid charged to the
   // crack ahead of its opening, is still a sizeable part of the run's volumes (measured 0.018 of them;
