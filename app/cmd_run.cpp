@@ -206,6 +206,13 @@ void run_case(const RunArgs& a, int& exit_code, const std::string& command_line)
                           (c.coupling.relaxation == lattice2d::CouplingRelaxation::anderson
                                ? ""
                                : "[coupling] relaxation = \"anderson\", ") +
+                          // A fluid-filled crack whose pressure is far from uniform (docs/coupling.md).
+                          (c.crack_coupling == lattice2d::CrackCoupling::full &&
+                                   c.coupling.crack_stabiliser == lattice2d::CrackStabiliser::uniform_pressure &&
+                                   (c.fracture_flow.law != lattice2d::FractureFlow::permeability ||
+                                    c.physics.parameters.iota < 1e6)
+                               ? "[coupling] crack_stabiliser = \"crack_unknowns\", "
+                               : "") +
                           "a smaller [numerics] dt_initial or dt_max";
     std::cerr << "hmlattice run: " << core::one_line(why, 300) << what_to_try << "; the " << step
               << " steps done (t = " << model->time() << " of " << c.stepping.t_end << ") are in " << kept.string()

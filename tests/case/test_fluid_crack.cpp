@@ -131,6 +131,10 @@ TEST_CASE("A viscous fluid-filled crack converges with each crack unknown's own 
   CHECK(s.status == lt::CoupledStatus::not_converged);
   CHECK_THAT(s.message, Catch::Contains("outside the small-strain model"));
   CHECK(uniform->time() == 0.0);  // not taken
+  // Through the program: no halving helps, and the message says what to try.
+  const auto r = hm::test::run_hmlattice("run uniform.toml --out out", dir.path);
+  CHECK(r.exit_code == 1);
+  CHECK_THAT(r.err, Catch::Contains("crack_stabiliser = \"crack_unknowns\""));
 }
 
 TEST_CASE("With the saw-tooth law a fluid-filled crack's process zone is crack in proportion to its damage",
