@@ -395,7 +395,8 @@ class CoupledModel {
   FlowStabiliser crack_stabiliser_;
   Eigen::VectorXd stabiliser_weights_;  // the crack weights crack_stabiliser_ was computed with
   void finish_step(double dt, bool converged, DualGraph dual, CoupledStepSummary& summary);  // accept or restore t^n
-  // A converged pass state inside the model's range (|u| <= 0.1 R, |p| <= 1 E); else says why in summary.
+  // A converged pass state inside the model's range (every displacement <= 0.1 R, rotation <= 0.1 rad,
+  // |p| <= 1 E); else says why in summary.
   bool within_small_strain(CoupledStepSummary& summary) const;
   Eigen::Matrix2Xd positions(const Eigen::VectorXd& u) const;
   Eigen::VectorXd unknown_volumes(const Eigen::VectorXd& triangle_area) const;  // V_s (areas), then V_h
