@@ -41,7 +41,7 @@ Eigen::VectorXd pressure_forces(const Lattice& lattice, const DualGraph& dual, c
     f[dof_index(j, 0)] -= F_i.x();
     f[dof_index(j, 1)] -= F_i.y();
     if (tag == BoundaryTag::inner && terms.borehole_wall_traction && p_h != 0.0) {
-      const Eigen::Vector2d w = -0.5 * p_h * lattice.length[e] * lattice.outward_normal(e);
+      const Eigen::Vector2d w = lattice.lumped_pressure_force(e, p_h);
       for (int q : {i, j}) {
         f[dof_index(q, 0)] += w.x();
         f[dof_index(q, 1)] += w.y();
@@ -55,7 +55,7 @@ Eigen::VectorXd borehole_volume_gradient(const Lattice& lattice) {
   Eigen::VectorXd g = Eigen::VectorXd::Zero(3 * lattice.n_particles());
   for (int e = 0; e < lattice.n_beams(); ++e) {
     if (lattice.beam_boundary[static_cast<std::size_t>(e)] != BoundaryTag::inner) continue;
-    const Eigen::Vector2d w = -0.5 * lattice.length[e] * lattice.outward_normal(e);  // per unit p_h
+    const Eigen::Vector2d w = lattice.lumped_pressure_force(e, 1.0);  // per unit p_h
     for (const int q : lattice.beams[static_cast<std::size_t>(e)]) {
       g[dof_index(q, 0)] += w.x();
       g[dof_index(q, 1)] += w.y();
@@ -102,15 +102,9 @@ Eigen::VectorXd spring_preload(const Lattice& lattice, const Eigen::VectorXd& st
   assert(stiffness.size() == lattice.n_beams() && "spring_preload: one stiffness per beam");
   assert(u_reference.size() == 3 * lattice.n_particles() && "spring_preload: 3 dofs per particle");
   Eigen::VectorXd f = Eigen::VectorXd::Zero(3 * lattice.n_particles());
-  for (int e = 0; e < lattice.n_beams(); ++e) {
-    if (stiffness[e] == 0.0) continue;
-    const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
-    const Eigen::Vector2d g = stiffness[e] * normal_elongation(lattice, u_reference, e) * lattice.direction.col(e);
-    f[dof_index(i, 0)] -= g.x();
-    f[dof_index(i, 1)] -= g.y();
-    f[dof_index(j, 0)] += g.x();
-    f[dof_index(j, 1)] += g.y();
-  }
+  for (int e = 0; e < lattice.n_beams(); ++e)
+    if (stiffness[e] != 0.0)
+      NormalSpring(lattice, e).add_force(stiffness[e], normal_elongation(lattice, u_reference, e), f);
   return f;
 }
 

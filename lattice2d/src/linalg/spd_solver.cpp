@@ -165,6 +165,25 @@ SpdSolveReport report_keeping_totals(const SpdSolveReport& old) {
   return r;
 }
 
+/// The smallest and largest pivot of a simplicial LDL' factor (D leads each column of L). A zero or
+/// negative pivot slips through a factorisation and a downdate alike, without an error; a pivot far
+/// below the largest means a matrix singular to round-off.
+struct PivotRange {
+  double min = INFINITY, max = 0.0;
+  bool acceptable(double tolerance) const { return min > tolerance * max; }
+};
+
+PivotRange ldl_pivots(const cholmod_factor& L) {
+  const auto* p = static_cast<const int*>(L.p);
+  const auto* x = static_cast<const double*>(L.x);
+  PivotRange d;
+  for (std::size_t j = 0; j < L.n; ++j) {
+    d.min = std::min(d.min, x[p[j]]);
+    d.max = std::max(d.max, x[p[j]]);
+  }
+  return d;
+}
+
 }  // namespace
 
 CholmodSolver::~CholmodSolver() = default;
@@ -429,18 +448,10 @@ void CholmodSolver::refactorize() {
   }
   report_.info = Eigen::Success;
   report_.message.clear();
-  // A zero or negative pivot slips through an LDL' factorisation; check D explicitly.
-  const auto* Lp = static_cast<const int*>(impl_->factor->p);
-  const auto* Lx = static_cast<const double*>(impl_->factor->x);
-  double d_min = INFINITY, d_max = 0.0;
-  for (std::size_t j = 0; j < impl_->factor->n; ++j) {
-    d_min = std::min(d_min, Lx[Lp[j]]);
-    d_max = std::max(d_max, Lx[Lp[j]]);
-  }
-  if (!(d_min > options_.pivot_tolerance * d_max)) {
+  if (const PivotRange d = ldl_pivots(*impl_->factor); !d.acceptable(options_.pivot_tolerance)) {
     report_.info = Eigen::NumericalIssue;
-    report_.message = "LDL' pivot " + hm::core::format_value(d_min) + " <= pivot_tolerance * max pivot " +
-                      hm::core::format_value(d_max) + ": matrix singular or indefinite";
+    report_.message = "LDL' pivot " + hm::core::format_value(d.min) + " <= pivot_tolerance * max pivot " +
+                      hm::core::format_value(d.max) + ": matrix singular or indefinite";
   }
   impl_->factor_ok = report_.info == Eigen::Success;
 }
@@ -509,18 +520,10 @@ void CholmodSolver::modify(const Matrix& W, int sigma) {
     refactorize();
     return;
   }
-  // A downdate that makes A singular leaves a zero or negative pivot in D, without an error.
   // Only the pivots on the modified path change, but an O(n) scan is cheap against a solve.
-  const auto* Lp = static_cast<const int*>(impl_->factor->p);
-  const auto* Lx = static_cast<const double*>(impl_->factor->x);
-  double d_min = INFINITY, d_max = 0.0;
-  for (int j = 0; j < n; ++j) {
-    d_min = std::min(d_min, Lx[Lp[j]]);
-    d_max = std::max(d_max, Lx[Lp[j]]);
-  }
-  if (!(d_min > options_.pivot_tolerance * d_max)) {
+  if (const PivotRange d = ldl_pivots(*impl_->factor); !d.acceptable(options_.pivot_tolerance)) {
     report_.info = Eigen::NumericalIssue;
-    report_.message = "LDL' pivot " + hm::core::format_value(d_min) +
+    report_.message = "LDL' pivot " + hm::core::format_value(d.min) +
                       " after a low-rank modification: matrix singular or indefinite";
   } else {
     report_.info = Eigen::Success;

@@ -226,9 +226,8 @@ BeamMechanics::BeamMechanics(Lattice lattice, const BeamParameters& parameters, 
     const bool stressed = tag == BoundaryTag::outer && outer_stressed;
     if (p == 0.0 && !stressed) continue;
     const auto [i, j] = lattice_.beams[static_cast<std::size_t>(e)];
-    const Eigen::Vector2d m = lattice_.outward_normal(e);
-    Eigen::Vector2d f = -0.5 * p * lattice_.length[e] * m;  // positive p pushes into the solid
-    if (stressed) f += 0.5 * lattice_.length[e] * (conditions_.outer_stress * m);
+    Eigen::Vector2d f = lattice_.lumped_pressure_force(e, p);
+    if (stressed) f += 0.5 * lattice_.length[e] * (conditions_.outer_stress * lattice_.outward_normal(e));
     for (int q : {i, j}) {
       pressure_loads_[dof_index(q, 0)] += f.x();
       pressure_loads_[dof_index(q, 1)] += f.y();
@@ -288,20 +287,15 @@ void BeamMechanics::setup_system() {
   // inside the beam's pattern, so the pattern is that of the dry lattice.
   for (int e = 0; e < springs_.size(); ++e) {
     if (springs_[e] == 0.0) continue;
-    const auto d = beam_dofs(lattice_, e);
-    const Eigen::Vector2d n = lattice_.direction.col(e);
-    Eigen::Matrix<double, 4, 1> g;  // (x_i, y_i, x_j, y_j) -> elongation
-    g << -n.x(), -n.y(), n.x(), n.y();
-    const std::array<int, 4> t = {d[0], d[1], d[3], d[4]};
-    double elong_h = 0.0;
-    for (int a = 0; a < 4; ++a) elong_h += g[a] * held_value_[t[static_cast<std::size_t>(a)]];
-    for (int a = 0; a < 4; ++a) {
-      held_term_[t[static_cast<std::size_t>(a)]] += springs_[e] * g[a] * elong_h;
-      const int ra = free_index_[static_cast<std::size_t>(t[static_cast<std::size_t>(a)])];
+    const NormalSpring spring(lattice_, e);
+    const double elong_h = spring.stretch(held_value_);
+    for (std::size_t a = 0; a < 4; ++a) {
+      held_term_[spring.dofs[a]] += springs_[e] * spring.g[a] * elong_h;
+      const int ra = free_index_[static_cast<std::size_t>(spring.dofs[a])];
       if (ra < 0) continue;
-      for (int b = 0; b < 4; ++b) {
-        const int rb = free_index_[static_cast<std::size_t>(t[static_cast<std::size_t>(b)])];
-        if (rb >= 0) triplets.emplace_back(ra, rb, springs_[e] * g[a] * g[b]);
+      for (std::size_t b = 0; b < 4; ++b) {
+        const int rb = free_index_[static_cast<std::size_t>(spring.dofs[b])];
+        if (rb >= 0) triplets.emplace_back(ra, rb, springs_[e] * spring.g[a] * spring.g[b]);
       }
     }
   }
@@ -410,20 +404,16 @@ void BeamMechanics::soften_beam(int beam, double stiffness_factor) {
 }
 
 void BeamMechanics::remove_normal_spring(int beam) {
-  // The spring's k g g^T on (x_i, y_i, x_j, y_j), g = (-n, n), as setup_system assembles it: one
-  // downdate with the column sqrt(k) g, and its share of the held-DOF term.
+  // The spring as setup_system assembles it: one downdate with the column sqrt(k) g, and its share of
+  // the held-DOF term.
   const double k = springs_[beam];
-  const auto d = beam_dofs(lattice_, beam);
-  const Eigen::Vector2d n = lattice_.direction.col(beam);
-  const std::array<int, 4> t = {d[0], d[1], d[3], d[4]};
-  const std::array<double, 4> g = {-n.x(), -n.y(), n.x(), n.y()};
-  double elong_h = 0.0;
-  for (std::size_t a = 0; a < 4; ++a) elong_h += g[a] * held_value_[t[a]];
+  const NormalSpring spring(lattice_, beam);
+  const double elong_h = spring.stretch(held_value_);
   std::vector<Eigen::Triplet<double>> w;
   for (std::size_t a = 0; a < 4; ++a) {
-    held_term_[t[a]] -= k * g[a] * elong_h;
-    const int r = free_index_[static_cast<std::size_t>(t[a])];
-    if (r >= 0 && g[a] != 0.0) w.emplace_back(r, 0, std::sqrt(k) * g[a]);
+    held_term_[spring.dofs[a]] -= k * spring.g[a] * elong_h;
+    const int r = free_index_[static_cast<std::size_t>(spring.dofs[a])];
+    if (r >= 0 && spring.g[a] != 0.0) w.emplace_back(r, 0, std::sqrt(k) * spring.g[a]);
   }
   springs_[beam] = 0.0;
   if (w.empty()) return;
@@ -762,16 +752,8 @@ Eigen::VectorXd BeamMechanics::reactions() const {
     const Vector6d f = BeamOperator(lattice_, e, beam_parameters(e), s).internal_force(element_displacements(lattice_, e, raw_));
     for (int a = 0; a < 6; ++a) r[d[static_cast<std::size_t>(a)]] += f[a];
   }
-  for (int e = 0; e < springs_.size(); ++e) {
-    if (springs_[e] == 0.0) continue;
-    const auto [i, j] = lattice_.beams[static_cast<std::size_t>(e)];
-    const Eigen::Vector2d n = lattice_.direction.col(e);
-    const Eigen::Vector2d f = springs_[e] * elongation(e) * n;  // K u for the spring: -f on i, +f on j
-    r[dof_index(i, 0)] -= f.x();
-    r[dof_index(i, 1)] -= f.y();
-    r[dof_index(j, 0)] += f.x();
-    r[dof_index(j, 1)] += f.y();
-  }
+  for (int e = 0; e < springs_.size(); ++e)
+    if (springs_[e] != 0.0) NormalSpring(lattice_, e).add_force(springs_[e], elongation(e), r);
   if (rank_one_.is_active()) r += rank_one_.force(raw_);
   return r;
 }

@@ -105,6 +105,10 @@ struct Lattice {
   /// The unit normal of boundary beam `beam` pointing out of the solid (away from its triangle's third
   /// vertex): a boundary traction t acts as -p m for a pressure p, lumped half to each end.
   Eigen::Vector2d outward_normal(int beam) const;
+  /// The force a pressure p on boundary beam `beam`'s face puts on each of its two ends, -p L m / 2
+  /// (positive p pushes into the solid): half to each end is exact for a constant traction (the
+  /// segment's force and moment). With p = 1, the wall's area gradient per end.
+  Eigen::Vector2d lumped_pressure_force(int beam, double p) const { return -0.5 * p * length[beam] * outward_normal(beam); }
 };
 
 /// Generates the lattice of `spec` (validated first; throws hm::InputError).

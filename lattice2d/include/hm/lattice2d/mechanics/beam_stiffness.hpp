@@ -243,6 +243,33 @@ inline double normal_elongation(const Lattice& lattice, const Eigen::VectorXd& u
   return du.dot(lattice.direction.col(beam));
 }
 
+/// Eq. 20's normal spring on a beam: k g g^T on its ends' translations (x_i, y_i, x_j, y_j), with
+/// g = (-n, n) so that g.u is the normal elongation. Its force is k (g.u) g: -k (g.u) n on i, +k (g.u) n
+/// on j. The one copy of this arithmetic for the mechanics' assembly, downdate and reactions and the
+/// coupling's preload (each passes the stiffness k it holds).
+struct NormalSpring {
+  std::array<int, 4> dofs;     ///< global dofs x_i, y_i, x_j, y_j
+  std::array<double, 4> g;     ///< d(elongation)/d(dofs) = (-n_x, -n_y, n_x, n_y)
+
+  NormalSpring(const Lattice& lattice, int beam) {
+    const auto [i, j] = lattice.beams[static_cast<std::size_t>(beam)];
+    const Eigen::Vector2d n = lattice.direction.col(beam);
+    dofs = {dof_index(i, 0), dof_index(i, 1), dof_index(j, 0), dof_index(j, 1)};
+    g = {-n.x(), -n.y(), n.x(), n.y()};
+  }
+  /// g.v over the spring's dofs of a vector with 3 dofs per particle (e.g. the held displacements).
+  double stretch(const Eigen::VectorXd& v) const {
+    double s = 0.0;
+    for (std::size_t a = 0; a < 4; ++a) s += g[a] * v[dofs[a]];
+    return s;
+  }
+  /// Adds the spring's force at elongation `elongation`, k elongation g, to f (3 dofs per particle).
+  void add_force(double k, double elongation, Eigen::VectorXd& f) const {
+    const double t = k * elongation;
+    for (std::size_t a = 0; a < 4; ++a) f[dofs[a]] += t * g[a];
+  }
+};
+
 /// K (3 n x 3 n, both triangles stored) for the lattice's undeformed beam geometry, each beam with
 /// beam_parameters_for(lattice, parameters, e); `states` is
 /// empty (all intact) or one per beam. Validates `parameters` (throws hm::InputError).
