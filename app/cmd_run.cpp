@@ -140,13 +140,10 @@ void run_case(const RunArgs& a, int& exit_code, const std::string& command_line)
     last_checkpoint = std::chrono::steady_clock::now();
   };
   double step_seconds = 0.0;  // for the ETA of the progress line
-  const auto is_first_break_end = [&](const lattice2d::CoupledModel& m) {
-    return c.stop_at_first_break && m.n_broken() > m.n_cut();  // a beam failed (a notch's are cut)
-  };
   bool stopped_at_first_break = false;
   const auto run = model->run(c.stepping, [&](const lattice2d::CoupledModel& m, const lattice2d::CoupledStepSummary& s,
                                               bool is_output) {
-    recorder->record(m, s, is_output || is_first_break_end(m));
+    recorder->record(m, s, is_output || c.reached_first_break(m));
     step = m.run_cursor().totals.n_steps;  // accepted steps so far (0 at the initial state)
     const double since = std::chrono::duration<double>(std::chrono::steady_clock::now() - last_checkpoint).count();
     if (step > 0 && (is_output || since >= a.checkpoint_seconds || step == a.stop_after_steps)) checkpoint(m);
@@ -163,7 +160,7 @@ void run_case(const RunArgs& a, int& exit_code, const std::string& command_line)
                              ? "; last failed update: " + m.mechanics().solver().report().last_update_failure
                              : std::string()));
   }, [&] {
-    stopped_at_first_break = is_first_break_end(*model);
+    stopped_at_first_break = c.reached_first_break(*model);
     return stopped_at_first_break || interrupt.signal() != 0 || step == a.stop_after_steps;
   });
   // Ending at the first break is the run's end, not an interruption (whatever else came with that step).

@@ -371,7 +371,7 @@ CaseKeys<RunCase> make_run_case_keys() {
         }
       });
   k.table("output")
-      .reals("times", [](auto& c) -> auto& { return c.output.times; }, "increasing, in (0, t_end]",
+      .reals("times", [](auto& c) -> auto& { return c.stepping.output_times; }, "increasing, in (0, t_end]",
              "times t* of the radial profiles and VTK snapshots besides t = 0; t_end is always added")
       .boolean("vtk", [](auto& c) -> auto& { return c.output.vtk; }, "write VTK snapshots (.vtu + .pvd) at the output times")
       .integer("radial_bins", [](auto& c) -> auto& { return c.output.radial_bins; }, 1, 10000, "1 <= radial_bins <= 10000",
@@ -390,7 +390,6 @@ CaseKeys<RunCase> make_run_case_keys() {
                    core::format_value(R_i) + " < radial_max <= 1");
         if (!lt::is_allowed_arm_gap(c.output.statistics.arm_gap))
           out.fail("arm_gap = " + core::format_value(c.output.statistics.arm_gap) + ", allowed: " + lt::kArmGapRule);
-        c.stepping.output_times = c.output.times;
       });
   return k;
 }

@@ -76,7 +76,6 @@ RunCase rudnicki_case(const RudnickiVariant& v) {
   c.stepping.dt_max = 2e-5;
   c.stepping.t_end = 3e-4;
   c.stepping.output_times = {3e-4};
-  c.output.times = c.stepping.output_times;
   c.output.vtk = false;
   c.output.radial_bins = 20;  // shells 0.01 wide: centres 0.015 ... 0.045 in [0.01, 0.05]
   c.output.radial_max = 0.2;

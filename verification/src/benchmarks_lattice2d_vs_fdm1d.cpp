@@ -112,7 +112,6 @@ RunCase lattice_case(const Comparison1d& v) {
   c.stepping.dt_max = v.stepping.dt_max;
   c.stepping.t_end = v.stepping.t_end;
   c.stepping.output_times = v.stepping.times;
-  c.output.times = v.stepping.times;
   c.output.vtk = false;
   c.output.radial_bins = kShells;
   c.output.radial_max = 1.0;

@@ -155,7 +155,7 @@ fdm1d::Fdm1dResult run_reference(const RunCase& c) {
   n.dt_growth = c.stepping.dt_growth;
   n.dt_max = c.stepping.dt_max;
   n.t_end = c.stepping.t_end;
-  n.output_times = c.output.times;
+  n.output_times = c.stepping.output_times;
   n.output_times.erase(std::remove_if(n.output_times.begin(), n.output_times.end(),
                                       [&](double t) { return t >= c.stepping.t_end * (1 - 1e-12); }),
                        n.output_times.end());
@@ -301,9 +301,8 @@ RunOutcome run_case(const RunCase& c, const std::string& label, const fs::path& 
   if (progress) reporter.emplace(*progress, label, 60.0);
   // As `hmlattice run` does with [fracture] stop_at_first_break: the step that breaks the first beam is
   // recorded as an output time's and is the last; the run is complete then (or at t_end, unbroken).
-  const auto first_break_end = [&](const lt::CoupledModel& m) { return c.stop_at_first_break && m.n_broken() > m.n_cut(); };
   const auto run = model->run(c.stepping, [&](const lt::CoupledModel& m, const lt::CoupledStepSummary& s, bool out) {
-    recorder.record(m, s, out || first_break_end(m));
+    recorder.record(m, s, out || c.reached_first_break(m));
     if (reporter) reporter->update(m.time(), c.stepping.t_end, "broken " + std::to_string(m.n_broken()));
     const auto& states = m.mechanics().states();
     for (std::size_t e = 0; e < states.size(); ++e) {
@@ -311,8 +310,8 @@ RunOutcome run_case(const RunCase& c, const std::string& label, const fs::path& 
       if (was_broken[e] && !broken) ++n_healed;
       was_broken[e] = was_broken[e] || broken;
     }
-  }, [&] { return first_break_end(*model); });
-  const bool complete = run.is_ok() || first_break_end(*model);
+  }, [&] { return c.reached_first_break(*model); });
+  const bool complete = run.is_ok() || c.reached_first_break(*model);
   if (reporter)
     reporter->finish(complete ? std::to_string(run.n_steps) + " steps, " + std::to_string(run.total_iterations) +
                                     " passes, " + std::to_string(model->n_broken()) + " broken"
@@ -342,9 +341,8 @@ RunCase flux_twin_case(const RunCase& c) {
   tc.fracture_enabled = false;
   tc.borehole_storage = lt::BoreholeStorage::none;
   tc.borehole_deformation = lt::BoreholeDeformation::none;
-  tc.stepping.t_end = c.output.times.empty() ? c.stepping.t_end : c.output.times.front();
+  tc.stepping.t_end = c.stepping.output_times.empty() ? c.stepping.t_end : c.stepping.output_times.front();
   tc.stepping.output_times.clear();
-  tc.output.times.clear();
   tc.output.vtk = false;
   return tc;
 }

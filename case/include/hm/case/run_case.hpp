@@ -21,10 +21,8 @@
 
 namespace hm::cases {
 
-/// What [output] asks for.
+/// What [output] asks for besides its times, which are the stepping's (RunCase::stepping.output_times).
 struct RunOutput {
-  /// Times (t*) of the radial profiles and VTK snapshots besides t = 0; t_end is always added.
-  std::vector<double> times;
   /// Write VTK snapshots (.vtu + .pvd) at the output times. Default true.
   bool vtk = true;
   /// Number of equal radial shells of radial.csv on [R_i, radial_max]. Allowed: 1 <= radial_bins <= 10000.
@@ -66,12 +64,17 @@ struct RunCase {
   bool reuse_flow_factorisation = hm::lattice2d::FlowParameters{}.reuse_factorisation;
   int flow_refresh_after_refinements = hm::lattice2d::FlowParameters{}.refresh_after_refinements;
   hm::lattice2d::CouplingOptions coupling;
-  hm::lattice2d::TimeStepping stepping;         ///< output times from [output] times
+  hm::lattice2d::TimeStepping stepping;         ///< its output_times are [output] times
   bool fracture_enabled = false;
   /// End the run with the accepted step that breaks the first beam: Section 3.5's breakdown pressure
   /// is known then, and the fracture after it is not needed (Fig. 18). That step's state is written
   /// as an output time's; the folder is complete. Allowed only with fracture_enabled. Default false.
   bool stop_at_first_break = false;
+  /// With stop_at_first_break, whether `model` has reached the run's end: a beam has failed (a notch's
+  /// cut beams do not count). The one rule for `hmlattice run` and the verification runs.
+  bool reached_first_break(const hm::lattice2d::CoupledModel& model) const {
+    return stop_at_first_break && model.n_broken() > model.n_cut();
+  }
   /// Beam strengths (means from [physics]) and the break loop's crack-tip rule; used when enabled.
   hm::lattice2d::StrengthSpec strength;
   hm::lattice2d::BreakLoopOptions break_loop;
