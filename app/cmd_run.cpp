@@ -204,9 +204,9 @@ void run_case(const RunArgs& a, int& exit_code, const std::string& command_line)
                                ? ""
                                : "[coupling] relaxation = \"anderson\", ") +
                           // A fluid-filled crack whose pressure is far from uniform (docs/coupling.md).
-                          (c.crack_coupling == lattice2d::CrackCoupling::full &&
+                          (c.flow.crack_coupling == lattice2d::CrackCoupling::full &&
                                    c.coupling.crack_stabiliser == lattice2d::CrackStabiliser::uniform_pressure &&
-                                   (c.fracture_flow.law != lattice2d::FractureFlow::permeability ||
+                                   (c.flow.fracture_flow.law != lattice2d::FractureFlow::permeability ||
                                     c.physics.parameters.iota < 1e6)
                                ? "[coupling] crack_stabiliser = \"crack_unknowns\", "
                                : "") +

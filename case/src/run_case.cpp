@@ -27,14 +27,7 @@ lt::BoundaryConditions RunCase::boundary_conditions() const {
 }
 
 lt::FlowParameters RunCase::flow_parameters() const {
-  lt::FlowParameters flow = lt::flow_parameters_of(physics.parameters, stepping.dt_initial);
-  flow.borehole_storage = borehole_storage;
-  flow.borehole_deformation = borehole_deformation;
-  flow.crack_coupling = crack_coupling;
-  flow.fracture_flow = fracture_flow;
-  flow.reuse_factorisation = reuse_flow_factorisation;
-  flow.refresh_after_refinements = flow_refresh_after_refinements;
-  return flow;
+  return lt::flow_parameters_of(physics.parameters, stepping.dt_initial, flow);
 }
 
 namespace {
@@ -62,7 +55,7 @@ double si_permeability(const RunCase& c) {
 }
 
 void check_cubic_law(CaseTable& flow, const RunCase& c) {
-  const lt::FractureFlowSpec& f = c.fracture_flow;
+  const lt::FractureFlowSpec& f = c.flow.fracture_flow;
   const bool cubic = f.law == lt::FractureFlow::cubic;
   const double w_r = f.residual_aperture;
   // 1% of R (1 cm at R = 1 m) is an open crack, not the roughness of closed faces.
@@ -136,64 +129,64 @@ CaseKeys<RunCase> make_run_case_keys() {
         c.boundary_conditions();  // validates S_H, S_h, theta_H and p0 with the library's rules
       });
   k.table("flow")
-      .choice("borehole_storage", [](auto& c) -> auto& { return c.borehole_storage; },
+      .choice("borehole_storage", [](auto& c) -> auto& { return c.flow.borehole_storage; },
               "the borehole node's storage: Eq. 16's E/M V_h, none, or the water-filled hole's E/K_w V_h "
               "(docs/flow.md)")
-      .choice("borehole_deformation", [](auto& c) -> auto& { return c.borehole_deformation; },
+      .choice("borehole_deformation", [](auto& c) -> auto& { return c.flow.borehole_deformation; },
               "the weight of the borehole's volume change in its balance: b (Eq. 16), none, or 1 (full: the "
               "hole holds only fluid) (docs/flow.md)",
-              [](const RunCase& c) { return lt::default_borehole_deformation(c.borehole_storage); },
+              [](const RunCase& c) { return lt::default_borehole_deformation(c.flow.borehole_storage); },
               "`\"" + core::name_of(lt::default_borehole_deformation(lt::BoreholeStorage::biot_modulus)) +
                   "\"`; `\"" + core::name_of(lt::default_borehole_deformation(lt::BoreholeStorage::none)) +
                   "\"` for borehole_storage = \"none\"; `\"" +
                   core::name_of(lt::default_borehole_deformation(lt::BoreholeStorage::fluid)) +
                   "\"` for \"fluid\"")
-      .choice("crack_coupling", [](auto& c) -> auto& { return c.crack_coupling; },
+      .choice("crack_coupling", [](auto& c) -> auto& { return c.flow.crack_coupling; },
               "the Biot coefficient of a crack: the rock's b on broken beams' triangles and segments (Eqs. 15, 17), "
               "or 1 (full: a fluid-filled void, docs/flow.md)")
-      .choice("fracture_flow", [](auto& c) -> auto& { return c.fracture_flow.law; },
+      .choice("fracture_flow", [](auto& c) -> auto& { return c.flow.fracture_flow.law; },
               "how a crack conducts: [physics] iota times the rock's A/d (Eq. 24; the crack's transmissivity then "
               "scales with the beam length), the rock's A/d plus crack_transmissivity / d (the same at every N), or "
               "the rock's A/d plus the parallel plates' a^3/(12 k) / d of the crack's aperture a (the cubic law, "
               "Eqs. 25-26; docs/flow.md)")
-      .real("crack_transmissivity", [](auto& c) -> auto& { return c.fracture_flow.transmissivity; },
+      .real("crack_transmissivity", [](auto& c) -> auto& { return c.flow.fracture_flow.transmissivity; },
             "0 <= value <= 1e12, finite; > 0 only with fracture_flow = \"transmissivity\"",
             "T = k_f w / (k R), a crack's permeability times its aperture over the rock's permeability times R")
-      .real("rock_permeability", [](auto& c) -> auto& { return c.fracture_flow.permeability; },
+      .real("rock_permeability", [](auto& c) -> auto& { return c.flow.fracture_flow.permeability; },
             "1e-25 <= value <= 1e-2, finite; only with fracture_flow = \"cubic\", where it is required with "
             "[physics] and is k/R^2 of [physics_si]",
             "k/R^2, the rock's permeability over the domain radius squared: the cubic law's scale (an aperture a "
             "conducts a^3/12 where the rock conducts k)",
-            [](const RunCase& c) { return c.fracture_flow.law == lt::FractureFlow::cubic ? si_permeability(c) : 0.0; },
+            [](const RunCase& c) { return c.flow.fracture_flow.law == lt::FractureFlow::cubic ? si_permeability(c) : 0.0; },
             "`0`; k/R^2 of [physics_si] with fracture_flow = \"cubic\"")
-      .real("residual_aperture", [](auto& c) -> auto& { return c.fracture_flow.residual_aperture; },
+      .real("residual_aperture", [](auto& c) -> auto& { return c.flow.fracture_flow.residual_aperture; },
             "0 <= value <= 0.01, finite; > 0 only with fracture_flow = \"cubic\"",
             "w_r/R, the aperture a crack keeps when its faces touch (the cubic law): a pinched point does not "
             "block the crack's flow")
       .check([](CaseTable& flow, CaseTable& root, RunCase& c) {
         check_cubic_law(flow, c);
-        const double T = c.fracture_flow.transmissivity;
+        const double T = c.flow.fracture_flow.transmissivity;
         if (!(T >= 0.0 && T <= 1e12))
           flow.fail("crack_transmissivity = " + core::format_value(T) +
                     ", allowed: 0 <= value <= 1e12 (iota's bound in units of R: a 0.3 mm aperture at k_f ~ 1e-8 m^2 "
                     "in a nanodarcy rock)");
-        if (c.fracture_flow.law == lt::FractureFlow::permeability && T != 0.0)
+        if (c.flow.fracture_flow.law == lt::FractureFlow::permeability && T != 0.0)
           flow.fail("crack_transmissivity = " + core::format_value(T) +
                     ", allowed: only with fracture_flow = \"transmissivity\" (iota sets the crack's conductance otherwise)");
         const double iota = c.physics.parameters.iota;
-        if (c.fracture_flow.law != lt::FractureFlow::permeability && iota != 1.0) {
-          const std::string law = core::name_of(c.fracture_flow.law);
+        if (c.flow.fracture_flow.law != lt::FractureFlow::permeability && iota != 1.0) {
+          const std::string law = core::name_of(c.flow.fracture_flow.law);
           const std::string rule = " with [flow] fracture_flow = \"" + law + "\" (the crack's conductance is " +
-                                   (c.fracture_flow.law == lt::FractureFlow::cubic ? "its aperture's"
+                                   (c.flow.fracture_flow.law == lt::FractureFlow::cubic ? "its aperture's"
                                                                                   : "crack_transmissivity's") + ")";
           if (c.physics.physical)
             root.table("physics_si").fail("k_f = " + core::format_value(iota) + " k, allowed: k_f = k" + rule);
           root.table("physics").fail("iota = " + core::format_value(iota) + ", allowed: 1" + rule);
         }
       })
-      .boolean("reuse_factorisation", [](auto& c) -> auto& { return c.reuse_flow_factorisation; },
+      .boolean("reuse_factorisation", [](auto& c) -> auto& { return c.flow.reuse_factorisation; },
                "reuse the flow matrix's factor while the geometry changes little (iterative refinement)")
-      .integer("refresh_after_refinements", [](auto& c) -> auto& { return c.flow_refresh_after_refinements; }, 0, 1000000,
+      .integer("refresh_after_refinements", [](auto& c) -> auto& { return c.flow.refresh_after_refinements; }, 0, 1000000,
                "0 ... 1000000", "refactorise the flow matrix after this many refinement sweeps (0: never)");
   k.table("coupling", "coupling.")
       .choice("split", [](auto& c) -> auto& { return c.coupling.split; },
@@ -258,7 +251,7 @@ CaseKeys<RunCase> make_run_case_keys() {
         if (c.coupling.terms.borehole_spring != lt::BoreholeSpring::undrained) return;
         if (c.lattice.domain != lt::DomainShape::annulus)
           coupling.fail("borehole_spring = \"undrained\", allowed: only with [lattice] domain = \"annulus\" (a borehole)");
-        if (c.borehole_storage == lt::BoreholeStorage::none || c.borehole_deformation == lt::BoreholeDeformation::none)
+        if (c.flow.borehole_storage == lt::BoreholeStorage::none || c.flow.borehole_deformation == lt::BoreholeDeformation::none)
           coupling.fail("borehole_spring = \"undrained\", allowed: only with [flow] borehole_storage and "
                         "borehole_deformation not \"none\" (the hole's volume must set its pressure)");
       });

@@ -51,16 +51,16 @@ TEST_CASE("A borehole case runs with any subset of its [flow] keys left out, bor
     dir.write("case.toml", text);
     const hm::cases::RunCase c = hm::cases::read_run_case(dir.path / "case.toml");
     const bool storage_given = !(mask & 1u), deformation_given = !(mask & 2u);
-    CHECK(c.borehole_storage == (storage_given ? lt::BoreholeStorage::none : lt::BoreholeStorage::biot_modulus));
+    CHECK(c.flow.borehole_storage == (storage_given ? lt::BoreholeStorage::none : lt::BoreholeStorage::biot_modulus));
     // The documented rule: given, as given ("none" here); left out, "none" with storage "none" and
     // "biot" (Eq. 16 as printed) with storage "biot-modulus".
     const lt::BoreholeDeformation expected = deformation_given || storage_given ? lt::BoreholeDeformation::none
                                                                                 : lt::BoreholeDeformation::biot;
-    CHECK(c.borehole_deformation == expected);
-    CHECK(c.reuse_flow_factorisation == ((mask & 4u) ? lt::FlowParameters{}.reuse_factorisation : true));
+    CHECK(c.flow.borehole_deformation == expected);
+    CHECK(c.flow.reuse_factorisation == ((mask & 4u) ? lt::FlowParameters{}.reuse_factorisation : true));
     // The resolved config states the value and reads back to the same case.
     dir.write("config.toml", hm::cases::run_case_to_toml(c, ""));
-    CHECK(hm::cases::read_run_case(dir.path / "config.toml").borehole_deformation == expected);
+    CHECK(hm::cases::read_run_case(dir.path / "config.toml").flow.borehole_deformation == expected);
 
     // Two coupled steps of the case's first dt: the diverging pairing (storage none with the b dV_h
     // term) fails already in the first step here (measured: at pass 12 the break loop had broken every
@@ -83,13 +83,13 @@ TEST_CASE("The water-filled borehole: storage \"fluid\" takes deformation \"full
   TempDir dir("flow-fluid");
   dir.write("case.toml", text);
   const hm::cases::RunCase c = hm::cases::read_run_case(dir.path / "case.toml");
-  CHECK(c.borehole_storage == lt::BoreholeStorage::fluid);
-  CHECK(c.borehole_deformation == lt::BoreholeDeformation::full);
+  CHECK(c.flow.borehole_storage == lt::BoreholeStorage::fluid);
+  CHECK(c.flow.borehole_deformation == lt::BoreholeDeformation::full);
   CHECK(c.flow_parameters().E_over_Kw == hm::analytic::table1_E_over_Kw);
   const std::string config = hm::cases::run_case_to_toml(c, "");
   CHECK_THAT(config, Catch::Contains("borehole_deformation = \"full\"") && Catch::Contains("E_over_Kw = "));
   dir.write("config.toml", config);
-  CHECK(hm::cases::read_run_case(dir.path / "config.toml").borehole_deformation == lt::BoreholeDeformation::full);
+  CHECK(hm::cases::read_run_case(dir.path / "config.toml").flow.borehole_deformation == lt::BoreholeDeformation::full);
 
   // Two coupled steps converge: the hole's storage keeps the loop through the borehole node stable.
   const auto model = hm::cases::make_coupled_model(c);

@@ -130,8 +130,8 @@ RunCase lattice_case(const RunCase& base, double b, double Q, long long N, unsig
   c.stepping.t_end = std::min(4.0, 1e3 * c.stepping.dt_max);
   c.output.vtk = false;
   if (flux_node) {
-    c.borehole_storage = lt::BoreholeStorage::none;
-    c.borehole_deformation = lt::BoreholeDeformation::none;
+    c.flow.borehole_storage = lt::BoreholeStorage::none;
+    c.flow.borehole_deformation = lt::BoreholeDeformation::none;
   }
   return c;
 }

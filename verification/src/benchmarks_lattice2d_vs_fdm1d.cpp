@@ -102,8 +102,8 @@ RunCase lattice_case(const Comparison1d& v) {
   c.lattice.n_particles = v.n_particles;
   c.lattice.seed = 1;
   c.boundary.outer = lt::BoundarySupport::free;
-  c.borehole_storage = lt::BoreholeStorage::none;
-  c.borehole_deformation = lt::BoreholeDeformation::none;
+  c.flow.borehole_storage = lt::BoreholeStorage::none;
+  c.flow.borehole_deformation = lt::BoreholeDeformation::none;
   c.coupling.split = lt::CouplingSplit::undrained;
   c.coupling.terms.psi = 1.3;
   c.coupling.relaxation = lt::CouplingRelaxation::none;

@@ -129,8 +129,8 @@ RunOutcome describe(const RunCase& c, const std::string& label) {
   o.n_particles = c.lattice.n_particles;
   o.seed = c.lattice.seed;
   o.R_i = c.physics.parameters.R_i;
-  o.eq16_node = c.borehole_storage == lt::BoreholeStorage::biot_modulus &&
-                c.borehole_deformation == lt::BoreholeDeformation::biot;
+  o.eq16_node = c.flow.borehole_storage == lt::BoreholeStorage::biot_modulus &&
+                c.flow.borehole_deformation == lt::BoreholeDeformation::biot;
   return o;
 }
 
@@ -339,8 +339,8 @@ RunOutcome run_case(const RunCase& c, const std::string& label, const fs::path& 
 RunCase flux_twin_case(const RunCase& c) {
   RunCase tc = c;
   tc.fracture_enabled = false;
-  tc.borehole_storage = lt::BoreholeStorage::none;
-  tc.borehole_deformation = lt::BoreholeDeformation::none;
+  tc.flow.borehole_storage = lt::BoreholeStorage::none;
+  tc.flow.borehole_deformation = lt::BoreholeDeformation::none;
   tc.stepping.t_end = c.stepping.output_times.empty() ? c.stepping.t_end : c.stepping.output_times.front();
   tc.stepping.output_times.clear();
   tc.output.vtk = false;
@@ -407,8 +407,8 @@ RunCase with_lattice(RunCase c, long long n_particles, unsigned long long seed) 
 }
 
 RunCase with_eq16_borehole_node(RunCase c) {
-  c.borehole_storage = lt::BoreholeStorage::biot_modulus;
-  c.borehole_deformation = lt::BoreholeDeformation::biot;
+  c.flow.borehole_storage = lt::BoreholeStorage::biot_modulus;
+  c.flow.borehole_deformation = lt::BoreholeDeformation::biot;
   return c;
 }
 

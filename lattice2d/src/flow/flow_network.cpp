@@ -83,8 +83,10 @@ BoreholeDeformation default_borehole_deformation(BoreholeStorage storage) {
   return BoreholeDeformation::biot;
 }
 
-FlowParameters flow_parameters_of(const hm::analytic::DimensionlessParameters& parameters, double dt) {
+FlowParameters flow_parameters_of(const hm::analytic::DimensionlessParameters& parameters, double dt,
+                                  const FlowOptions& options) {
   FlowParameters flow;
+  static_cast<FlowOptions&>(flow) = options;
   flow.Q = parameters.Q;
   flow.E_over_M = parameters.material.E_over_M;
   flow.E_over_Kw = parameters.E_over_Kw;

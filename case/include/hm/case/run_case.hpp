@@ -54,15 +54,9 @@ struct RunCase {
   hm::lattice2d::BoundaryConditions boundary;   ///< only `outer` is read from the case
   InSituState insitu;                           ///< [mechanics] S_H, S_h, theta_H, p0
   hm::lattice2d::MechanicsOptions mechanics;    ///< only `solver` is read from the case
-  hm::lattice2d::BoreholeStorage borehole_storage = hm::lattice2d::BoreholeStorage::biot_modulus;
-  /// Read with the default default_borehole_deformation(borehole_storage).
-  hm::lattice2d::BoreholeDeformation borehole_deformation = hm::lattice2d::BoreholeDeformation::biot;
-  /// [flow] crack_coupling: the Biot coefficient of broken beams' triangles and segments.
-  hm::lattice2d::CrackCoupling crack_coupling = hm::lattice2d::CrackCoupling::biot;
-  /// [flow] fracture_flow and crack_transmissivity: how broken beams' segments conduct.
-  hm::lattice2d::FractureFlowSpec fracture_flow;
-  bool reuse_flow_factorisation = hm::lattice2d::FlowParameters{}.reuse_factorisation;
-  int flow_refresh_after_refinements = hm::lattice2d::FlowParameters{}.refresh_after_refinements;
+  /// [flow]'s options (borehole_deformation read with the default of its borehole_storage); the flow's
+  /// physics comes from [physics] (flow_parameters()).
+  hm::lattice2d::FlowOptions flow;
   hm::lattice2d::CouplingOptions coupling;
   hm::lattice2d::TimeStepping stepping;         ///< its output_times are [output] times
   bool fracture_enabled = false;

@@ -90,30 +90,19 @@ struct FractureFlowSpec {
   double residual_aperture = 0.0;
 };
 
-/// Parameters of the flow network. Every default is set here; validate() checks each rule.
-struct FlowParameters {
-  /// Q, dimensionless injection rate (Eq. 14, Q = mu q/(k E)), into the borehole node (annulus) or
-  /// the source triangle (disk, rectangle). Allowed: finite, >= 0.
-  double Q = 0.01;
-  /// E/M, storage coefficient of Eqs. 14-16 (the paper prints V/M; Eq. 14 and docs/errata.md E11
-  /// give E/M in dimensionless form). Default: Eq. 22 with Table 1 at b = 0.5. Allowed: > 0, finite.
-  double E_over_M = hm::analytic::E_over_M_table1(0.5, 0.25);
-  /// b, Biot coefficient multiplying the volume change V^{n+1} - V^n in Eqs. 15-16.
-  /// Allowed: 0 <= b <= 1.
-  double b = 0.5;
-  /// E/K_w, the borehole water's storage coefficient with borehole_storage = fluid (dimensionless:
-  /// fluid volume stored per unit pressure over E, per unit hole volume). Default Table 1's
-  /// E = 1e10 Pa over K_w = 2.2e9 Pa. Allowed: > 0, finite.
-  double E_over_Kw = hm::analytic::table1_E_over_Kw;
-  /// iota = k_f/k, conductance factor of Voronoi segments crossing broken beams (Section 2.2), with
-  /// fracture_flow.law = permeability. Allowed: > 0, finite.
-  double iota = 1.0;
+/// How the flow network models the borehole and the cracks and how it solves: the [flow] table's
+/// choices, the physics aside. Every default is set here; FlowParameters::validate() checks each rule.
+struct FlowOptions {
   /// How broken beams' segments conduct: iota (the paper) or a transmissivity of the crack's own.
   FractureFlowSpec fracture_flow;
-  /// Delta t, the default time step of step() (Eq. 15). Allowed: > 0, finite.
-  double time_step = 1e-5;
   /// Borehole storage (Eq. 16). Default: the paper's Eq. 16; see docs/flow.md.
   BoreholeStorage borehole_storage = BoreholeStorage::biot_modulus;
+  /// Borehole deformation term (Eq. 16). Default: the paper's Eq. 16 (default_borehole_deformation of
+  /// the default storage). With borehole_storage = none and this = none the borehole node is the 1D
+  /// model's flux boundary; see docs/flow.md.
+  BoreholeDeformation borehole_deformation = BoreholeDeformation::biot;
+  /// Coupling of broken beams' triangles and segments: b or 1 (CrackCoupling). Default: b (Eq. 15).
+  CrackCoupling crack_coupling = CrackCoupling::biot;
   /// After a geometry or iota change with the same dt (every pass of the coupling loop), solve by
   /// conjugate gradients on the current matrix preconditioned by the last factorisation instead of
   /// refactorising (a refactorisation follows when max_refinements iterations do not reach the
@@ -132,17 +121,34 @@ struct FlowParameters {
   /// no refresh (the old factor ages: ~8 iterations), 7.8 / 6.5 / 7.8 s with 2 / 4 / 8 (same breaks in
   /// the same order; volume balance <= 5e-12). Allowed: >= 0.
   int refresh_after_refinements = 4;
-  /// Borehole deformation term (Eq. 16). Default: the paper's Eq. 16 (default_borehole_deformation of
-  /// the default storage). With borehole_storage = none and this = none the borehole node is the 1D
-  /// model's flux boundary; see docs/flow.md.
-  BoreholeDeformation borehole_deformation = BoreholeDeformation::biot;
-  /// Coupling of broken beams' triangles and segments: b or 1 (CrackCoupling). Default: b (Eq. 15).
-  CrackCoupling crack_coupling = CrackCoupling::biot;
   /// Point-source position (x, y) for a domain without borehole (Section 3.1: r = 0). Our choice to
   /// make it a field; the source goes into the triangle containing it. Allowed: finite, inside the
   /// lattice (checked by FlowNetwork).
   double source_x = 0.0;
   double source_y = 0.0;
+};
+
+/// Parameters of the flow network: the physics of Eqs. 14-16 and the options. Every default is set
+/// here; validate() checks each rule.
+struct FlowParameters : FlowOptions {
+  /// Q, dimensionless injection rate (Eq. 14, Q = mu q/(k E)), into the borehole node (annulus) or
+  /// the source triangle (disk, rectangle). Allowed: finite, >= 0.
+  double Q = 0.01;
+  /// E/M, storage coefficient of Eqs. 14-16 (the paper prints V/M; Eq. 14 and docs/errata.md E11
+  /// give E/M in dimensionless form). Default: Eq. 22 with Table 1 at b = 0.5. Allowed: > 0, finite.
+  double E_over_M = hm::analytic::E_over_M_table1(0.5, 0.25);
+  /// b, Biot coefficient multiplying the volume change V^{n+1} - V^n in Eqs. 15-16.
+  /// Allowed: 0 <= b <= 1.
+  double b = 0.5;
+  /// E/K_w, the borehole water's storage coefficient with borehole_storage = fluid (dimensionless:
+  /// fluid volume stored per unit pressure over E, per unit hole volume). Default Table 1's
+  /// E = 1e10 Pa over K_w = 2.2e9 Pa. Allowed: > 0, finite.
+  double E_over_Kw = hm::analytic::table1_E_over_Kw;
+  /// iota = k_f/k, conductance factor of Voronoi segments crossing broken beams (Section 2.2), with
+  /// fracture_flow.law = permeability. Allowed: > 0, finite.
+  double iota = 1.0;
+  /// Delta t, the default time step of step() (Eq. 15). Allowed: > 0, finite.
+  double time_step = 1e-5;
 
   /// Throws hm::InputError "field = value, allowed: rule" for the first violated rule.
   void validate() const;
@@ -153,8 +159,10 @@ struct FlowParameters {
 /// node does not converge (docs/coupling.md, section 3), so a case reader takes this as the default.
 BoreholeDeformation default_borehole_deformation(BoreholeStorage storage);
 
-/// The flow parameters of a shared dimensionless parameter set (Q, iota, E/M, b) with time step dt.
-FlowParameters flow_parameters_of(const hm::analytic::DimensionlessParameters& parameters, double dt);
+/// The flow parameters of a shared dimensionless parameter set (Q, iota, E/M, E/K_w, b) with time step
+/// dt and the given options.
+FlowParameters flow_parameters_of(const hm::analytic::DimensionlessParameters& parameters, double dt,
+                                  const FlowOptions& options = {});
 
 /// Volumes moved in one step, all >= 0 unless said otherwise (dimensionless areas, Eq. 12's
 /// "volume per unit length"). injected = storage + deformation + outflow up to round-off.
