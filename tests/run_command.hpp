@@ -39,15 +39,15 @@ inline std::string edited(std::string text, const std::vector<std::pair<std::str
 }
 
 /// Runs `HMLATTICE_EXE <args>` in `workdir` (args are passed to the shell as written), after the
-/// shell commands `prefix` (e.g. a ulimit). stdout and stderr are captured outside `workdir`, so that
-/// a test can compare the folder's content before and after.
+/// shell commands `prefix` (e.g. a ulimit), through `launcher` (e.g. "timeout -s KILL 60 "). stdout and
+/// stderr are captured outside `workdir`, so that a test can compare the folder's content before and after.
 inline CommandResult run_hmlattice(const std::string& args, const std::filesystem::path& workdir,
-                                   const std::string& prefix = "") {
+                                   const std::string& prefix = "", const std::string& launcher = "") {
   const std::string tag = "hmlattice-capture-" + std::to_string(::getpid()) + "-" +
                           std::to_string(std::hash<std::string>{}(workdir.string()));
   const auto out = std::filesystem::temp_directory_path() / (tag + ".stdout.txt"),
              err = std::filesystem::temp_directory_path() / (tag + ".stderr.txt");
-  const std::string cmd = prefix + "cd '" + workdir.string() + "' && '" + HMLATTICE_EXE + "' " + args + " > '" +
+  const std::string cmd = prefix + "cd '" + workdir.string() + "' && " + launcher + "'" + HMLATTICE_EXE + "' " + args + " > '" +
                           out.string() + "' 2> '" + err.string() + "'";
   const int status = std::system(cmd.c_str());
   CommandResult r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};

@@ -125,8 +125,12 @@ RunRecorder::RunRecorder(const std::filesystem::path& dir, const RunCase& c, con
   r.get("recorder.fracture_log_sizes", fracture_n);
   std::vector<double> vtk_t;
   std::string vtk_files;
+  std::vector<std::int64_t> vtk_sizes;
   r.get("recorder.vtk_times", vtk_t);
   r.get("recorder.vtk_files", vtk_files);  // one name per line
+  r.get("recorder.vtk_sizes", vtk_sizes);
+  if (vtk_sizes.size() != vtk_t.size())
+    throw InputError(r.source() + ": at 'recorder.vtk_sizes': one per snapshot time expected");
 
   const auto& log = model.break_log();
   if (fracture_t.size() != fracture_n.size())
@@ -147,13 +151,21 @@ RunRecorder::RunRecorder(const std::filesystem::path& dir, const RunCase& c, con
     from = to + 1;
   }
   // The snapshots written before the stop are part of the result as the CSV files are: a run
-  // continued without one would be complete but for it.
+  // continued without one, or with one cut short, would be complete but for it.
   if (output_.vtk)
-    for (const lt::PvdEntry& e : written)
-      if (!std::filesystem::is_regular_file(dir / "vtk" / e.file))
-        throw InputError("'" + (dir / "vtk" / e.file).string() +
-                         "' is missing; allowed: the run folder as the stopped run left it (rerun the case "
-                         "from its config.toml instead)");
+    for (std::size_t k = 0; k < written.size(); ++k) {
+      const std::filesystem::path file = dir / "vtk" / written[k].file;
+      std::error_code ec;
+      std::string problem;
+      if (!std::filesystem::is_regular_file(file, ec))
+        problem = "is missing";
+      else if (const auto size = static_cast<std::int64_t>(std::filesystem::file_size(file, ec)); size != vtk_sizes[k])
+        problem = "has " + std::to_string(size) + " bytes, not the " + std::to_string(vtk_sizes[k]) + " the stopped run wrote";
+      if (!problem.empty())
+        throw InputError("'" + file.string() + "' " + problem +
+                         "; allowed: the run folder as the stopped run left it (rerun the case from its config.toml "
+                         "instead)");
+    }
 
   series_file_ = core::open_for_appending(dir / "series.csv", static_cast<std::uintmax_t>(sizes[0]));
   radial_file_ = core::open_for_appending(dir / "radial.csv", static_cast<std::uintmax_t>(sizes[1]));
@@ -188,13 +200,16 @@ void RunRecorder::save_state(core::StateWriter& w) {
   w.put("recorder.fracture_log_sizes", fracture_n);
   std::vector<double> vtk_t;
   std::string vtk_files;
+  std::vector<std::int64_t> vtk_sizes;
   if (vtk_)
     for (const lt::PvdEntry& e : vtk_->entries()) {
       vtk_t.push_back(e.time);
       vtk_files += e.file + "\n";
+      vtk_sizes.push_back(static_cast<std::int64_t>(std::filesystem::file_size(dir_ / "vtk" / e.file)));
     }
   w.put("recorder.vtk_times", vtk_t);
   w.put("recorder.vtk_files", vtk_files);
+  w.put("recorder.vtk_sizes", vtk_sizes);
 }
 
 void RunRecorder::record(const lt::CoupledModel& model, const lt::CoupledStepSummary& step, bool is_output) {

@@ -135,6 +135,13 @@ TEST_CASE("A checkpoint is refused, the folder untouched, when its case was edit
   CHECK(r.exit_code == 2);
   CHECK(count_lines(r.err) == 1);
   CHECK_THAT(r.err, Catch::Contains("vtk/lattice_0000.vtu' is missing"));
+  // One cut short (a full disk, an editor): refused too, naming it and both sizes.
+  std::ofstream(folder / "vtk" / "lattice_0000.vtu", std::ios::binary) << snapshot.substr(0, snapshot.size() / 2);
+  r = run_hmlattice("run --resume part", dir.path);
+  CHECK(r.exit_code == 2);
+  CHECK(count_lines(r.err) == 1);
+  CHECK_THAT(r.err, Catch::Contains("vtk/lattice_0000.vtu' has " + std::to_string(snapshot.size() / 2) + " bytes, not the " +
+                                    std::to_string(snapshot.size())));
   std::ofstream(folder / "vtk" / "lattice_0000.vtu", std::ios::binary) << snapshot;
   // Nothing was changed by the refused attempts.
   CHECK(slurp(folder / "series.csv") == series);

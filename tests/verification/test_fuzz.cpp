@@ -147,3 +147,63 @@ TEST_CASE("Fuzzed sweep tables end as the expanded cases or as one line of bad i
     fs::remove_all(out);
   }
 }
+
+TEST_CASE("Fuzzed result folders: no hang, no crash, and a file the user put there survives every command",
+          "[verification][cli][fuzz]") {
+  TempDir dir("fuzz-folders");
+  std::mt19937 rng(20261206);
+  const auto pick = [&](std::size_t n) { return std::uniform_int_distribution<std::size_t>(0, n - 1)(rng); };
+  // A stopped run (one of its two steps, with VTK): every kind of file a result folder holds.
+  std::string with_vtk = lattice_case;
+  with_vtk.replace(with_vtk.find("vtk = false"), 11, "vtk = true");
+  dir.write("case.toml", with_vtk);
+  REQUIRE(hm::test::run_hmlattice("run case.toml --out pristine --stop-after-steps 1", dir.path).exit_code == 0);
+  std::vector<fs::path> toolkit_files;
+  for (const auto& e : fs::recursive_directory_iterator(dir.path / "pristine"))
+    if (e.is_regular_file()) toolkit_files.push_back(fs::relative(e.path(), dir.path / "pristine"));
+  REQUIRE(toolkit_files.size() >= 8);
+  const std::vector<std::string> user_files = {"my_notes.txt", "vtk/my_view.pvsm", "analysis/plot.py", ".my_hidden"};
+  // What a file the toolkit expects may have become: a pipe without a writer (reading it would block),
+  // a link to an endless device, a folder, nothing, half of itself, noise.
+  const std::vector<std::string> damage = {"mkfifo", "ln -s /dev/zero", "mkdir", "empty", "half", "noise"};
+  const std::vector<std::string> commands = {"run --resume part", "run case.toml --out part --overwrite",
+                                             "fractures part", "run case.toml --out part"};
+  for (int i = 0; i < 60; ++i) {
+    fs::remove_all(dir.path / "part");
+    fs::copy(dir.path / "pristine", dir.path / "part", fs::copy_options::recursive);
+    std::string what;
+    std::vector<std::pair<fs::path, std::string>> kept;  // the user's files and their content
+    for (std::size_t k = 0, m = 1 + pick(2); k < m; ++k) {
+      if (pick(2) == 0) {
+        const fs::path file = dir.path / "part" / user_files[pick(user_files.size())];
+        fs::create_directories(file.parent_path());
+        const std::string text = "the user's " + std::to_string(i);
+        std::ofstream(file) << text;
+        kept.emplace_back(file, text);
+        what += "user file " + fs::relative(file, dir.path).string() + "; ";
+      } else {
+        const fs::path name = toolkit_files[pick(toolkit_files.size())];
+        const fs::path file = dir.path / "part" / name;
+        const std::string make = damage[pick(damage.size())];
+        const std::string original = hm::test::slurp(dir.path / "pristine" / name);
+        fs::remove_all(file);
+        if (make == "empty" || make == "half" || make == "noise")
+          std::ofstream(file, std::ios::binary) << (make == "half" ? original.substr(0, original.size() / 2)
+                                                    : make == "noise" ? std::string("\001\377x") : std::string());
+        else
+          REQUIRE(std::system((make + " '" + file.string() + "'").c_str()) == 0);
+        what += make + " " + name.string() + "; ";
+      }
+    }
+    const std::string command = commands[pick(commands.size())];
+    // A hang is a failure: killed after 60 s of wall time (a FIFO blocks without using CPU), exit 137.
+    const auto r = hm::test::run_hmlattice(command, dir.path, "", "timeout -s KILL 60 ");
+    INFO("damage: " << what << "\ncommand: " << command << "\nexit " << r.exit_code << ", stderr: " << r.err);
+    CHECK((r.exit_code == 0 || ((r.exit_code == 1 || r.exit_code == 2) && count_lines(r.err) == 1)));
+    for (const auto& [file, text] : kept) {
+      CHECK(fs::is_regular_file(file));
+      CHECK(hm::test::slurp(file) == text);
+    }
+    CHECK_FALSE(has_leftovers(dir.path));
+  }
+}
