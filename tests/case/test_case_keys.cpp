@@ -2,10 +2,15 @@
 // test-only table stands in for a new case key; the real tables are checked through a run's config.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <filesystem>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "hm/case/case_file.hpp"
 #include "hm/case/case_keys.hpp"
+#include "hm/case/fdm1d_case.hpp"
 #include "hm/case/run_case.hpp"
 #include "hm/core/input_error.hpp"
 #include "run_command.hpp"
@@ -90,4 +95,69 @@ TEST_CASE("Every key of the 2D case tables is in the resolved config.toml and re
   CHECK_THAT(config, Catch::Contains("\nt_end = 2e-04\ndt_max = 2e-04\n"));
   dir.write("config.toml", config);
   CHECK(hm::cases::run_case_to_toml(hm::cases::read_run_case(dir.path / "config.toml"), "") == config);
+}
+
+namespace {
+
+// Every key of the reference's tables named in `tables` (its markdown: "### [table]", then a row per
+// key "| `name` | type | ..."), given a value of the wrong type on top of the case `base`: `read`
+// must refuse it in one line naming the table and the key. Returns how many keys were tried.
+template <class Read>
+int check_every_key_refused(const TempDir& dir, const std::string& base, const std::string& reference,
+                            const std::vector<std::string>& tables, Read read) {
+  dir.write("case.toml", base);
+  int n = 0;
+  std::string table;
+  std::istringstream lines(reference);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("### [", 0) == 0) table = line.substr(5, line.find(']') - 5);
+    if (line.rfind("| `", 0) != 0 || std::find(tables.begin(), tables.end(), table) == tables.end()) continue;
+    const std::string key = line.substr(3, line.find('`', 3) - 3);
+    const std::string type = line.substr(line.find('|', 3) + 2, line.find('|', line.find('|', 3) + 1) - line.find('|', 3) - 3);
+    // A value of the wrong type is bad for every key, whatever its rule.
+    const std::string bad = type == "string" ? "12345" : "\"not a value\"";
+    const std::string set = table + "." + key + "=" + bad;
+    INFO(set);
+    std::string message = "no error";
+    try {
+      read(dir.path / "case.toml", std::vector<std::string>{set});
+    } catch (const hm::InputError& e) {
+      message = e.what();
+    }
+    CHECK_THAT(message, Catch::Contains("[" + table + "] " + key + " = " + bad + ", allowed: "));
+    CHECK(message.find('\n') == std::string::npos);
+    ++n;
+  }
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("A bad value of every case key is refused in one message naming its table and key", "[case]") {
+  TempDir dir("case-keys-bad");
+  const std::string lattice = "model = \"lattice2d\"\n[lattice]\nn_particles = 1000\n[coupling]\nsplit = \"drained\"\n"
+                              "[numerics]\nt_end = 2e-4\n";
+  const auto read_2d = [](const std::filesystem::path& f, const std::vector<std::string>& o) { hm::cases::read_run_case(f, o); };
+  const std::string run_reference = hm::cases::physics_reference_markdown() + hm::cases::run_case_keys().reference_markdown();
+  std::vector<std::string> run_tables;
+  for (const auto& table : hm::cases::run_case_keys().tables()) run_tables.push_back(table.name);
+  const int n_2d = check_every_key_refused(dir, lattice + "[physics]\nQ = 0.01\nb = 0.5\nR_i = 0\n", run_reference,
+                                           run_tables, read_2d);
+  CHECK(n_2d == [] {
+    std::size_t n = 0;
+    for (const auto& table : hm::cases::run_case_keys().tables()) n += table.keys.size();
+    return static_cast<int>(n);
+  }());
+  CHECK(check_every_key_refused(dir, lattice + "[physics]\nQ = 0.01\nb = 0.5\nR_i = 0\n", run_reference, {"physics"},
+                                read_2d) >= 10);
+  CHECK(check_every_key_refused(dir, lattice + "[physics_si]\nq = 1e-6\nb = 0.5\nR_i = 0\n", run_reference,
+                                {"physics_si"}, read_2d) >= 15);
+  const std::string fdm1d_reference = hm::cases::physics_reference_markdown() + hm::cases::fdm1d_case_keys().reference_markdown();
+  std::vector<std::string> fdm1d_tables = {"physics"};
+  for (const auto& table : hm::cases::fdm1d_case_keys().tables()) fdm1d_tables.push_back(table.name);
+  CHECK(check_every_key_refused(dir, "model = \"fdm1d\"\n[physics]\nQ = 0.01\nb = 0.5\n[numerics]\nt_end = 0.01\n",
+                                fdm1d_reference, fdm1d_tables,
+                                [](const std::filesystem::path& f, const std::vector<std::string>& o) {
+                                  hm::cases::read_fdm1d_case(f, o);
+                                }) >= 20);
 }
