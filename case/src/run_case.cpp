@@ -81,8 +81,8 @@ void check_cubic_law(CaseTable& flow, const RunCase& c) {
               core::format_value(si) + ")");
 }
 
-CaseKeys<RunCase> make_run_case_keys() {
-  CaseKeys<RunCase> k;
+// [lattice]: the domain and the particles.
+void add_lattice_keys(CaseKeys<RunCase>& k) {
   k.table("lattice")
       .choice("domain", [](auto& c) -> auto& { return c.lattice.domain; }, {lt::DomainShape::disk, lt::DomainShape::annulus},
               "disk: point injection at r = 0; annulus: the borehole R_i <= r <= 1 (R_i from [physics]); not the "
@@ -109,6 +109,10 @@ CaseKeys<RunCase> make_run_case_keys() {
         c.lattice.validate();
       })
       .comment(calibration_comment);
+}
+
+// [mechanics]: the outer boundary, the solver and the in-situ state.
+void add_mechanics_keys(CaseKeys<RunCase>& k) {
   k.table("mechanics")
       .choice("outer", [](auto& c) -> auto& { return c.boundary.outer; },
               "the outer boundary r = 1: traction-free or held")
@@ -128,6 +132,10 @@ CaseKeys<RunCase> make_run_case_keys() {
                          "\", allowed: \"free\" with an in-situ stress or p0 (a held boundary takes no traction)");
         c.boundary_conditions();  // validates S_H, S_h, theta_H and p0 with the library's rules
       });
+}
+
+// [flow]: the borehole node and how cracks hold and conduct fluid.
+void add_flow_keys(CaseKeys<RunCase>& k) {
   k.table("flow")
       .choice("borehole_storage", [](auto& c) -> auto& { return c.flow.borehole_storage; },
               "the borehole node's storage: Eq. 16's E/M V_h, none, or the water-filled hole's E/K_w V_h "
@@ -188,6 +196,10 @@ CaseKeys<RunCase> make_run_case_keys() {
                "reuse the flow matrix's factor while the geometry changes little (iterative refinement)")
       .integer("refresh_after_refinements", [](auto& c) -> auto& { return c.flow.refresh_after_refinements; }, 0, 1000000,
                "0 ... 1000000", "refactorise the flow matrix after this many refinement sweeps (0: never)");
+}
+
+// [coupling]: the split, its iteration and the stabilisers.
+void add_coupling_keys(CaseKeys<RunCase>& k) {
   k.table("coupling", "coupling.")
       .choice("split", [](auto& c) -> auto& { return c.coupling.split; },
               "the operator split of Section 2.3")
@@ -255,6 +267,10 @@ CaseKeys<RunCase> make_run_case_keys() {
           coupling.fail("borehole_spring = \"undrained\", allowed: only with [flow] borehole_storage and "
                         "borehole_deformation not \"none\" (the hole's volume must set its pressure)");
       });
+}
+
+// [numerics]: the time stepping.
+void add_numerics_keys(CaseKeys<RunCase>& k) {
   k.table("numerics")
       .real("dt_initial", [](auto& c) -> auto& { return c.stepping.dt_initial; }, "> 0, finite, <= t_end", "first time step")
       // 1.2: the shipped cases' growth; dt_initial = 1e-6 with a constant step would take 27,200 steps
@@ -272,6 +288,10 @@ CaseKeys<RunCase> make_run_case_keys() {
             "> 0 (with fracture_check = \"at_convergence\"): a step whose first break (or tooth) has failure ratio "
             "above 1 + this is retried with half the step (the last of max_step_halvings tries is accepted); 0: off",
             {}, "`0`; `" + toml_real(kSawtoothOvershootTolerance) + "` with [fracture] law = \"sawtooth\"");
+}
+
+// [fracture]: the strengths, the law and pre-cut cracks.
+void add_fracture_keys(CaseKeys<RunCase>& k) {
   k.table("fracture")
       .boolean("enabled", [](auto& c) -> auto& { return c.fracture_enabled; }, "break beams (Eq. 11)")
       .boolean("stop_at_first_break", [](auto& c) -> auto& { return c.stop_at_first_break; },
@@ -363,6 +383,10 @@ CaseKeys<RunCase> make_run_case_keys() {
                         ", allowed: 0 with law = \"brittle\" (a fracture energy belongs to law = \"sawtooth\")");
         }
       });
+}
+
+// [output]: what a run writes and when.
+void add_output_keys(CaseKeys<RunCase>& k) {
   k.table("output")
       .reals("times", [](auto& c) -> auto& { return c.stepping.output_times; }, "increasing, in (0, t_end]",
              "times t* of the radial profiles and VTK snapshots besides t = 0; t_end is always added")
@@ -384,6 +408,17 @@ CaseKeys<RunCase> make_run_case_keys() {
         if (!lt::is_allowed_arm_gap(c.output.statistics.arm_gap))
           out.fail("arm_gap = " + core::format_value(c.output.statistics.arm_gap) + ", allowed: " + lt::kArmGapRule);
       });
+}
+
+CaseKeys<RunCase> make_run_case_keys() {
+  CaseKeys<RunCase> k;
+  add_lattice_keys(k);
+  add_mechanics_keys(k);
+  add_flow_keys(k);
+  add_coupling_keys(k);
+  add_numerics_keys(k);
+  add_fracture_keys(k);
+  add_output_keys(k);
   return k;
 }
 
