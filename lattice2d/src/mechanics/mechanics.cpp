@@ -436,31 +436,65 @@ BeamState BeamMechanics::break_beam(int beam) {
   return states_[static_cast<std::size_t>(beam)];
 }
 
-void BeamMechanics::check_detachment(int i, int j) {
-  // Breadth-first search over intact beams (and sprung broken ones); stops early when i still reaches j (the usual case:
-  // the broken beam's triangles keep the two ends connected), else returns the whole component.
-  std::vector<char> seen(static_cast<std::size_t>(lattice_.n_particles()), 0);
-  auto component = [&](int start, int target, std::vector<int>& out) {
-    out.assign(1, start);
-    seen[static_cast<std::size_t>(start)] = 1;
-    for (std::size_t k = 0; k < out.size(); ++k) {
-      const int p = out[k];
-      for (int a = adjacency_start_[static_cast<std::size_t>(p)]; a < adjacency_start_[static_cast<std::size_t>(p) + 1]; ++a) {
-        const int e = adjacency_beam_[static_cast<std::size_t>(a)];
-        // A broken beam still connects through its normal spring (the coupling's Eq. 20): the part
-        // is then held by the fluid, not loose.
-        const bool spring = springs_.size() > 0 && springs_[e] > 0.0;
-        if (states_[static_cast<std::size_t>(e)] != BeamState::intact && !spring) continue;
-        const auto& b = lattice_.beams[static_cast<std::size_t>(e)];
-        const int q = b[0] == p ? b[1] : b[0];
-        if (seen[static_cast<std::size_t>(q)]) continue;
-        if (q == target) return true;
-        seen[static_cast<std::size_t>(q)] = 1;
-        out.push_back(q);
-      }
+bool BeamMechanics::connected_part(int start, int target, std::vector<char>& seen, std::vector<int>& out) const {
+  // Breadth-first over intact beams (and sprung broken ones), stopping as soon as the target is reached.
+  out.assign(1, start);
+  seen[static_cast<std::size_t>(start)] = 1;
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    const int p = out[k];
+    for (int a = adjacency_start_[static_cast<std::size_t>(p)]; a < adjacency_start_[static_cast<std::size_t>(p) + 1]; ++a) {
+      const int e = adjacency_beam_[static_cast<std::size_t>(a)];
+      // A broken beam still connects through its normal spring (the coupling's Eq. 20): the part
+      // is then held by the fluid, not loose.
+      const bool spring = springs_.size() > 0 && springs_[e] > 0.0;
+      if (states_[static_cast<std::size_t>(e)] != BeamState::intact && !spring) continue;
+      const auto& b = lattice_.beams[static_cast<std::size_t>(e)];
+      const int q = b[0] == p ? b[1] : b[0];
+      if (seen[static_cast<std::size_t>(q)]) continue;
+      if (q == target) return true;
+      seen[static_cast<std::size_t>(q)] = 1;
+      out.push_back(q);
     }
-    return false;
-  };
+  }
+  return false;
+}
+
+bool BeamMechanics::is_anchored(const std::vector<int>& part) const {
+  Eigen::Vector2d c = Eigen::Vector2d::Zero();
+  for (int p : part) c += lattice_.points.col(p);
+  c /= static_cast<double>(part.size());
+  Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
+  for (int p : part)
+    for (int k = 0; k < 3; ++k) {
+      if (!held_[static_cast<std::size_t>(dof_index(p, k))]) continue;
+      const Eigen::Vector2d r = lattice_.points.col(p) - c;
+      const Eigen::Vector3d row = k == 0 ? Eigen::Vector3d(1, 0, -r.y()) : k == 1 ? Eigen::Vector3d(0, 1, r.x()) : Eigen::Vector3d(0, 0, 1);
+      M += row * row.transpose();
+    }
+  const Eigen::Vector3d ev = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(M).eigenvalues();
+  return ev[0] > 1e-12 * ev[2];
+}
+
+void BeamMechanics::freeze_part(const std::vector<int>& part) {
+  // At the rigid motion nearest its last displacement: it then carries no force.
+  const auto fit = rigid_fit(lattice_, raw_, part);
+  for (int p : part) {
+    const Eigen::Vector3d u = rigid_motion(lattice_, fit, p);
+    for (int k = 0; k < 3; ++k) {
+      held_[static_cast<std::size_t>(dof_index(p, k))] = true;
+      held_value_[dof_index(p, k)] = u[k];
+      raw_[dof_index(p, k)] = u[k];
+    }
+    detached_[static_cast<std::size_t>(p)] = true;
+    ++n_detached_;
+    for (int a = adjacency_start_[static_cast<std::size_t>(p)]; a < adjacency_start_[static_cast<std::size_t>(p) + 1]; ++a) {
+      const int e = adjacency_beam_[static_cast<std::size_t>(a)];
+      if (states_[static_cast<std::size_t>(e)] == BeamState::contact) states_[static_cast<std::size_t>(e)] = BeamState::open;
+    }
+  }
+}
+
+void BeamMechanics::check_detachment(int i, int j) {
   bool changed = false;
   // The gauge pin of a pure traction problem stops the body's rigid motions only while an intact beam
   // (which carries a moment) ties it to the body. Left with springs or contacts alone, the pin is a
@@ -483,46 +517,18 @@ void BeamMechanics::check_detachment(int i, int j) {
       changed = true;
     }
   }
+  // Usually the broken beam's triangles keep its two ends connected, and the search from i stops at j;
+  // else each side is a whole part, frozen if nothing holds it.
+  std::vector<char> seen(static_cast<std::size_t>(lattice_.n_particles()), 0);
   std::vector<int> part_i, part_j;
-  if (component(i, j, part_i)) {
+  if (connected_part(i, j, seen, part_i)) {
     if (changed) setup_system();
     return;
   }
-  component(j, -1, part_j);
-  // A part is anchored if its held degrees of freedom stop its three rigid motions (rank test).
-  auto anchored = [&](const std::vector<int>& part) {
-    Eigen::Vector2d c = Eigen::Vector2d::Zero();
-    for (int p : part) c += lattice_.points.col(p);
-    c /= static_cast<double>(part.size());
-    Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
-    for (int p : part)
-      for (int k = 0; k < 3; ++k) {
-        if (!held_[static_cast<std::size_t>(dof_index(p, k))]) continue;
-        const Eigen::Vector2d r = lattice_.points.col(p) - c;
-        const Eigen::Vector3d row = k == 0 ? Eigen::Vector3d(1, 0, -r.y()) : k == 1 ? Eigen::Vector3d(0, 1, r.x()) : Eigen::Vector3d(0, 0, 1);
-        M += row * row.transpose();
-      }
-    const Eigen::Vector3d ev = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(M).eigenvalues();
-    return ev[0] > 1e-12 * ev[2];
-  };
+  connected_part(j, -1, seen, part_j);
   for (const auto* part : {&part_i, &part_j}) {
-    if (anchored(*part)) continue;
-    // Freeze the part at the rigid motion nearest its last displacement: it then carries no force.
-    const auto fit = rigid_fit(lattice_, raw_, *part);
-    for (int p : *part) {
-      const Eigen::Vector3d u = rigid_motion(lattice_, fit, p);
-      for (int k = 0; k < 3; ++k) {
-        held_[static_cast<std::size_t>(dof_index(p, k))] = true;
-        held_value_[dof_index(p, k)] = u[k];
-        raw_[dof_index(p, k)] = u[k];
-      }
-      detached_[static_cast<std::size_t>(p)] = true;
-      ++n_detached_;
-      for (int a = adjacency_start_[static_cast<std::size_t>(p)]; a < adjacency_start_[static_cast<std::size_t>(p) + 1]; ++a) {
-        const int e = adjacency_beam_[static_cast<std::size_t>(a)];
-        if (states_[static_cast<std::size_t>(e)] == BeamState::contact) states_[static_cast<std::size_t>(e)] = BeamState::open;
-      }
-    }
+    if (is_anchored(*part)) continue;
+    freeze_part(*part);
     changed = true;
   }
   if (changed) setup_system();
@@ -660,46 +666,10 @@ MechanicsSummary BeamMechanics::solve(bool equilibrium_check) {
       break;
     }
     raw_ = full_vector(x);
-    // Active set of Eqs. 8-10: overlapping broken beams push (contact), separating ones do nothing.
-    // The same for softened intact beams: a shortened one is closed (its normal spring unsoftened,
-    // the difference (1 - s) k_n added as a rank-1 update), a lengthened one open again.
     const double tol = options_.contact_tolerance * raw_.cwiseAbs().maxCoeff();
-    struct Switch {
-      int beam;
-      bool softened;  // a softened beam closing or opening, else a broken beam changing state
-      double violation;
-    };
-    std::vector<Switch> switches;
-    for (int e : broken_) {
-      const auto [i, j] = lattice_.beams[static_cast<std::size_t>(e)];
-      if (detached_[static_cast<std::size_t>(i)] || detached_[static_cast<std::size_t>(j)]) continue;
-      const double stretch = elongation(e);
-      if (contact_state(states_[static_cast<std::size_t>(e)], stretch, tol) != states_[static_cast<std::size_t>(e)])
-        switches.push_back({e, false, std::abs(stretch)});
-    }
-    for (int e : softened_) {
-      const auto k = static_cast<std::size_t>(e);
-      const auto [i, j] = lattice_.beams[k];
-      if (detached_[static_cast<std::size_t>(i)] || detached_[static_cast<std::size_t>(j)]) continue;
-      const double stretch = elongation(e);
-      if ((!closed_[k] && stretch < -tol) || (closed_[k] && stretch > tol)) switches.push_back({e, true, std::abs(stretch)});
-    }
-    // All at once settles in a few iterations, but can cycle (MechanicsOptions::contact_switches_at_once);
-    // from then on only the most violated beam switches, one per solve.
-    if (it >= options_.contact_switches_at_once && switches.size() > 1)
-      switches = {*std::max_element(switches.begin(), switches.end(),
-                                    [](const Switch& first, const Switch& second) { return first.violation < second.violation; })};
+    const std::vector<ContactSwitch> switches = contact_switches(tol, it);
+    apply(switches, tol);
     const int changes = static_cast<int>(switches.size());
-    for (const Switch& w : switches) {
-      const auto k = static_cast<std::size_t>(w.beam);
-      if (!w.softened) {
-        change_state(w.beam, contact_state(states_[k], elongation(w.beam), tol));
-        continue;
-      }
-      const bool close = !closed_[k];
-      modify_beam(w.beam, {0}, 1.0 - softening_[k], close ? +1 : -1);
-      closed_[k] = close;
-    }
     summary.n_contact_changes += changes;
     if (changes == 0) {
       summary.contact_converged = true;
@@ -711,26 +681,70 @@ MechanicsSummary BeamMechanics::solve(bool equilibrium_check) {
                       " iterations (max_contact_iterations); displacement of the last iterate";
   for (int e : broken_) (states_[static_cast<std::size_t>(e)] == BeamState::contact ? summary.n_contacts : summary.n_open)++;
 
-  // Gauge of a pure-traction problem: subtract the least-squares rigid motion.
-  displacement_ = raw_;
-  if (is_pinned()) {
-    std::vector<int> attached;
-    for (int p = 0; p < lattice_.n_particles(); ++p)
-      if (!detached_[static_cast<std::size_t>(p)]) attached.push_back(p);
-    const auto fit = rigid_fit(lattice_, raw_, attached);
-    for (int p = 0; p < lattice_.n_particles(); ++p) displacement_.segment<3>(dof_index(p, 0)) -= rigid_motion(lattice_, fit, p);
-  }
-  if (summary.info == Eigen::Success && !equilibrium_check) summary.equilibrium_residual = std::numeric_limits<double>::quiet_NaN();
-  if (summary.info == Eigen::Success && equilibrium_check) {
-    // Independent of the solver's stored matrix: re-evaluates every beam from the states.
-    const Eigen::VectorXd f = loads(), r = reactions();
-    double r_max = 0.0;
-    for (int dof : free_dofs_) r_max = std::max(r_max, std::abs(r[dof]));
-    const double scale = std::max(f.cwiseAbs().maxCoeff(), (r + f).cwiseAbs().maxCoeff());
-    summary.equilibrium_residual = scale > 0.0 ? r_max / scale : r_max;
-  }
+  remove_rigid_motion();
+  if (summary.info == Eigen::Success)
+    summary.equilibrium_residual = equilibrium_check ? equilibrium_residual() : std::numeric_limits<double>::quiet_NaN();
   summary.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return summary;
+}
+
+std::vector<BeamMechanics::ContactSwitch> BeamMechanics::contact_switches(double tol, int iteration) const {
+  // Active set of Eqs. 8-10: overlapping broken beams push (contact), separating ones do nothing.
+  // The same for softened intact beams: a shortened one is closed (its normal spring unsoftened,
+  // the difference (1 - s) k_n added as a rank-1 update), a lengthened one open again.
+  std::vector<ContactSwitch> switches;
+  for (int e : broken_) {
+    const auto [i, j] = lattice_.beams[static_cast<std::size_t>(e)];
+    if (detached_[static_cast<std::size_t>(i)] || detached_[static_cast<std::size_t>(j)]) continue;
+    const double stretch = elongation(e);
+    if (contact_state(states_[static_cast<std::size_t>(e)], stretch, tol) != states_[static_cast<std::size_t>(e)])
+      switches.push_back({e, false, std::abs(stretch)});
+  }
+  for (int e : softened_) {
+    const auto k = static_cast<std::size_t>(e);
+    const auto [i, j] = lattice_.beams[k];
+    if (detached_[static_cast<std::size_t>(i)] || detached_[static_cast<std::size_t>(j)]) continue;
+    const double stretch = elongation(e);
+    if ((!closed_[k] && stretch < -tol) || (closed_[k] && stretch > tol)) switches.push_back({e, true, std::abs(stretch)});
+  }
+  // All at once settles in a few iterations, but can cycle (MechanicsOptions::contact_switches_at_once);
+  // from then on only the most violated beam switches, one per solve.
+  if (iteration >= options_.contact_switches_at_once && switches.size() > 1)
+    switches = {*std::max_element(switches.begin(), switches.end(), [](const ContactSwitch& first, const ContactSwitch& second) {
+      return first.violation < second.violation;
+    })};
+  return switches;
+}
+
+void BeamMechanics::apply(const std::vector<ContactSwitch>& switches, double tol) {
+  for (const ContactSwitch& w : switches) {
+    const auto k = static_cast<std::size_t>(w.beam);
+    if (!w.softened) {
+      change_state(w.beam, contact_state(states_[k], elongation(w.beam), tol));
+      continue;
+    }
+    const bool close = !closed_[k];
+    modify_beam(w.beam, {0}, 1.0 - softening_[k], close ? +1 : -1);
+    closed_[k] = close;
+  }
+}
+
+void BeamMechanics::remove_rigid_motion() {
+  displacement_ = raw_;
+  if (!is_pinned()) return;
+  std::vector<int> attached;
+  for (int p = 0; p < lattice_.n_particles(); ++p)
+    if (!detached_[static_cast<std::size_t>(p)]) attached.push_back(p);
+  const auto fit = rigid_fit(lattice_, raw_, attached);
+  for (int p = 0; p < lattice_.n_particles(); ++p) displacement_.segment<3>(dof_index(p, 0)) -= rigid_motion(lattice_, fit, p);
+}
+
+double BeamMechanics::equilibrium_residual() const {
+  const Eigen::VectorXd f = loads(), r = reactions();
+  double r_max = 0.0;
+  for (int dof : free_dofs_) r_max = std::max(r_max, std::abs(r[dof]));
+  const double scale = std::max(f.cwiseAbs().maxCoeff(), (r + f).cwiseAbs().maxCoeff());
+  return scale > 0.0 ? r_max / scale : r_max;
 }
 
 std::vector<BeamForce> BeamMechanics::beam_forces() const {

@@ -246,8 +246,24 @@ class BeamMechanics {
   // sigma scale V_c V_c^T for columns c of the unsoftened intact element factor (rank <= 3).
   void modify_beam(int beam, const std::vector<int>& columns, double scale, int sigma);
   void check_detachment(int i, int j);
+  // From `start`, the particles joined through intact (or sprung) beams, marked in `seen`: true at once
+  // if `target` is among them (`out` then partial).
+  bool connected_part(int start, int target, std::vector<char>& seen, std::vector<int>& out) const;
+  bool is_anchored(const std::vector<int>& part) const;  // its held dofs stop its three rigid motions
+  void freeze_part(const std::vector<int>& part);  // held at its nearest rigid motion, its contacts open
   bool has_intact_beam(int particle) const;
   void move_pin();  // pure traction: re-pin on the intact body (check_detachment)
+  // One change of the contact active set: a broken beam between open and contact, or a softened one
+  // between open and closed; violation is |elongation|.
+  struct ContactSwitch {
+    int beam;
+    bool softened;
+    double violation;
+  };
+  std::vector<ContactSwitch> contact_switches(double tol, int iteration) const;
+  void apply(const std::vector<ContactSwitch>& switches, double tol);
+  void remove_rigid_motion();  // displacement_ = raw_ less its least-squares rigid motion (the gauge)
+  double equilibrium_residual() const;  // from every beam's state, independent of the factor
   Eigen::VectorXd full_vector(const Eigen::VectorXd& x_free) const;
 
   Lattice lattice_;
