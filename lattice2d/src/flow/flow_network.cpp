@@ -520,6 +520,33 @@ Eigen::VectorXd FlowNetwork::deformation(const Eigen::VectorXd& volume_change) c
   return deformation;
 }
 
+namespace {
+
+// Conjugate gradients on A from x, preconditioned by `solve` (the last factor's), until the residual's
+// norm is at most target or after max_iterations; counts the iterations, returns the residual's norm.
+template <class Solve>
+double preconditioned_cg(const Eigen::SparseMatrix<double>& A, const Solve& solve, const Eigen::VectorXd& rhs, double target,
+                         int max_iterations, Eigen::VectorXd& x, int& iterations) {
+  Eigen::VectorXd residual = rhs - A * x;
+  Eigen::VectorXd z = solve(residual);
+  Eigen::VectorXd direction = z;
+  double rz = residual.dot(z);
+  while (residual.norm() > target && iterations < max_iterations) {
+    const Eigen::VectorXd Ad = A * direction;
+    const double alpha = rz / direction.dot(Ad);
+    x += alpha * direction;
+    residual -= alpha * Ad;
+    ++iterations;
+    z = solve(residual);
+    const double rz_next = residual.dot(z);
+    direction = z + (rz_next / rz) * direction;
+    rz = rz_next;
+  }
+  return residual.norm();
+}
+
+}  // namespace
+
 FlowStepSummary FlowNetwork::solve(double dt, const Eigen::VectorXd& volume_change, FlowStabiliser* stabiliser) {
   if (!(dt > 0.0) || !std::isfinite(dt)) throw InputError("dt = " + format_value(dt) + ", allowed: > 0, finite");
   assert((volume_change.size() == 0 || volume_change.size() == n_unknowns()) && "one volume change per unknown");
@@ -556,24 +583,11 @@ FlowStepSummary FlowNetwork::solve(double dt, const Eigen::VectorXd& volume_chan
     // tolerance 1e-10 (plain iterative refinement: ~12 and more fallbacks), which costs more than
     // refactorising; hence off by default.
     const double target = parameters_.refinement_tolerance * rhs.norm();
-    const auto& A = solver_->matrix;
-    Eigen::VectorXd residual = rhs - A * trial_pressure_;
-    Eigen::VectorXd z = solver_->solve(residual);
-    Eigen::VectorXd direction = z;
-    double rz = residual.dot(z);
-    while (residual.norm() > target && summary.refinements < parameters_.max_refinements) {
-      const Eigen::VectorXd Ad = A * direction;
-      const double alpha = rz / direction.dot(Ad);
-      trial_pressure_ += alpha * direction;
-      residual -= alpha * Ad;
-      ++summary.refinements;
-      z = solver_->solve(residual);
-      const double rz_next = residual.dot(z);
-      direction = z + (rz_next / rz) * direction;
-      rz = rz_next;
-    }
+    const double residual = preconditioned_cg(
+        solver_->matrix, [&](const Eigen::VectorXd& r) { return solver_->solve(r); }, rhs, target,
+        parameters_.max_refinements, trial_pressure_, summary.refinements);
     refresh_factor_ = summary.refinements > parameters_.refresh_after_refinements;
-    if (!(residual.norm() <= target)) {  // too far from the factor: a fresh one
+    if (!(residual <= target)) {  // too far from the factor: a fresh one
       summary.message = factorise(dt);
       if (!summary.message.empty()) return summary;
       summary.factorised = true;

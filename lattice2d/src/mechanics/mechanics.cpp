@@ -797,6 +797,40 @@ void BeamMechanics::save_state(core::StateWriter& w) const {
   solver_->save_state(w);
 }
 
+namespace {
+
+// The numbering of the free dofs is a function of the held ones (setup_system).
+template <class Check>
+void check_free_numbering(const std::vector<bool>& held, const std::vector<int>& free_index, const std::vector<int>& free_dofs,
+                          const Check& check) {
+  check(free_index.size() == held.size(), "mechanics.free_index");
+  for (std::size_t dof = 0, free = 0; dof < held.size(); ++dof) {
+    check(free_index[dof] == (held[dof] ? -1 : static_cast<int>(free)), "mechanics.free_index");
+    if (!held[dof]) {
+      check(free < free_dofs.size() && free_dofs[free] == static_cast<int>(dof), "mechanics.free_dofs");
+      ++free;
+    }
+  }
+  check(free_dofs.size() == static_cast<std::size_t>(std::count(held.begin(), held.end(), false)), "mechanics.free_dofs");
+}
+
+// The broken beams, each once, are exactly those not intact.
+template <class Check>
+void check_broken_list(const std::vector<BeamState>& states, const std::vector<int>& broken, const Check& check) {
+  std::vector<bool> listed(states.size(), false);
+  for (const int e : broken) {
+    check(e >= 0 && static_cast<std::size_t>(e) < states.size() && !listed[static_cast<std::size_t>(e)] &&
+              states[static_cast<std::size_t>(e)] != BeamState::intact,
+          "mechanics.broken");
+    listed[static_cast<std::size_t>(e)] = true;
+  }
+  check(broken.size() == static_cast<std::size_t>(std::count_if(states.begin(), states.end(),
+                                                                [](BeamState b) { return b != BeamState::intact; })),
+        "mechanics.broken");
+}
+
+}  // namespace
+
 void BeamMechanics::restore_state(core::StateReader& r) {
   const auto n_dofs = static_cast<std::size_t>(3 * lattice_.n_particles());
   const auto n_beams = states_.size();
@@ -826,17 +860,7 @@ void BeamMechanics::restore_state(core::StateReader& r) {
   check(pinned_particle_ >= -1 && pinned_particle_ < lattice_.n_particles(), "mechanics.pinned_particle");
   r.get("mechanics.free_index", free_index_);
   r.get("mechanics.free_dofs", free_dofs_);
-  // The numbering of the free dofs is a function of the held ones (setup_system).
-  check(free_index_.size() == n_dofs, "mechanics.free_index");
-  for (std::size_t dof = 0, free = 0; dof < n_dofs; ++dof) {
-    check(free_index_[dof] == (held_[dof] ? -1 : static_cast<int>(free)), "mechanics.free_index");
-    if (!held_[dof]) {
-      check(free < free_dofs_.size() && free_dofs_[free] == static_cast<int>(dof), "mechanics.free_dofs");
-      ++free;
-    }
-  }
-  check(free_dofs_.size() == static_cast<std::size_t>(std::count(held_.begin(), held_.end(), false)),
-        "mechanics.free_dofs");
+  check_free_numbering(held_, free_index_, free_dofs_, check);
   r.get("mechanics.pressure_loads", pressure_loads_);
   check(sized(pressure_loads_, n_dofs), "mechanics.pressure_loads");
   r.get("mechanics.extra_loads", extra_loads_);
@@ -848,18 +872,7 @@ void BeamMechanics::restore_state(core::StateReader& r) {
   r.get("mechanics.displacement", displacement_);
   check(sized(displacement_, n_dofs), "mechanics.displacement");
   r.get("mechanics.broken", broken_);
-  // The broken beams, each once, are exactly those not intact.
-  std::vector<bool> listed(n_beams, false);
-  for (const int e : broken_) {
-    check(e >= 0 && static_cast<std::size_t>(e) < n_beams && !listed[static_cast<std::size_t>(e)] &&
-              states_[static_cast<std::size_t>(e)] != BeamState::intact,
-          "mechanics.broken");
-    listed[static_cast<std::size_t>(e)] = true;
-  }
-  check(broken_.size() == static_cast<std::size_t>(std::count_if(states_.begin(), states_.end(), [](BeamState b) {
-          return b != BeamState::intact;
-        })),
-        "mechanics.broken");
+  check_broken_list(states_, broken_, check);
   r.get("mechanics.springs", springs_);
   check(springs_.size() == 0 || sized(springs_, n_beams), "mechanics.springs");
   r.get("mechanics.softening", softening_);
