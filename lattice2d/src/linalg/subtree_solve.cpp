@@ -68,6 +68,71 @@ std::vector<SubtreeSolve::Block> blocks_of(const FactorView& f, const std::vecto
   return blocks;
 }
 
+// Work of each column (its nonzeros) and of the subtree below it, and each column's children
+// (children[child_start[j] .. child_start[j + 1]) of column j).
+struct TreeWork {
+  std::vector<std::int64_t> work;
+  std::vector<int> child_start, children;
+  std::int64_t total = 0;
+};
+
+TreeWork tree_work(const FactorView& f, const std::vector<int>& parent) {
+  const auto n = static_cast<std::size_t>(f.n);
+  TreeWork t;
+  t.work.assign(n, 0);
+  t.child_start.assign(n + 1, 0);
+  for (std::size_t j = 0; j < n; ++j) {
+    t.work[j] += f.nz[j];
+    t.total += f.nz[j];
+    const int pj = parent[j];
+    assert((pj < 0 || static_cast<std::size_t>(pj) > j) && "SubtreeSolve: a parent follows its children");
+    if (pj >= 0) {
+      t.work[static_cast<std::size_t>(pj)] += t.work[j];
+      ++t.child_start[static_cast<std::size_t>(pj) + 1];
+    }
+  }
+  for (std::size_t j = 0; j < n; ++j) t.child_start[j + 1] += t.child_start[j];
+  t.children.resize(static_cast<std::size_t>(t.child_start[n]));
+  std::vector<int> next(t.child_start.begin(), t.child_start.end() - 1);
+  for (std::size_t j = 0; j < n; ++j)
+    if (parent[j] >= 0) t.children[static_cast<std::size_t>(next[static_cast<std::size_t>(parent[j])]++)] = static_cast<int>(j);
+  return t;
+}
+
+// The columns of the best cut's top. Cut: move the heaviest subtree's root to the top, again and
+// again, until the subtrees split evenly into the groups or the top holds a tenth of the work (a tree
+// that does not split, e.g. a chain); keep the cut with the least estimated time, top + largest group.
+std::vector<int> best_top(const FactorView& f, const std::vector<int>& parent, const TreeWork& t) {
+  std::priority_queue<std::pair<std::int64_t, int>> frontier;
+  for (std::size_t j = 0; j < parent.size(); ++j)
+    if (parent[j] < 0) frontier.emplace(t.work[j], static_cast<int>(j));
+  std::int64_t top_work = 0, best_time = t.total + 1;
+  std::vector<int> roots, expanded;
+  std::size_t best_expansions = 0;
+  while (!frontier.empty()) {
+    if (static_cast<int>(frontier.size()) >= SubtreeSolve::kGroups) {
+      auto copy = frontier;
+      roots.clear();
+      for (; !copy.empty(); copy.pop()) roots.push_back(copy.top().second);
+      const std::int64_t max_load = assign_groups(roots, t.work, SubtreeSolve::kGroups).second;
+      if (top_work + max_load < best_time) {
+        best_time = top_work + max_load;
+        best_expansions = expanded.size();
+      }
+      if (static_cast<double>(max_load) <= 1.02 * static_cast<double>(t.total - top_work) / SubtreeSolve::kGroups) break;
+    }
+    if (top_work > t.total / 10) break;
+    const int j = frontier.top().second;
+    frontier.pop();
+    expanded.push_back(j);
+    top_work += f.nz[j];
+    for (int c = t.child_start[static_cast<std::size_t>(j)]; c < t.child_start[static_cast<std::size_t>(j) + 1]; ++c)
+      frontier.emplace(t.work[static_cast<std::size_t>(t.children[static_cast<std::size_t>(c)])], t.children[static_cast<std::size_t>(c)]);
+  }
+  expanded.resize(best_expansions);
+  return expanded;
+}
+
 }  // namespace
 
 void SubtreeSolve::update(const cholmod_factor& L) {
@@ -82,68 +147,19 @@ void SubtreeSolve::update(const cholmod_factor& L) {
   nz_.assign(f.nz, f.nz + n);
   for (int j = 0; j < f.n; ++j) parent_[static_cast<std::size_t>(j)] = f.parent(j);
 
-  // Work of each column (its nonzeros) and of the subtree below it; children lists.
-  std::vector<std::int64_t> work(n, 0);
-  std::vector<int> n_children(n + 1, 0);
-  std::int64_t total = 0;
-  for (std::size_t j = 0; j < n; ++j) {
-    work[j] += f.nz[j];
-    total += f.nz[j];
-    const int pj = parent_[j];
-    assert((pj < 0 || static_cast<std::size_t>(pj) > j) && "SubtreeSolve: a parent follows its children");
-    if (pj >= 0) {
-      work[static_cast<std::size_t>(pj)] += work[j];
-      ++n_children[static_cast<std::size_t>(pj) + 1];
-    }
-  }
-  for (std::size_t j = 0; j < n; ++j) n_children[j + 1] += n_children[j];
-  std::vector<int> children(static_cast<std::size_t>(n_children[n]));
-  {
-    std::vector<int> next(n_children.begin(), n_children.end() - 1);
-    for (std::size_t j = 0; j < n; ++j)
-      if (parent_[j] >= 0) children[static_cast<std::size_t>(next[static_cast<std::size_t>(parent_[j])]++)] = static_cast<int>(j);
-  }
-
-  // Cut: move the heaviest subtree's root to the top, again and again, until the subtrees split evenly
-  // into the groups or the top holds a tenth of the work (a tree that does not split, e.g. a chain);
-  // keep the cut with the least estimated time, top + largest group.
-  std::vector<char> is_top(n, 0);
-  std::priority_queue<std::pair<std::int64_t, int>> frontier;
-  for (std::size_t j = 0; j < n; ++j)
-    if (parent_[j] < 0) frontier.emplace(work[j], static_cast<int>(j));
-  std::int64_t top_work = 0, best_time = total + 1;
-  std::vector<int> roots, expanded;
-  std::size_t best_expansions = 0;
-  while (!frontier.empty()) {
-    if (static_cast<int>(frontier.size()) >= kGroups) {
-      auto copy = frontier;
-      roots.clear();
-      for (; !copy.empty(); copy.pop()) roots.push_back(copy.top().second);
-      const std::int64_t max_load = assign_groups(roots, work, kGroups).second;
-      if (top_work + max_load < best_time) {
-        best_time = top_work + max_load;
-        best_expansions = expanded.size();
-      }
-      if (static_cast<double>(max_load) <= 1.02 * static_cast<double>(total - top_work) / kGroups) break;
-    }
-    if (top_work > total / 10) break;
-    const int j = frontier.top().second;
-    frontier.pop();
-    expanded.push_back(j);
-    top_work += f.nz[j];
-    for (int c = n_children[static_cast<std::size_t>(j)]; c < n_children[static_cast<std::size_t>(j) + 1]; ++c)
-      frontier.emplace(work[static_cast<std::size_t>(children[static_cast<std::size_t>(c)])], children[static_cast<std::size_t>(c)]);
-  }
+  const TreeWork t = tree_work(f, parent_);
+  const std::int64_t total = t.total;
   // The best cut: its top, and as subtrees every other column whose parent is in the top (or none).
-  top_work = 0;
-  for (std::size_t k = 0; k < best_expansions; ++k) {
-    is_top[static_cast<std::size_t>(expanded[k])] = 1;
-    top_work += f.nz[expanded[k]];
+  std::vector<char> is_top(n, 0);
+  std::int64_t top_work = 0;
+  for (const int j : best_top(f, parent_, t)) {
+    is_top[static_cast<std::size_t>(j)] = 1;
+    top_work += f.nz[j];
   }
-  roots.clear();
+  std::vector<int> roots;
   for (std::size_t j = 0; j < n; ++j)
     if (!is_top[j] && (parent_[j] < 0 || is_top[static_cast<std::size_t>(parent_[j])])) roots.push_back(static_cast<int>(j));
-  const auto [group_of_root, max_load] = assign_groups(roots, work, kGroups);
+  const auto [group_of_root, max_load] = assign_groups(roots, t.work, kGroups);
 
   // Label every column with its group and its subtree's root (parents before children).
   std::vector<int> group(n, -1);
