@@ -168,6 +168,39 @@ void CalibrationSpec::validate() const {
   test.validate();
 }
 
+namespace {
+
+// The spec's beams at aspect ratio `aspect`, with k_n = 1 (E is then rescaled exactly).
+BeamParameters trial_beams(const CalibrationSpec& spec, double aspect) {
+  BeamParameters beams;
+  beams.normal_stiffness = 1.0;
+  beams.aspect = aspect;
+  beams.beam_poisson = spec.beam_poisson;
+  beams.stiffness_scaling = spec.stiffness_scaling;
+  beams.facet_floor = spec.facet_floor;
+  return beams;
+}
+
+// What was calibrated, how well, and what the aspect range could reach.
+std::string calibration_message(const Calibration& out, const CalibrationSpec& spec) {
+  std::ostringstream msg;
+  msg << "k_n = " << format_value(out.beams.normal_stiffness) << ", a = " << format_value(out.beams.aspect)
+      << ", nu0 = " << format_value(out.beams.beam_poisson) << ": E = " << format_value(out.youngs_modulus_mean)
+      << " +- " << format_value(out.youngs_modulus_sd) << ", nu = " << format_value(out.poisson_ratio_mean) << " +- "
+      << format_value(out.poisson_ratio_sd) << " over " << spec.seeds.size() << " seed(s); reachable nu at nu0 = "
+      << format_value(spec.beam_poisson) << ": [" << format_value(out.poisson_ratio_at_aspect_max) << ", "
+      << format_value(out.poisson_ratio_at_aspect_min) << "] for a in [" << format_value(spec.aspect_min) << ", "
+      << format_value(spec.aspect_max) << "]";
+  for (const auto& p : out.per_seed)
+    if (!p.is_converged) msg << "; a measurement did not converge: " << p.message;
+  if (!out.target_poisson_reached)
+    msg << "; target nu = " << format_value(spec.target_poisson_ratio) << " NOT reached, missed by "
+        << format_value(out.poisson_ratio_mean - spec.target_poisson_ratio);
+  return msg.str();
+}
+
+}  // namespace
+
 Calibration calibrate_beams(const CalibrationSpec& spec) {
   const auto start = std::chrono::steady_clock::now();
   spec.validate();
@@ -191,15 +224,7 @@ Calibration calibrate_beams(const CalibrationSpec& spec) {
     m.poisson_ratio /= static_cast<double>(lattices.size());
     return m;
   };
-  auto beams_with = [&](double aspect) {
-    BeamParameters beams;
-    beams.normal_stiffness = 1.0;
-    beams.aspect = aspect;
-    beams.beam_poisson = spec.beam_poisson;
-    beams.stiffness_scaling = spec.stiffness_scaling;
-    beams.facet_floor = spec.facet_floor;
-    return beams;
-  };
+  const auto beams_with = [&](double aspect) { return trial_beams(spec, aspect); };
 
   // nu(a) falls with a (k_omega/k_n grows from 0 towards 1/(4(1 + nu0))): bracket, then
   // Illinois regula falsi in log a, which converges superlinearly on this smooth monotone curve.
@@ -253,21 +278,7 @@ Calibration calibrate_beams(const CalibrationSpec& spec) {
   out.youngs_modulus_sd = sample_sd(e, out.youngs_modulus_mean);
   out.poisson_ratio_sd = sample_sd(nu, out.poisson_ratio_mean);
   out.seconds = seconds_since(start);
-
-  std::ostringstream msg;
-  msg << "k_n = " << format_value(out.beams.normal_stiffness) << ", a = " << format_value(out.beams.aspect)
-      << ", nu0 = " << format_value(out.beams.beam_poisson) << ": E = " << format_value(out.youngs_modulus_mean)
-      << " +- " << format_value(out.youngs_modulus_sd) << ", nu = " << format_value(out.poisson_ratio_mean) << " +- "
-      << format_value(out.poisson_ratio_sd) << " over " << spec.seeds.size() << " seed(s); reachable nu at nu0 = "
-      << format_value(spec.beam_poisson) << ": [" << format_value(out.poisson_ratio_at_aspect_max) << ", "
-      << format_value(out.poisson_ratio_at_aspect_min) << "] for a in [" << format_value(spec.aspect_min) << ", "
-      << format_value(spec.aspect_max) << "]";
-  for (const auto& p : out.per_seed)
-    if (!p.is_converged) msg << "; a measurement did not converge: " << p.message;
-  if (!out.target_poisson_reached)
-    msg << "; target nu = " << format_value(target) << " NOT reached, missed by "
-        << format_value(out.poisson_ratio_mean - target);
-  out.message = msg.str();
+  out.message = calibration_message(out, spec);
   return out;
 }
 
