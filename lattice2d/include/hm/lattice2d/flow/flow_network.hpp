@@ -106,9 +106,9 @@ struct FlowOptions {
   /// After a geometry or iota change with the same dt (every pass of the coupling loop), solve by
   /// conjugate gradients on the current matrix preconditioned by the last factorisation instead of
   /// refactorising (a refactorisation follows when max_refinements iterations do not reach the
-  /// tolerance). Default false: measured on the Fig. 12 run at N = 1e4 (bench_coupled_fracture), flow
-  /// 15.3 s refactorising every pass against 20.5 s reusing (~8 iterations per solve once cracks open
-  /// and change their triangles' areas); it pays only while the geometry hardly changes.
+  /// tolerance). Default false, a factorisation per solve; the shipped cases reuse, which pays with
+  /// refresh_after_refinements (below): an old factor alone needs ~8 iterations per solve once cracks
+  /// open and change their triangles' areas.
   bool reuse_factorisation = false;
   /// Stop iterating at ||rhs - A p|| <= refinement_tolerance ||rhs||. Our choice 1e-10 (the volume
   /// balance then closes to ~1e-11). Allowed: 0 < refinement_tolerance < 1e-6.
