@@ -290,6 +290,42 @@ void add_numerics_keys(CaseKeys<RunCase>& k) {
             {}, "`0`; `" + toml_real(kSawtoothOvershootTolerance) + "` with [fracture] law = \"sawtooth\"");
 }
 
+// [fracture]'s rules across its keys and with [physics]' strengths.
+void check_fracture_keys(CaseTable& fracture, CaseTable&, RunCase& c) {
+  if (c.stop_at_first_break && !c.fracture_enabled)
+    fracture.fail("stop_at_first_break = true, allowed: true only with enabled = true (no beam breaks with "
+                  "fracture disabled)");
+  if (!c.notches.empty() && !c.fracture_enabled)
+    fracture.fail("notch given, allowed: only with enabled = true (a notch is a set of broken beams)");
+  // The mean strengths and mu_i are the material's ([physics]).
+  auto& st = c.strength;
+  st.tensile_strength = c.physics.parameters.tensile_strength;
+  st.compressive_strength = c.physics.parameters.compressive_strength;
+  st.friction = c.physics.parameters.friction;
+  st.validate();
+  core::require_positive(c.break_loop.crack_tip.material_length, "crack_tip_length");
+  const double g_f = c.sawtooth.fracture_energy;
+  if (c.fracture_law == lt::FractureLaw::sawtooth) {
+    if (!c.fracture_enabled)
+      fracture.fail("law = \"sawtooth\", allowed: only with enabled = true");
+    // G_f/(E R) <= 1: G_f/E, a length, at most the domain's radius (rocks: G_f/E ~ 1e-8 m);
+    // above it is a G_f in J/m^2 typed into a dimensionless table.
+    if (!(g_f > 0.0 && g_f <= 1.0))
+      fracture.fail("fracture_energy = " + core::format_value(g_f) +
+                    ", allowed: 0 < fracture_energy <= 1 with law = \"sawtooth\" (required there; G_f/(E R), "
+                    "so a value in J/m^2 is refused)");
+    const double a = c.sawtooth.teeth.reduction;
+    if (!(std::isfinite(a) && a > 1.0))
+      fracture.fail("sawtooth_reduction = " + core::format_value(a) + ", allowed: > 1, finite");
+    const double kappa = c.sawtooth.strength_factor;
+    if (!(std::isfinite(kappa) && kappa > 0.0))
+      fracture.fail("sawtooth_strength_factor = " + core::format_value(kappa) + ", allowed: > 0, finite");
+  } else if (g_f != 0.0) {
+    fracture.fail("fracture_energy = " + core::format_value(g_f) +
+                  ", allowed: 0 with law = \"brittle\" (a fracture energy belongs to law = \"sawtooth\")");
+  }
+}
+
 // [fracture]: the strengths, the law and pre-cut cracks.
 void add_fracture_keys(CaseKeys<RunCase>& k) {
   k.table("fracture")
@@ -349,40 +385,7 @@ void add_fracture_keys(CaseKeys<RunCase>& k) {
               }
               return out + "]";
             }})
-      .check([](CaseTable& fracture, CaseTable&, RunCase& c) {
-        if (c.stop_at_first_break && !c.fracture_enabled)
-          fracture.fail("stop_at_first_break = true, allowed: true only with enabled = true (no beam breaks with "
-                        "fracture disabled)");
-        if (!c.notches.empty() && !c.fracture_enabled)
-          fracture.fail("notch given, allowed: only with enabled = true (a notch is a set of broken beams)");
-        // The mean strengths and mu_i are the material's ([physics]).
-        auto& st = c.strength;
-        st.tensile_strength = c.physics.parameters.tensile_strength;
-        st.compressive_strength = c.physics.parameters.compressive_strength;
-        st.friction = c.physics.parameters.friction;
-        st.validate();
-        core::require_positive(c.break_loop.crack_tip.material_length, "crack_tip_length");
-        const double g_f = c.sawtooth.fracture_energy;
-        if (c.fracture_law == lt::FractureLaw::sawtooth) {
-          if (!c.fracture_enabled)
-            fracture.fail("law = \"sawtooth\", allowed: only with enabled = true");
-          // G_f/(E R) <= 1: G_f/E, a length, at most the domain's radius (rocks: G_f/E ~ 1e-8 m);
-          // above it is a G_f in J/m^2 typed into a dimensionless table.
-          if (!(g_f > 0.0 && g_f <= 1.0))
-            fracture.fail("fracture_energy = " + core::format_value(g_f) +
-                          ", allowed: 0 < fracture_energy <= 1 with law = \"sawtooth\" (required there; G_f/(E R), "
-                          "so a value in J/m^2 is refused)");
-          const double a = c.sawtooth.teeth.reduction;
-          if (!(std::isfinite(a) && a > 1.0))
-            fracture.fail("sawtooth_reduction = " + core::format_value(a) + ", allowed: > 1, finite");
-          const double kappa = c.sawtooth.strength_factor;
-          if (!(std::isfinite(kappa) && kappa > 0.0))
-            fracture.fail("sawtooth_strength_factor = " + core::format_value(kappa) + ", allowed: > 0, finite");
-        } else if (g_f != 0.0) {
-          fracture.fail("fracture_energy = " + core::format_value(g_f) +
-                        ", allowed: 0 with law = \"brittle\" (a fracture energy belongs to law = \"sawtooth\")");
-        }
-      });
+      .check(check_fracture_keys);
 }
 
 // [output]: what a run writes and when.
