@@ -5,10 +5,8 @@
 // Runs the two-way coupled 2D lattice model of Sections 2.1-2.3 (beam mechanics + dual-graph flow,
 // drained or undrained operator split iterated to convergence in every time step, Fig. 5) on a case
 // file (model = "lattice2d", format in hm/case/run_case.hpp) and writes, into DIR (default
-// out/<case name>):
-//   series.csv   per step: p_h, injected, stored, coupling, outflow volumes, balance error, iterations
-//   radial.csv   radially averaged u_r and p at the output times (Figs. 7, 13, 15)
-//   vtk/         lattice.pvd + lattice_NNNN.vtu snapshots for ParaView (pressure per triangle)
+// out/<case name>) the files hm/case/run_output.hpp lists (series, radial, VTK; with fracture the break
+// log and the fracture tables), and:
 //   config.toml  the resolved case + provenance; rerunnable as a case
 //   checkpoint.bin  while the run is not complete: the state --resume continues from (checkpoint.hpp)
 // With [fracture] stop_at_first_break = true the run ends, complete, with the step that breaks the
