@@ -112,8 +112,13 @@ int check_every_key_refused(const TempDir& dir, const std::string& base, const s
   for (std::string line; std::getline(lines, line);) {
     if (line.rfind("### [", 0) == 0) table = line.substr(5, line.find(']') - 5);
     if (line.rfind("| `", 0) != 0 || std::find(tables.begin(), tables.end(), table) == tables.end()) continue;
-    const std::string key = line.substr(3, line.find('`', 3) - 3);
-    const std::string type = line.substr(line.find('|', 3) + 2, line.find('|', line.find('|', 3) + 1) - line.find('|', 3) - 3);
+    // "| `key` | type | ...": the cells between the bars.
+    std::vector<std::string> cells;
+    std::istringstream row(line);
+    for (std::string cell; std::getline(row, cell, '|');) cells.push_back(cell);
+    REQUIRE(cells.size() >= 3);
+    const std::string key = cells[1].substr(2, cells[1].size() - 4);  // " `key` "
+    const std::string type = cells[2].substr(1, cells[2].size() - 2);  // " type "
     // A value of the wrong type is bad for every key, whatever its rule.
     const std::string bad = type == "string" ? "12345" : "\"not a value\"";
     const std::string set = table + "." + key + "=" + bad;

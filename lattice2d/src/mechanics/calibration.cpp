@@ -224,13 +224,12 @@ Calibration calibrate_beams(const CalibrationSpec& spec) {
     m.poisson_ratio /= static_cast<double>(lattices.size());
     return m;
   };
-  const auto beams_with = [&](double aspect) { return trial_beams(spec, aspect); };
 
   // nu(a) falls with a (k_omega/k_n grows from 0 towards 1/(4(1 + nu0))): bracket, then
   // Illinois regula falsi in log a, which converges superlinearly on this smooth monotone curve.
   const double target = spec.target_poisson_ratio;
   double log_lo = std::log(spec.aspect_min), log_hi = std::log(spec.aspect_max);
-  Mean lo = measure(beams_with(spec.aspect_min)), hi = measure(beams_with(spec.aspect_max));
+  Mean lo = measure(trial_beams(spec, spec.aspect_min)), hi = measure(trial_beams(spec, spec.aspect_max));
   out.poisson_ratio_at_aspect_min = lo.poisson_ratio;
   out.poisson_ratio_at_aspect_max = hi.poisson_ratio;
   const bool lo_closer = std::abs(lo.poisson_ratio - target) <= std::abs(hi.poisson_ratio - target);
@@ -242,7 +241,7 @@ Calibration calibrate_beams(const CalibrationSpec& spec) {
     for (int it = 0; it < spec.max_iterations && std::abs(best.poisson_ratio - target) > spec.poisson_tolerance;
          ++it) {
       const double log_mid = (log_lo * f_hi - log_hi * f_lo) / (f_hi - f_lo);
-      Mean mid = measure(beams_with(std::exp(log_mid)));
+      Mean mid = measure(trial_beams(spec, std::exp(log_mid)));
       const double f_mid = mid.poisson_ratio - target;
       if (std::abs(f_mid) < std::abs(best.poisson_ratio - target)) {
         best = mid;
@@ -264,7 +263,7 @@ Calibration calibrate_beams(const CalibrationSpec& spec) {
   out.target_poisson_reached = std::abs(best.poisson_ratio - target) <= spec.poisson_tolerance;
 
   // E is linear in k_n at fixed (a, nu0): one rescaling is exact. Re-measure for the record.
-  out.beams = beams_with(std::exp(best_log));
+  out.beams = trial_beams(spec, std::exp(best_log));
   out.beams.normal_stiffness = spec.target_youngs_modulus / best.youngs_modulus;
   const Mean final_mean = measure(out.beams);
   out.per_seed = final_mean.per_seed;
