@@ -35,6 +35,7 @@
 #include "hm/case/progress.hpp"
 #include "hm/case/provenance.hpp"
 #include "hm/case/run_case.hpp"
+#include "hm/case/run_files.hpp"
 #include "hm/case/run_output.hpp"
 
 namespace hm::app {
@@ -68,7 +69,7 @@ void run_case(const RunArgs& a, int& exit_code, const std::string& command_line)
       resuming ? std::make_unique<core::ResultFolder>(core::ResultFolder::Resume{}, a.resume, "--resume", command_line)
                : std::make_unique<core::ResultFolder>(output_folder(a.out, a.case_file), "--out", a.overwrite,
                                                       command_line);
-  const cases::RunCase c = resuming ? cases::read_run_case(out->path() / "config.toml")
+  const cases::RunCase c = resuming ? cases::read_run_case(cases::run_file_path(out->path(), cases::RunFileId::config))
                                     : cases::read_run_case(a.case_file, a.set);
   const std::string case_text = cases::run_case_to_toml(c, "");
   const auto& p = c.physics.parameters;
@@ -95,7 +96,7 @@ void run_case(const RunArgs& a, int& exit_code, const std::string& command_line)
   } else {
     recorder = std::make_unique<cases::RunRecorder>(out->path(), c);
     // The resolved configuration first: a run killed at any point leaves it beside its steps.
-    core::write_file_atomically(out->path() / "config.toml", [&](std::ostream& f) {
+    core::write_file_atomically(cases::run_file_path(out->path(), cases::RunFileId::config), [&](std::ostream& f) {
       f << cases::run_case_to_toml(c, cases::to_toml(cases::make_provenance(command_line)));
     });
   }
@@ -226,11 +227,7 @@ void run_case(const RunArgs& a, int& exit_code, const std::string& command_line)
               << ", p_h = " << core::format_value(recorder->breakdown().p_first) << " (step " << step << ")\n";
   else if (c.stop_at_first_break)
     std::cout << "No beam broke by t_end = " << core::format_value(c.stepping.t_end) << "\n";
-  std::cout << "Results: " << out->target().string() << (!c.fracture_enabled ? "/{series,radial}.csv, "
-                                                 : c.fracture_law == lattice2d::FractureLaw::sawtooth
-                                                     ? "/{series,radial,breaks,teeth,breakdown,fractures,fracture_summary,fracture_pressure}.csv, "
-                                                     : "/{series,radial,breaks,breakdown,fractures,fracture_summary,fracture_pressure}.csv, ") << (c.output.vtk ? "vtk/lattice.pvd, " : "")
-            << "config.toml\n";
+  std::cout << "Results: " << cases::results_line(out->target(), c) << "\n";
 }
 
 }  // namespace
@@ -251,6 +248,7 @@ void add_run_command(CLI::App& app, int& exit_code, const std::string& command_l
   cmd->add_option("--stop-after-steps", a->stop_after_steps,
                   "stop after this many steps, as an interrupt would (checkpoint, incomplete folder, exit 0)")
       ->check(integer_between(1, 100000000));
+  cmd->footer(cases::run_files_help());
   cmd->callback([a, &exit_code, command_line, file, resume] {
     if (file->count() == 0 && resume->count() == 0)
       throw InputError("run: a case file or --resume DIR is required");

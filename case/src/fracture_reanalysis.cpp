@@ -17,6 +17,7 @@
 #include "hm/lattice2d/geometry/lattice.hpp"
 #include "hm/lattice2d/io/vtk_writer.hpp"
 #include "hm/case/provenance.hpp"
+#include "hm/case/run_files.hpp"
 #include "hm/case/run_case.hpp"
 #include "hm/lattice2d/io/break_log.hpp"
 #include "hm/lattice2d/io/fracture_tables.hpp"
@@ -67,9 +68,13 @@ std::string provenance_part(const std::string& config) {
 
 FractureReanalysis recompute_fracture_statistics(const std::filesystem::path& run_dir, const StatisticsChange& change,
                                                  const std::string& command_line) {
-  for (const char* name : {"config.toml", "breaks.csv", "fracture_summary.csv"})
-    if (!std::filesystem::is_regular_file(run_dir / name))
-      throw InputError("run folder = " + run_dir.string() + " has no " + name +
+  const std::filesystem::path config_file = run_file_path(run_dir, RunFileId::config),
+                              breaks_file = run_file_path(run_dir, RunFileId::breaks),
+                              fractures_file = run_file_path(run_dir, RunFileId::fractures),
+                              summary_file = run_file_path(run_dir, RunFileId::fracture_summary);
+  for (const std::filesystem::path& file : {config_file, breaks_file, summary_file})
+    if (!std::filesystem::is_regular_file(file))
+      throw InputError("run folder = " + run_dir.string() + " has no " + file.filename().string() +
                        ", allowed: the output folder of `hmlattice run` with [fracture] enabled");
   // A stopped run is continued with --resume, which checks its config.toml against the checkpoint:
   // rewriting it here would make the run impossible to continue.
@@ -77,11 +82,11 @@ FractureReanalysis recompute_fracture_statistics(const std::filesystem::path& ru
     throw InputError("run folder = " + run_dir.string() +
                      " holds a run that has not finished (see its status.toml), allowed: a finished run; continue it "
                      "with hmlattice run --resume " + run_dir.string() + " first");
-  RunCase c = read_run_case(run_dir / "config.toml");
+  RunCase c = read_run_case(config_file);
   if (!c.fracture_enabled)
     throw InputError("run folder = " + run_dir.string() + ": [fracture] enabled = false in its config.toml");
-  const std::vector<lt::BreakEvent> log = lt::read_break_log(run_dir / "breaks.csv");
-  const std::vector<double> times = snapshot_times(run_dir / "fracture_summary.csv");
+  const std::vector<lt::BreakEvent> log = lt::read_break_log(breaks_file);
+  const std::vector<double> times = snapshot_times(summary_file);
 
   const lt::Lattice lattice = lt::generate_lattice(c.lattice);
   lt::FractureStatisticsOptions& options = c.output.statistics;
@@ -95,7 +100,7 @@ FractureReanalysis recompute_fracture_statistics(const std::filesystem::path& ru
     const bool known = ev.beam >= 0 && ev.beam < lattice.n_beams();
     const std::array<int, 2> ends = known ? lattice.beams[static_cast<std::size_t>(ev.beam)] : std::array<int, 2>{-1, -1};
     if (ends[0] != ev.particle_i || ends[1] != ev.particle_j)
-      throw std::runtime_error((run_dir / "breaks.csv").string() + ": beam " + std::to_string(ev.beam) + " joins particles " +
+      throw std::runtime_error(breaks_file.string() + ": beam " + std::to_string(ev.beam) + " joins particles " +
                                std::to_string(ev.particle_i) + "-" + std::to_string(ev.particle_j) +
                                " in the log but not in the lattice of config.toml; was the run made by another version?");
   }
@@ -108,14 +113,14 @@ FractureReanalysis recompute_fracture_statistics(const std::filesystem::path& ru
     snapshots.push_back({t, lt::compute_fracture_statistics(lattice, broken, log, options)});
   }
 
-  const std::string provenance = provenance_part(text_of(run_dir / "config.toml"));
+  const std::string provenance = provenance_part(text_of(config_file));
   const std::string config =
       run_case_to_toml(c, "# fracture statistics recomputed with fracture_link = \"" + hm::core::name_of(options.link) +
                               "\", arm_gap = " + toml_real(options.arm_gap) + " by: " + core::toml_string(command_line) + " (" + make_provenance(command_line).utc_time + ")\n" +
                               provenance);
-  lt::write_fracture_table(run_dir / "fractures.csv", snapshots);
-  lt::write_fracture_summary(run_dir / "fracture_summary.csv", snapshots);
-  core::write_file_atomically(run_dir / "config.toml", [&](std::ostream& out) { out << config; });
+  lt::write_fracture_table(fractures_file, snapshots);
+  lt::write_fracture_summary(summary_file, snapshots);
+  core::write_file_atomically(config_file, [&](std::ostream& out) { out << config; });
   return {static_cast<int>(snapshots.size()), static_cast<int>(log.size())};
 }
 

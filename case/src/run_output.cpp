@@ -70,6 +70,17 @@ const std::vector<std::string> fracture_pressure_columns = {"t", "mean_all", "me
                                                             "negative_area_fraction", "p_min", "p_max",
                                                             "borehole_backflow", "outer_inflow", "mouth_inflow"};
 
+// The streamed CSV files in the table's order: the order of their lengths in a checkpoint.
+std::vector<RunFileId> streamed_files() {
+  std::vector<RunFileId> out;
+  for (const RunFile& f : run_files)
+    if (f.writing == RunFileWriting::streamed) out.push_back(f.id);
+  return out;
+}
+
+// The folder of the VTK snapshots: the .pvd's.
+std::filesystem::path vtk_folder(const std::filesystem::path& dir) { return run_file_path(dir, RunFileId::vtk).parent_path(); }
+
 // The fracture statistics when the log held its first n events: broken beams never heal and only the
 // break loop breaks them (logging each), so those events' beams are the broken ones at that time.
 lt::FractureSnapshot fracture_snapshot(const lt::Lattice& lattice, const std::vector<lt::BreakEvent>& log,
@@ -86,20 +97,23 @@ RunRecorder::RunRecorder(const std::filesystem::path& dir, const RunCase& c)
     : output_(c.output),
       r_min_(c.lattice.domain == lt::DomainShape::annulus ? c.lattice.inner_radius : 0.0),
       dir_(dir),
+      files_(files_written(c)),
       fracture_(c.fracture_enabled),
       statistics_options_{c.output.statistics},
-      sawtooth_(c.fracture_enabled && c.fracture_law == lt::FractureLaw::sawtooth),
-      series_file_(core::open_for_writing(dir / "series.csv")),
-      radial_file_(core::open_for_writing(dir / "radial.csv")) {
-  series_ = std::make_unique<CsvWriter>(series_file_, series_columns);
-  radial_ = std::make_unique<CsvWriter>(radial_file_, radial_columns);
-  if (output_.vtk) vtk_ = std::make_unique<lt::VtkSeries>(dir / "vtk", "lattice");
-  if (fracture_) {
-    breaks_file_ = core::open_for_writing(dir / "breaks.csv");
-    lt::write_break_log_header(breaks_file_, "time");
-    pressure_file_ = core::open_for_writing(dir / "fracture_pressure.csv");
-    pressure_ = std::make_unique<CsvWriter>(pressure_file_, fracture_pressure_columns, core::NonFinite::write);
-  }
+      sawtooth_(c.fracture_enabled && c.fracture_law == lt::FractureLaw::sawtooth) {
+  for (const RunFile& f : files_)
+    if (f.writing == RunFileWriting::streamed) streams_[f.id] = core::open_for_writing(run_file_path(dir, f.id));
+  open_writers(core::CsvHeader::write);
+  if (fracture_) lt::write_break_log_header(streams_[RunFileId::breaks], "time");
+  if (output_.vtk) vtk_ = std::make_unique<lt::VtkSeries>(vtk_folder(dir), "lattice");
+}
+
+void RunRecorder::open_writers(core::CsvHeader header) {
+  series_ = std::make_unique<CsvWriter>(streams_[RunFileId::series], series_columns, core::NonFinite::write, header);
+  radial_ = std::make_unique<CsvWriter>(streams_[RunFileId::radial], radial_columns, core::NonFinite::write, header);
+  if (fracture_)
+    pressure_ = std::make_unique<CsvWriter>(streams_[RunFileId::fracture_pressure], fracture_pressure_columns,
+                                            core::NonFinite::write, header);
 }
 
 RunRecorder::RunRecorder(const std::filesystem::path& dir, const RunCase& c, const lt::CoupledModel& model,
@@ -107,13 +121,16 @@ RunRecorder::RunRecorder(const std::filesystem::path& dir, const RunCase& c, con
     : output_(c.output),
       r_min_(c.lattice.domain == lt::DomainShape::annulus ? c.lattice.inner_radius : 0.0),
       dir_(dir),
+      files_(files_written(c)),
       fracture_(c.fracture_enabled),
       statistics_options_{c.output.statistics},
       sawtooth_(c.fracture_enabled && c.fracture_law == lt::FractureLaw::sawtooth),
       teeth_(model.tooth_log()) {
   std::vector<std::int64_t> sizes;
   r.get("recorder.file_sizes", sizes);
-  if (sizes.size() != 4) throw InputError(r.source() + ": at 'recorder.file_sizes': 4 values expected");
+  const std::vector<RunFileId> streamed = streamed_files();
+  if (sizes.size() != streamed.size())
+    throw InputError(r.source() + ": at 'recorder.file_sizes': " + std::to_string(streamed.size()) + " values expected");
   std::vector<double> b;
   r.get("recorder.breakdown", b);
   if (b.size() != 9) throw InputError(r.source() + ": at 'recorder.breakdown': 9 values expected");
@@ -154,7 +171,7 @@ RunRecorder::RunRecorder(const std::filesystem::path& dir, const RunCase& c, con
   // continued without one, or with one cut short, would be complete but for it.
   if (output_.vtk)
     for (std::size_t k = 0; k < written.size(); ++k) {
-      const std::filesystem::path file = dir / "vtk" / written[k].file;
+      const std::filesystem::path file = vtk_folder(dir) / written[k].file;
       std::error_code ec;
       std::string problem;
       if (!std::filesystem::is_regular_file(file, ec))
@@ -167,17 +184,12 @@ RunRecorder::RunRecorder(const std::filesystem::path& dir, const RunCase& c, con
                          "instead)");
     }
 
-  series_file_ = core::open_for_appending(dir / "series.csv", static_cast<std::uintmax_t>(sizes[0]));
-  radial_file_ = core::open_for_appending(dir / "radial.csv", static_cast<std::uintmax_t>(sizes[1]));
-  series_ = std::make_unique<CsvWriter>(series_file_, series_columns, core::NonFinite::write, core::CsvHeader::already_written);
-  radial_ = std::make_unique<CsvWriter>(radial_file_, radial_columns, core::NonFinite::write, core::CsvHeader::already_written);
-  if (output_.vtk) vtk_ = std::make_unique<lt::VtkSeries>(dir / "vtk", "lattice", lt::VtkFormat::binary, std::move(written));
-  if (fracture_) {
-    breaks_file_ = core::open_for_appending(dir / "breaks.csv", static_cast<std::uintmax_t>(sizes[2]));
-    pressure_file_ = core::open_for_appending(dir / "fracture_pressure.csv", static_cast<std::uintmax_t>(sizes[3]));
-    pressure_ = std::make_unique<CsvWriter>(pressure_file_, fracture_pressure_columns, core::NonFinite::write,
-                                            core::CsvHeader::already_written);
-  }
+  for (std::size_t k = 0; k < streamed.size(); ++k)
+    if (writes(c, run_file(streamed[k])))
+      streams_[streamed[k]] = core::open_for_appending(run_file_path(dir, streamed[k]), static_cast<std::uintmax_t>(sizes[k]));
+  open_writers(core::CsvHeader::already_written);
+  if (output_.vtk)
+    vtk_ = std::make_unique<lt::VtkSeries>(vtk_folder(dir), "lattice", lt::VtkFormat::binary, std::move(written));
 }
 
 void RunRecorder::save_state(core::StateWriter& w) {
@@ -185,8 +197,9 @@ void RunRecorder::save_state(core::StateWriter& w) {
     f.flush();
     return f.is_open() ? static_cast<std::int64_t>(f.tellp()) : std::int64_t{0};
   };
-  w.put("recorder.file_sizes", std::vector<std::int64_t>{size_of(series_file_), size_of(radial_file_),
-                                                         size_of(breaks_file_), size_of(pressure_file_)});
+  std::vector<std::int64_t> sizes;
+  for (RunFileId id : streamed_files()) sizes.push_back(streams_.count(id) ? size_of(streams_[id]) : 0);
+  w.put("recorder.file_sizes", sizes);
   const Breakdown& b = breakdown_;
   w.put("recorder.breakdown", std::vector<double>{b.t_first, b.p_before, b.p_first, b.x_first, b.y_first, b.t_peak,
                                                   b.p_peak, static_cast<double>(b.n_broken), last_p_h_});
@@ -205,7 +218,7 @@ void RunRecorder::save_state(core::StateWriter& w) {
     for (const lt::PvdEntry& e : vtk_->entries()) {
       vtk_t.push_back(e.time);
       vtk_files += e.file + "\n";
-      vtk_sizes.push_back(static_cast<std::int64_t>(std::filesystem::file_size(dir_ / "vtk" / e.file)));
+      vtk_sizes.push_back(static_cast<std::int64_t>(std::filesystem::file_size(vtk_folder(dir_) / e.file)));
     }
   w.put("recorder.vtk_times", vtk_t);
   w.put("recorder.vtk_files", vtk_files);
@@ -235,8 +248,9 @@ void RunRecorder::record(const lt::CoupledModel& model, const lt::CoupledStepSum
       b.y_first = failed->position.y();
     }
     const std::vector<lt::BreakEvent> new_breaks(log.begin() + static_cast<std::ptrdiff_t>(breaks_.size()), log.end());
-    lt::write_break_log_rows(breaks_file_, new_breaks);
-    breaks_file_.flush();
+    std::ofstream& breaks_file = streams_[RunFileId::breaks];
+    lt::write_break_log_rows(breaks_file, new_breaks);
+    breaks_file.flush();
     breaks_.insert(breaks_.end(), new_breaks.begin(), new_breaks.end());
     b.n_broken = model.n_broken();
   }
@@ -244,13 +258,13 @@ void RunRecorder::record(const lt::CoupledModel& model, const lt::CoupledStepSum
     const auto& log = model.tooth_log();
     teeth_.insert(teeth_.end(), log.begin() + static_cast<std::ptrdiff_t>(teeth_.size()), log.end());
   }
-  series_file_.flush();
+  streams_[RunFileId::series].flush();
   last_p_h_ = p_h;
   if (!is_output) return;
   const RadialFields f = radial_fields(model, lt::uniform_shell_edges(r_min_, output_.radial_max, output_.radial_bins));
   for (std::size_t k = 0; k < f.r_mid.size(); ++k)
     radial_->row({model.time(), f.r_mid[k], f.r_mean[k], static_cast<double>(f.n_triangles[k]), f.u_r[k], f.p[k]});
-  radial_file_.flush();
+  streams_[RunFileId::radial].flush();
   if (fracture_) {
     fractures_.push_back(
         fracture_snapshot(model.lattice(), model.break_log(), model.break_log().size(), model.time(), statistics_options_));
@@ -259,7 +273,7 @@ void RunRecorder::record(const lt::CoupledModel& model, const lt::CoupledStepSum
     pressure_->row({model.time(), fp.mean_all, fp.mean_away, fp.min_away, static_cast<double>(fp.n_all),
                     static_cast<double>(fp.n_away), fp.negative_area_fraction, fp.p_min, fp.p_max,
                     fp.borehole_backflow, fp.outer_inflow, fp.mouth_inflow});
-    pressure_file_.flush();
+    streams_[RunFileId::fracture_pressure].flush();
   }
   if (vtk_) {
     lt::LatticeSnapshot snapshot;
@@ -293,21 +307,29 @@ void RunRecorder::record(const lt::CoupledModel& model, const lt::CoupledStepSum
 namespace hm::cases {
 
 void RunRecorder::finish() {
-  core::close_checked(series_file_, dir_ / "series.csv");
-  core::close_checked(radial_file_, dir_ / "radial.csv");
-  if (!fracture_) return;
-  core::close_checked(breaks_file_, dir_ / "breaks.csv");
-  core::close_checked(pressure_file_, dir_ / "fracture_pressure.csv");
-  if (sawtooth_) lt::write_tooth_log(dir_ / "teeth.csv", teeth_, "time");
-  lt::write_fracture_table(dir_ / "fractures.csv", fractures_);
-  lt::write_fracture_summary(dir_ / "fracture_summary.csv", fractures_);
-  core::write_file_atomically(dir_ / "breakdown.csv", [&](std::ostream& file) {
-    CsvWriter breakdown(file, {"t_first_break", "p_h_before", "p_h_first_break", "x_first_break", "y_first_break",
-                               "t_peak", "p_h_peak", "n_broken"});
-    const Breakdown& b = breakdown_;
-    breakdown.row({b.t_first, b.p_before, b.p_first, b.x_first, b.y_first, b.t_peak, b.p_peak,
-                   static_cast<double>(b.n_broken)});
-  });
+  for (auto& [id, stream] : streams_) core::close_checked(stream, run_file_path(dir_, id));
+  for (const RunFile& f : files_)
+    if (f.writing == RunFileWriting::whole) write_whole(f.id);
+}
+
+void RunRecorder::write_whole(RunFileId id) const {
+  const std::filesystem::path path = run_file_path(dir_, id);
+  switch (id) {
+    case RunFileId::teeth: lt::write_tooth_log(path, teeth_, "time"); return;
+    case RunFileId::fractures: lt::write_fracture_table(path, fractures_); return;
+    case RunFileId::fracture_summary: lt::write_fracture_summary(path, fractures_); return;
+    case RunFileId::breakdown:
+      core::write_file_atomically(path, [&](std::ostream& file) {
+        CsvWriter breakdown(file, {"t_first_break", "p_h_before", "p_h_first_break", "x_first_break", "y_first_break",
+                                   "t_peak", "p_h_peak", "n_broken"});
+        const Breakdown& b = breakdown_;
+        breakdown.row({b.t_first, b.p_before, b.p_first, b.x_first, b.y_first, b.t_peak, b.p_peak,
+                       static_cast<double>(b.n_broken)});
+      });
+      return;
+    case RunFileId::config: return;  // the command writes the resolved case before the run
+    default: throw std::logic_error("RunRecorder: no writer for " + std::string(run_file(id).name));
+  }
 }
 
 }  // namespace hm::cases

@@ -11,6 +11,7 @@
 
 #include "hm/case/fdm1d_case.hpp"
 #include "hm/case/run_case.hpp"
+#include "hm/case/run_files.hpp"
 #include "hm/case/sweep.hpp"
 #include "hm/core/input_error.hpp"
 #include "hm/core/result_folder.hpp"
@@ -82,8 +83,8 @@ std::map<std::string, std::string> run_results(const fs::path& run, std::vector<
     }
   };
   values["wall_seconds"] = wall_seconds(run);
-  if (const auto b = read_csv(run / "breakdown.csv"); b.size() >= 2) take(b.front(), b[1], "");
-  if (const auto s = read_csv(run / "fracture_summary.csv"); s.size() >= 2) take(s.front(), s.back(), "final_");
+  if (const auto b = read_csv(run_file_path(run, RunFileId::breakdown)); b.size() >= 2) take(b.front(), b[1], "");
+  if (const auto s = read_csv(run_file_path(run, RunFileId::fracture_summary)); s.size() >= 2) take(s.front(), s.back(), "final_");
   return values;
 }
 

@@ -17,6 +17,7 @@
 #include "hm/case/fdm1d_output.hpp"
 #include "hm/case/progress.hpp"
 #include "hm/case/provenance.hpp"
+#include "hm/case/run_files.hpp"
 #include "hm/case/run_output.hpp"
 #include "report_writer.hpp"
 
@@ -180,7 +181,7 @@ RunOutcome read_run(const RunCase& c, const std::string& label, const fs::path& 
   o.ok = true;
   o.seconds = o.mechanics = o.fracture = o.geometry = o.flow = kNaN;  // not in the files
   o.n_halvings = -1;
-  const CsvColumns series(dir / "series.csv");
+  const CsvColumns series(cases::run_file_path(dir, cases::RunFileId::series));
   const auto &t = series["t"], &p_h = series["p_h"], &n_broken = series["n_broken"];
   o.n_steps = static_cast<int>(series.n_rows()) - 1;  // a row per accepted step and one at t = 0
   double passes = 0.0;
@@ -200,15 +201,15 @@ RunOutcome read_run(const RunCase& c, const std::string& label, const fs::path& 
     if (t[k] >= kWindow * (1 - 1e-12) && (std::isnan(o.pre_max) || std::abs(ratio) > o.pre_max))
       o.pre_max = std::abs(ratio), o.pre_max_t = t[k];
   }
-  const CsvColumns breakdown(dir / "breakdown.csv");
+  const CsvColumns breakdown(cases::run_file_path(dir, cases::RunFileId::breakdown));
   o.t_first = breakdown["t_first_break"].at(0);
   o.p_before = breakdown["p_h_before"].at(0);
   o.p_first = breakdown["p_h_first_break"].at(0);
   o.t_peak = breakdown["t_peak"].at(0);
   o.p_peak = breakdown["p_h_peak"].at(0);
   if (!std::isnan(o.t_first)) {
-    const std::vector<lt::BreakEvent> log = lt::read_break_log(dir / "breaks.csv");
-    if (log.empty()) throw std::runtime_error((dir / "breaks.csv").string() + ": no break, breakdown.csv has one");
+    const std::vector<lt::BreakEvent> log = lt::read_break_log(cases::run_file_path(dir, cases::RunFileId::breaks));
+    if (log.empty()) throw std::runtime_error(cases::run_file_path(dir, cases::RunFileId::breaks).string() + ": no break, breakdown.csv has one");
     o.r_first = log.front().position.norm();
     o.mode_first = log.front().mode;
     o.length_first = lt::generate_lattice(c.lattice).length[static_cast<std::size_t>(log.front().beam)];
@@ -219,7 +220,7 @@ RunOutcome read_run(const RunCase& c, const std::string& label, const fs::path& 
     o.pre_last = std::abs(pre_last_ratio), o.pre_last_t = pre_last_t, o.pre_signed_last = pre_last_ratio;
   }
   // The output times: fracture statistics, p_h, and u_r against 1D while still unbroken.
-  const CsvColumns summary(dir / "fracture_summary.csv"), radial(dir / "radial.csv");
+  const CsvColumns summary(cases::run_file_path(dir, cases::RunFileId::fracture_summary)), radial(cases::run_file_path(dir, cases::RunFileId::radial));
   const std::vector<double> edges = recorder_shell_edges(c);
   for (std::size_t k = 0; k < summary.n_rows(); ++k) {
     Snapshot snap;
@@ -245,8 +246,8 @@ RunOutcome read_run(const RunCase& c, const std::string& label, const fs::path& 
     o.snaps.push_back(snap);
   }
   // Where the sizable secondary fractures are (fractures.csv): touching the outer boundary, or inside.
-  if (fs::exists(dir / "fractures.csv")) {
-    const CsvColumns fractures(dir / "fractures.csv");
+  if (fs::exists(cases::run_file_path(dir, cases::RunFileId::fractures))) {
+    const CsvColumns fractures(cases::run_file_path(dir, cases::RunFileId::fractures));
     const double sizable = lt::FractureStatisticsOptions{}.sizable_extent;
     for (std::size_t k = 0; k < fractures.n_rows(); ++k) {
       if (fractures["connected_to_borehole"][k] != 0.0 || fractures["extent"][k] < sizable) continue;
@@ -256,8 +257,8 @@ RunOutcome read_run(const RunCase& c, const std::string& label, const fs::path& 
   }
   // The pressure in the fractures at the same output times (RunRecorder's fracture_pressure.csv; a
   // folder written before the recorder wrote it has none, and its metrics stay out of the report).
-  if (!fs::exists(dir / "fracture_pressure.csv")) return o;
-  const CsvColumns pressure(dir / "fracture_pressure.csv");
+  if (!fs::exists(cases::run_file_path(dir, cases::RunFileId::fracture_pressure))) return o;
+  const CsvColumns pressure(cases::run_file_path(dir, cases::RunFileId::fracture_pressure));
   for (Snapshot& snap : o.snaps)
     for (std::size_t k = 0; k < pressure.n_rows(); ++k) {
       if (pressure["t"][k] != snap.t) continue;
@@ -273,7 +274,7 @@ TwinOutcome read_twin(const RunCase& twin_case, const fs::path& dir, const fdm1d
   TwinOutcome o;
   o.ok = true;
   o.t_end = twin_case.stepping.t_end;
-  const CsvColumns series(dir / "series.csv"), radial(dir / "radial.csv");
+  const CsvColumns series(cases::run_file_path(dir, cases::RunFileId::series)), radial(cases::run_file_path(dir, cases::RunFileId::radial));
   const auto &t = series["t"], &p_h = series["p_h"];
   for (std::size_t k = 0; k < series.n_rows(); ++k) {
     if (t[k] < kWindow * (1 - 1e-12)) continue;

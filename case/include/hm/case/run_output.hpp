@@ -1,6 +1,7 @@
 #pragma once
 /// \file
-/// Output of a 2D coupled run (`hmlattice run`), read by figures/ and by users:
+/// Output of a 2D coupled run (`hmlattice run`), read by figures/ and by users; which files a run
+/// writes, and how, is the table run_files.hpp. Their columns:
 ///   series.csv  one row per accepted step (and t = 0): t, dt, p_h, injected, stored, coupling, outflow,
 ///               balance_error, n_broken, iterations, pressure_residual, displacement_residual.
 ///               Volumes are totals since t = 0 (dimensionless areas); injected = stored + coupling +
@@ -33,6 +34,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -42,6 +44,7 @@
 #include "hm/core/csv_writer.hpp"
 #include "hm/core/state_archive.hpp"
 #include "hm/case/run_case.hpp"
+#include "hm/case/run_files.hpp"
 
 namespace hm::cases {
 
@@ -77,9 +80,13 @@ class RunRecorder {
   const Breakdown& breakdown() const { return breakdown_; }
 
  private:
+  void open_writers(core::CsvHeader header);
+  void write_whole(RunFileId id) const;
+
   RunOutput output_;
   double r_min_ = 0.0;
   std::filesystem::path dir_;
+  std::vector<RunFile> files_;  // the files this run writes (run_files.hpp)
   bool fracture_ = false;
   hm::lattice2d::FractureStatisticsOptions statistics_options_;
   Breakdown breakdown_;
@@ -89,7 +96,7 @@ class RunRecorder {
   std::vector<hm::lattice2d::ToothEvent> teeth_;    // the model's tooth log at the last record()
   std::vector<hm::lattice2d::FractureSnapshot> fractures_;
   std::vector<std::size_t> fracture_log_sizes_;  // break-log length at each snapshot
-  std::ofstream series_file_, radial_file_, breaks_file_, pressure_file_;
+  std::map<RunFileId, std::ofstream> streams_;  // the streamed files, open while the run goes
   std::unique_ptr<core::CsvWriter> series_, radial_, pressure_;
   std::unique_ptr<hm::lattice2d::VtkSeries> vtk_;
 };
