@@ -21,7 +21,7 @@ void add_verify_command(CLI::App& app, int& exit_code, const std::string& comman
   auto* cmd = app.add_subcommand("verify", "Run the verification suite and write DIR/report.md, DIR/metrics.json");
   struct Options {
     std::string tier = "quick", out = "out/verify", filter, runs, write_cases;
-    bool overwrite = false;
+    bool overwrite = false, list = false;
     int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   };
   auto opt = std::make_shared<Options>();
@@ -44,8 +44,26 @@ void add_verify_command(CLI::App& app, int& exit_code, const std::string& comman
                   "(with --overwrite: replace an earlier such folder)")
       ->excludes(runs)
       ->excludes("--out");
+  cmd->add_flag("--list", opt->list,
+                "print the benchmarks of the tier (with --filter: those selected) and what each checks; run nothing")
+      ->excludes(runs)
+      ->excludes("--write-cases")
+      ->excludes("--out")
+      ->excludes("--overwrite");
   cmd->callback([opt, &exit_code, command_line] {
     const auto tier = core::from_name<verification::Tier>(opt->tier, "--tier");
+    if (opt->list) {
+      const auto selected = verification::select_benchmarks(verification::all_benchmarks(), tier, opt->filter);
+      for (const verification::Benchmark* b : selected) {
+        std::cout << b->id << " (" << core::name_of(b->tier) << " tier";
+        for (std::size_t k = 0; k < b->paper_figures.size(); ++k)
+          std::cout << (k == 0 ? "; the paper's Fig. " : ", ") << b->paper_figures[k];
+        std::cout << "): " << b->title << "\n    " << b->description << "\n";
+      }
+      std::cout << selected.size() << " benchmarks in the " << opt->tier << " tier"
+                << (opt->filter.empty() ? "" : " whose id contains '" + opt->filter + "'") << "\n";
+      return;
+    }
     if (!opt->write_cases.empty()) {
       const auto selected = verification::select_benchmarks(verification::all_benchmarks(), tier, opt->filter);
       const int n = verification::write_planned_cases(selected, opt->write_cases, opt->overwrite, command_line);

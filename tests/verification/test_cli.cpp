@@ -6,6 +6,8 @@
 #include <sstream>
 #include <vector>
 
+#include "hm/verification/benchmark.hpp"
+#include "hm/verification/harness.hpp"
 #include "run_command.hpp"
 
 using hm::test::count_lines;
@@ -65,6 +67,31 @@ TEST_CASE("Out-of-range analytic parameters name the parameter, the value and th
 TEST_CASE("A bad verification tier writes no report", "[verification][cli]") {
   TempDir dir("cli-verify");
   require_clean_rejection(run_hmlattice("verify --tier full --out report", dir.path), "--tier = 'full', allowed: quick, paper");
+  CHECK(dir.is_empty());
+}
+
+TEST_CASE("verify --list prints each benchmark of the tier with what it checks, and runs and writes nothing",
+          "[verification][cli]") {
+  TempDir dir("cli-verify-list");
+  for (const auto& [tier, filter] : std::vector<std::pair<hm::verification::Tier, std::string>>{
+           {hm::verification::Tier::quick, ""}, {hm::verification::Tier::paper, ""}, {hm::verification::Tier::paper, "fig1"}}) {
+    const std::string tier_name = hm::core::name_of(tier);
+    const auto r = run_hmlattice("verify --list --tier " + tier_name + (filter.empty() ? "" : " --filter " + filter), dir.path);
+    INFO("stderr: " << r.err);
+    REQUIRE(r.exit_code == 0);
+    const auto selected = hm::verification::select_benchmarks(hm::verification::all_benchmarks(), tier, filter);
+    REQUIRE(selected.size() > 1);
+    // Two lines per benchmark (id and title; its description) and the count.
+    CHECK(count_lines(r.out) == 2 * static_cast<int>(selected.size()) + 1);
+    for (const hm::verification::Benchmark* b : selected) {
+      CHECK_THAT(r.out, Catch::Contains(b->id + " (" + hm::core::name_of(b->tier) + " tier"));
+      CHECK_THAT(r.out, Catch::Contains("    " + b->description));
+    }
+    CHECK_THAT(r.out, Catch::Contains(std::to_string(selected.size()) + " benchmarks in the " + tier_name + " tier"));
+  }
+  CHECK_THAT(run_hmlattice("verify --list --tier paper --filter fig12", dir.path).out, Catch::Contains("the paper's Fig. 12"));
+  CHECK(dir.is_empty());
+  require_clean_rejection(run_hmlattice("verify --list --out report", dir.path), "--out excludes --list");
   CHECK(dir.is_empty());
 }
 
