@@ -32,6 +32,29 @@ double relative_imbalance(double injected, double storage, double deformation, d
   return scale > 0.0 ? std::abs(injected - storage - deformation - outflow) / scale : 0.0;
 }
 
+// The triangle that holds the source point x0: the one in which its smallest barycentric coordinate
+// is largest, so a point on an edge or vertex picks one triangle deterministically.
+int source_triangle_of(const Lattice& lattice, const Eigen::Vector2d& x0) {
+  double best = -std::numeric_limits<double>::infinity();
+  int found = -1;
+  for (int s = 0; s < lattice.n_triangles(); ++s) {
+    const auto& tri = lattice.triangles[static_cast<std::size_t>(s)];
+    const Eigen::Vector2d a = lattice.points.col(tri[0]), b = lattice.points.col(tri[1]), c = lattice.points.col(tri[2]);
+    auto cross = [](const Eigen::Vector2d& u, const Eigen::Vector2d& v) { return u.x() * v.y() - u.y() * v.x(); };
+    const double twice_area = cross(b - a, c - a);
+    const double lambda = std::min({cross(b - x0, c - x0), cross(c - x0, a - x0), cross(a - x0, b - x0)}) / twice_area;
+    if (lambda > best) {
+      best = lambda;
+      found = s;
+    }
+  }
+  // Relative round-off of the barycentric coordinates; anything more negative is outside.
+  if (best < -1e-12)
+    throw InputError("source_x, source_y = " + format_value(x0.x()) + ", " + format_value(x0.y()) +
+                     ", allowed: a point inside the lattice");
+  return found;
+}
+
 }  // namespace
 
 void FlowParameters::validate() const {
@@ -178,27 +201,8 @@ FlowNetwork::FlowNetwork(const Lattice& lattice, const DualGraph& dual, const Fl
     c.t = t >= 0 ? t : (lattice.beam_boundary[static_cast<std::size_t>(e)] == BoundaryTag::inner ? h : -1);
   }
 
-  if (!has_borehole_) {
-    // The triangle that holds the source point: the one in which its smallest barycentric coordinate
-    // is largest, so a point on an edge or vertex picks one triangle deterministically.
-    const Eigen::Vector2d x0(parameters_.source_x, parameters_.source_y);
-    double best = -std::numeric_limits<double>::infinity();
-    for (int s = 0; s < n_triangles_; ++s) {
-      const auto& tri = lattice.triangles[static_cast<std::size_t>(s)];
-      const Eigen::Vector2d a = lattice.points.col(tri[0]), b = lattice.points.col(tri[1]), c = lattice.points.col(tri[2]);
-      auto cross = [](const Eigen::Vector2d& u, const Eigen::Vector2d& v) { return u.x() * v.y() - u.y() * v.x(); };
-      const double twice_area = cross(b - a, c - a);
-      const double lambda = std::min({cross(b - x0, c - x0), cross(c - x0, a - x0), cross(a - x0, b - x0)}) / twice_area;
-      if (lambda > best) {
-        best = lambda;
-        source_triangle_ = s;
-      }
-    }
-    // Relative round-off of the barycentric coordinates; anything more negative is outside.
-    if (best < -1e-12)
-      throw InputError("source_x, source_y = " + format_value(x0.x()) + ", " + format_value(x0.y()) +
-                       ", allowed: a point inside the lattice");
-  }
+  if (!has_borehole_)
+    source_triangle_ = source_triangle_of(lattice, Eigen::Vector2d(parameters_.source_x, parameters_.source_y));
 
   // Sparsity pattern: diagonal plus one symmetric pair per triangle-triangle or triangle-borehole
   // connection. Fixed for the life of the network.

@@ -155,7 +155,7 @@ BeamMechanics::BeamMechanics(Lattice lattice, const BeamParameters& parameters, 
   parameters_.validate();
   conditions_.validate(lattice_);
   options_.validate();
-  const int n_p = lattice_.n_particles(), n_dof = 3 * n_p;
+  const int n_p = lattice_.n_particles();
   states_.assign(static_cast<std::size_t>(lattice_.n_beams()), BeamState::intact);
   normal_stiffness_.resize(static_cast<std::size_t>(lattice_.n_beams()));
   for (int e = 0; e < lattice_.n_beams(); ++e)
@@ -164,13 +164,27 @@ BeamMechanics::BeamMechanics(Lattice lattice, const BeamParameters& parameters, 
   closed_.assign(static_cast<std::size_t>(lattice_.n_beams()), false);
   detached_.assign(static_cast<std::size_t>(n_p), false);
 
-  // 1. Held degrees of freedom: supports, boundary strain, explicit list (later overrides earlier).
+  hold_boundary_dofs();
+  remove_rigid_body_modes();
+  lump_boundary_loads();
+  build_adjacency();
+
+  raw_ = held_value_;
+  displacement_ = held_value_;
+  solver_ = make_spd_solver(options_.solver, options_.solver_options);
+  setup_system();
+}
+
+void BeamMechanics::hold(int dof, double value) {
+  held_[static_cast<std::size_t>(dof)] = true;
+  held_value_[dof] = value;
+}
+
+// Held degrees of freedom: supports, boundary strain, explicit list (later overrides earlier).
+void BeamMechanics::hold_boundary_dofs() {
+  const int n_p = lattice_.n_particles(), n_dof = 3 * n_p;
   held_.assign(static_cast<std::size_t>(n_dof), false);
   held_value_ = Eigen::VectorXd::Zero(n_dof);
-  auto hold = [&](int dof, double value) {
-    held_[static_cast<std::size_t>(dof)] = true;
-    held_value_[dof] = value;
-  };
   for (int p = 0; p < n_p; ++p) {
     const BoundaryTag tag = lattice_.boundary[static_cast<std::size_t>(p)];
     const bool fixed = (tag == BoundaryTag::outer && conditions_.outer == BoundarySupport::fixed) ||
@@ -186,9 +200,12 @@ BeamMechanics::BeamMechanics(Lattice lattice, const BeamParameters& parameters, 
     }
   }
   for (const auto& pd : conditions_.prescribed) hold(dof_index(pd.particle, pd.component), pd.value);
+}
 
-  // 2. Rigid-body modes. Pure traction: pin the particle nearest the centroid (gauge removed after
-  // each solve). Otherwise the held set must stop all three rigid motions of the (connected) lattice.
+// Rigid-body modes. Pure traction: pin the particle nearest the centroid (gauge removed after
+// each solve). Otherwise the held set must stop all three rigid motions of the (connected) lattice.
+void BeamMechanics::remove_rigid_body_modes() {
+  const int n_dof = 3 * lattice_.n_particles();
   const bool any_held = std::any_of(held_.begin(), held_.end(), [](bool h) { return h; });
   if (!any_held) {
     const Eigen::Vector2d c = lattice_.points.rowwise().mean();
@@ -213,9 +230,12 @@ BeamMechanics::BeamMechanics(Lattice lattice, const BeamParameters& parameters, 
                            "allowed: none held (pure traction, pinned automatically) or held so that x, y "
                            "translation and rotation are all stopped");
   }
+}
 
-  // 3. Loads: boundary pressures and the outer stress as tractions on the boundary polygon, lumped
-  // half to each end (exact for a constant traction: the segment's force and moment).
+// Loads: boundary pressures and the outer stress as tractions on the boundary polygon, lumped
+// half to each end (exact for a constant traction: the segment's force and moment).
+void BeamMechanics::lump_boundary_loads() {
+  const int n_dof = 3 * lattice_.n_particles();
   pressure_loads_ = Eigen::VectorXd::Zero(n_dof);
   extra_loads_ = Eigen::VectorXd::Zero(n_dof);
   const bool outer_stressed = !conditions_.outer_stress.isZero(0.0);
@@ -233,8 +253,11 @@ BeamMechanics::BeamMechanics(Lattice lattice, const BeamParameters& parameters, 
       pressure_loads_[dof_index(q, 1)] += f.y();
     }
   }
+}
 
-  // 4. Particle -> beam adjacency for the detachment search.
+// Particle -> beam adjacency for the detachment search.
+void BeamMechanics::build_adjacency() {
+  const int n_p = lattice_.n_particles();
   adjacency_start_.assign(static_cast<std::size_t>(n_p) + 1, 0);
   for (const auto& b : lattice_.beams) {
     ++adjacency_start_[static_cast<std::size_t>(b[0]) + 1];
@@ -245,11 +268,6 @@ BeamMechanics::BeamMechanics(Lattice lattice, const BeamParameters& parameters, 
   std::vector<int> fill(adjacency_start_.begin(), adjacency_start_.end() - 1);
   for (int e = 0; e < lattice_.n_beams(); ++e)
     for (int q : lattice_.beams[static_cast<std::size_t>(e)]) adjacency_beam_[static_cast<std::size_t>(fill[q]++)] = e;
-
-  raw_ = held_value_;
-  displacement_ = held_value_;
-  solver_ = make_spd_solver(options_.solver, options_.solver_options);
-  setup_system();
 }
 
 void BeamMechanics::setup_system() {

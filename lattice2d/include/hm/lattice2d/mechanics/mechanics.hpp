@@ -239,6 +239,13 @@ class BeamMechanics {
   void restore_state(core::StateReader& r);
 
  private:
+  // The constructor's parts, in order: the held degrees of freedom, the rigid-body modes (pinned or
+  // checked), the boundary tractions lumped to the particles, the particle -> beam adjacency.
+  void hold(int dof, double value);
+  void hold_boundary_dofs();
+  void remove_rigid_body_modes();
+  void lump_boundary_loads();
+  void build_adjacency();
   void setup_system();  // free-DOF map, reduced matrix, held-term vector, factorisation
   BeamParameters beam_parameters(int beam) const;  // = beam_parameters_for(lattice_, parameters_, beam), cached k_n
   void change_state(int beam, BeamState to);
