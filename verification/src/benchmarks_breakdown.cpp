@@ -236,53 +236,78 @@ void add_q_min_metrics(an::DimensionlessParameters d, const an::BreakdownLimits&
   m.push_back(never_fails_metric(d, lim, breakdown::run_grid(d, 400)));
 }
 
-BenchmarkResult run_fig18(const Plan& p, const BenchmarkContext& ctx) {
-  BenchmarkResult res;
-  const fs::path root = ctx.data_dir / p.id;
-  fs::create_directories(root);
-  borehole_fracture::RunSource source(root, ctx.runs_dir, ctx.progress);
-  const RunCase base = sweep_base_case();
-
-  std::ofstream lattice_out = core::open_for_writing(root / "lattice.csv");
-  core::CsvWriter lattice_csv(lattice_out, {"b", "Q", "N", "seed", "flux_node", "broke", "p_h_first_break",
-                                            "p_h_before", "t_first_break", "n_steps", "seconds"});
-  std::ofstream oned_out = core::open_for_writing(root / "fdm1d.csv");
-  core::CsvWriter oned_csv(oned_out, {"b", "Q", "failed", "p_b", "p_b_finest", "n_r_finest", "observed_order",
-                                      "last_change"});
-  std::ofstream spacing_out = core::open_for_writing(root / "fdm1d_lattice_spacing.csv");
-  core::CsvWriter spacing_csv(spacing_out, {"b", "Q", "N", "n_r", "failed", "p_b"});
-  std::ofstream limits_out = core::open_for_writing(root / "breakdown_limits.csv");
-  core::CsvWriter limits_csv(limits_out, {"b", "q_min", "p_b_slow", "p_b_fast", "p_b_jacketed", "tensile_strength"});
-
-  std::vector<std::string> header = {"b", "Q", "Q / q_min"};
-  for (long long N : p.N) header.push_back("lattice N = " + std::to_string(N) + " (Eq. 16 node), mean ± sd");
-  header.insert(header.end(), {"1D converged (Richardson)", "lattice N = " + std::to_string(p.N.back()) + " / 1D",
-                               "1D finest (n_r)"});
-  for (long long N : p.N) header.push_back("1D at lattice spacing N = " + std::to_string(N) + " (n_r)");
-  header.insert(header.end(), {"p_b_slow", "p_b_fast", "p_b_jacketed", "paper (Section 3.5)"});
-  Table main{"Breakdown pressure p_b/E against Q: lattice first break (" + std::to_string(p.seeds.size()) +
-                 " seeds), 1D model's first wall failure, closed-form limits (all with the calibrated lattice's nu)",
-             header, {}};
-  Table grid{"1D grid study per (b, Q): p_b at n_r = 400, x4, ... until it moves by < 1e-3 (cap " +
-                 std::to_string(p.grid.n_r_max) + "); observed order of the last three levels; Richardson (order 2)",
-             {"b", "Q", "p_b / p_b_fast per n_r", "wall layer sqrt(t_b/S) / dr of the third-finest", "observed order", "last change",
-              "Richardson", "Richardson / p_b_fast", "s"},
-             {}};
-  Table node{"Borehole node (N = " + std::to_string(p.N.front()) + ", seed 1): Eq. 16's storage node (the "
-                 "cases') against the 1D model's flux boundary (borehole_storage = none)",
-             {"b", "Q", "node", "p_h before / at first break", "t* first break", "steps to first break",
-              "p_h/p_h,1D - 1 at the last step before", "1D converged"},
-             {}};
-  Table runs{"Every lattice run", {"run", "p_h before / at first break", "t* first break", "steps", "r first break",
-                                   "mode", "s"}, {}};
-
-  double worst_fast = 0.0;             // |converged / p_b_fast - 1| at the largest Q
+// The files and tables of one Fig. 18 benchmark, filled (b, Q) by (b, Q), and what its summary metrics
+// take over all of them.
+struct Fig18Record {
+  fs::path root;
+  std::ofstream lattice_out, oned_out, spacing_out, limits_out;
+  core::CsvWriter lattice_csv, oned_csv, spacing_csv, limits_csv;
+  Table main, grid, node, runs;
+  double worst_fast = 0.0;                // |converged / p_b_fast - 1| at the largest Q
   double lowest_order = breakdown::kNaN;  // over the grid studies that resolve the wall layer (NaN: none did)
   std::string lowest_order_where;
   bool every_1d_tensile = true;
   double lattice_low = 1e300, lattice_high = 0.0;  // lattice mean / 1D converged, finest N, Eq. 16 node
-  // The 1D grid studies first (minutes in the paper tier, against hours of lattice runs), each reported
-  // as it is done.
+
+  Fig18Record(const Plan& p, const fs::path& dir)
+      : root(dir),
+        lattice_out(core::open_for_writing(dir / "lattice.csv")),
+        oned_out(core::open_for_writing(dir / "fdm1d.csv")),
+        spacing_out(core::open_for_writing(dir / "fdm1d_lattice_spacing.csv")),
+        limits_out(core::open_for_writing(dir / "breakdown_limits.csv")),
+        lattice_csv(lattice_out, {"b", "Q", "N", "seed", "flux_node", "broke", "p_h_first_break", "p_h_before",
+                                  "t_first_break", "n_steps", "seconds"}),
+        oned_csv(oned_out, {"b", "Q", "failed", "p_b", "p_b_finest", "n_r_finest", "observed_order", "last_change"}),
+        spacing_csv(spacing_out, {"b", "Q", "N", "n_r", "failed", "p_b"}),
+        limits_csv(limits_out, {"b", "q_min", "p_b_slow", "p_b_fast", "p_b_jacketed", "tensile_strength"}),
+        main{"Breakdown pressure p_b/E against Q: lattice first break (" + std::to_string(p.seeds.size()) +
+                 " seeds), 1D model's first wall failure, closed-form limits (all with the calibrated lattice's nu)",
+             main_header(p), {}},
+        grid{"1D grid study per (b, Q): p_b at n_r = 400, x4, ... until it moves by < 1e-3 (cap " +
+                 std::to_string(p.grid.n_r_max) + "); observed order of the last three levels; Richardson (order 2)",
+             {"b", "Q", "p_b / p_b_fast per n_r", "wall layer sqrt(t_b/S) / dr of the third-finest", "observed order",
+              "last change", "Richardson", "Richardson / p_b_fast", "s"},
+             {}},
+        node{"Borehole node (N = " + std::to_string(p.N.front()) + ", seed 1): Eq. 16's storage node (the "
+                 "cases') against the 1D model's flux boundary (borehole_storage = none)",
+             {"b", "Q", "node", "p_h before / at first break", "t* first break", "steps to first break",
+              "p_h/p_h,1D - 1 at the last step before", "1D converged"},
+             {}},
+        runs{"Every lattice run",
+             {"run", "p_h before / at first break", "t* first break", "steps", "r first break", "mode", "s"},
+             {}} {}
+
+  static std::vector<std::string> main_header(const Plan& p) {
+    std::vector<std::string> header = {"b", "Q", "Q / q_min"};
+    for (long long N : p.N) header.push_back("lattice N = " + std::to_string(N) + " (Eq. 16 node), mean ± sd");
+    header.insert(header.end(), {"1D converged (Richardson)", "lattice N = " + std::to_string(p.N.back()) + " / 1D",
+                                 "1D finest (n_r)"});
+    for (long long N : p.N) header.push_back("1D at lattice spacing N = " + std::to_string(N) + " (n_r)");
+    header.insert(header.end(), {"p_b_slow", "p_b_fast", "p_b_jacketed", "paper (Section 3.5)"});
+    return header;
+  }
+
+  // One lattice run: its metrics, its CSV row and its row in the table of every run.
+  void add_run(const RunOutcome& o, double b, double Q, long long N, bool flux_node, std::vector<Metric>& metrics) {
+    add_run_metrics(o, metrics);
+    lattice_csv.row({b, Q, static_cast<double>(N), static_cast<double>(o.seed), flux_node ? 1.0 : 0.0,
+                     std::isnan(o.t_first) ? 0.0 : 1.0, o.p_first, o.p_before, o.t_first,
+                     static_cast<double>(o.n_steps), o.seconds});
+    runs.rows.push_back({o.label, fmt(o.p_before) + " / " + fmt(o.p_first), fmt(o.t_first), std::to_string(o.n_steps),
+                         fmt(o.r_first), hm::core::name_of(o.mode_first), fmt(o.seconds)});
+  }
+
+  void close() {
+    core::close_checked(lattice_out, root / "lattice.csv");
+    core::close_checked(oned_out, root / "fdm1d.csv");
+    core::close_checked(spacing_out, root / "fdm1d_lattice_spacing.csv");
+    core::close_checked(limits_out, root / "breakdown_limits.csv");
+  }
+};
+
+// The 1D grid studies of every (b, Q) in order (minutes in the paper tier, against hours of lattice
+// runs), each reported as it is done.
+std::vector<GridStudy> fig18_grid_studies(const Plan& p, const RunCase& base, const BenchmarkContext& ctx) {
   std::vector<GridStudy> studies;
   for (double b : p.b)
     for (double Q : p.Q) {
@@ -296,126 +321,119 @@ BenchmarkResult run_fig18(const Plan& p, const BenchmarkContext& ctx) {
       *ctx.progress << " order " << fmt(studies.back().observed_order) << ", Richardson/p_b_fast "
                     << ratio6(studies.back().richardson / p_b_fast) << std::endl;
     }
-  std::size_t next_study = 0;
-  for (double b : p.b) {
-    const RunCase b_case = lattice_case(base, b, p.Q.front(), p.N.front(), 1, false);
-    const an::DimensionlessParameters d_b = borehole_fracture::reference_parameters(b_case);
-    const an::BreakdownLimits lim = an::breakdown_limits(d_b);
-    limits_csv.row({b, lim.q_min, lim.p_b_slow, lim.p_b_fast, lim.p_b_jacketed, d_b.tensile_strength});
-    add_q_min_metrics(d_b, lim, res.metrics);
-    for (double Q : p.Q) {
-      an::DimensionlessParameters d = d_b;
-      d.Q = Q;
-      // 1D: the grid study and the lattice's own spacing.
-      const GridStudy& s = studies[next_study++];
-      double seconds = 0.0;
-      std::string levels;
-      for (const auto& g : s.levels) {
-        levels += (levels.empty() ? "" : "; ") + std::to_string(g.n_r) + ": " + (g.failed ? ratio6(g.p_b / lim.p_b_fast) : "none");
-        seconds += g.seconds;
-      }
-      const bool failed = s.finest().failed;
-      const double converged = failed ? s.richardson : breakdown::kNaN;
-      oned_csv.row({b, Q, failed ? 1.0 : 0.0, converged, s.finest().p_b, static_cast<double>(s.finest().n_r),
-                    s.observed_order, s.last_change});
-      if (Q < lim.q_min) res.metrics.push_back(never_fails_metric(d, lim, s.finest()));
-      for (const auto& g : s.levels) every_1d_tensile = every_1d_tensile && (!g.failed || g.tensile);
-      // The order is the scheme's only where the coarsest of the three levels resolves the wall layer
-      // sqrt(t_b/S) (docs/breakdown.md 6(c): second order once dr <= layer/3); the others are shown.
-      const double layer = std::sqrt(s.finest().t_b / an::storage_coefficient(d.material));
-      const double coarse_dr = (1.0 - d.R_i) / s.levels[s.levels.size() - 3].n_r;
-      const bool asymptotic = failed && coarse_dr <= layer / 3.0;
-      if (asymptotic && (std::isnan(lowest_order) || !(s.observed_order >= lowest_order))) {
-        lowest_order = s.observed_order;
-        lowest_order_where = "b = " + fmt(b) + ", Q = " + fmt(Q) + ", n_r " + std::to_string(s.levels[s.levels.size() - 3].n_r) +
-                             "-" + std::to_string(s.finest().n_r);
-      }
-      grid.rows.push_back({fmt(b), fmt(Q), levels, fmt(layer / coarse_dr), fmt(s.observed_order) + (asymptotic ? "" : " (not gated)"), fmt(s.last_change), fmt(s.richardson),
-                           fmt(s.richardson / lim.p_b_fast), fmt(seconds)});
-      if (Q == p.Q.back()) worst_fast = std::max(worst_fast, std::abs(converged / lim.p_b_fast - 1.0));
+  return studies;
+}
 
-      std::vector<std::string> row = {fmt(b), fmt(Q), fmt(Q / lim.q_min)};
-      std::vector<std::string> spacing_cells;
-      std::string lattice_over_1d = "nan";
-      for (long long N : p.N) {
-        Group g;
-        for (unsigned long long seed : p.seeds) {
-          const RunCase c = lattice_case(base, b, Q, N, seed, false);
-          const fdm1d::Fdm1dResult ref = borehole_fracture::run_reference(c);
-          g.runs.push_back(source.run(c, label(p, b, Q, N, seed, false), ref));
-        }
-        row.push_back(g.summary());
-        if (N == p.N.back() && !g.broken_p().empty()) {
-          const std::vector<double> pb = g.broken_p();
-          const double ratio = std::accumulate(pb.begin(), pb.end(), 0.0) / static_cast<double>(pb.size()) / converged;
-          lattice_low = std::min(lattice_low, ratio), lattice_high = std::max(lattice_high, ratio);
-          lattice_over_1d = fmt(ratio);
-        }
-        const RunCase c = lattice_case(base, b, Q, N, 1, false);
-        const breakdown::GridRun at_h = breakdown::run_grid(d, lattice_spacing_n_r(c));
-        spacing_csv.row({b, Q, static_cast<double>(N), static_cast<double>(at_h.n_r), at_h.failed ? 1.0 : 0.0, at_h.p_b});
-        spacing_cells.push_back((at_h.failed ? fmt(at_h.p_b) : std::string("none")) + " (" + std::to_string(at_h.n_r) + ")");
-        for (const auto& o : g.runs) {
-          add_run_metrics(o, res.metrics);
-          lattice_csv.row({b, Q, static_cast<double>(N), static_cast<double>(o.seed), 0.0, std::isnan(o.t_first) ? 0.0 : 1.0,
-                           o.p_first, o.p_before, o.t_first, static_cast<double>(o.n_steps), o.seconds});
-          runs.rows.push_back({o.label, fmt(o.p_before) + " / " + fmt(o.p_first), fmt(o.t_first),
-                               std::to_string(o.n_steps), fmt(o.r_first), hm::core::name_of(o.mode_first), fmt(o.seconds)});
-        }
-        if (N == p.N.front() && std::find(p.flux_node_Q.begin(), p.flux_node_Q.end(), Q) != p.flux_node_Q.end()) {
-          const RunCase fc = lattice_case(base, b, Q, N, 1, true);
-          const RunOutcome flux = source.run(fc, label(p, b, Q, N, 1, true), borehole_fracture::run_reference(fc));
-          add_run_metrics(flux, res.metrics);
-          lattice_csv.row({b, Q, static_cast<double>(N), 1.0, 1.0, std::isnan(flux.t_first) ? 0.0 : 1.0, flux.p_first,
-                           flux.p_before, flux.t_first, static_cast<double>(flux.n_steps), flux.seconds});
-          for (const RunOutcome* o : std::vector<const RunOutcome*>{&g.runs.front(), &flux})
-            node.rows.push_back({fmt(b), fmt(Q), o == &flux ? "flux boundary (1D's)" : "Eq. 16 storage",
+// The 1D model at one (b, Q): its grid study's row, CSV row and metrics; returns its converged p_b
+// (NaN if its wall never fails).
+double record_fig18_1d(const Plan& p, const an::DimensionlessParameters& d, const an::BreakdownLimits& lim,
+                       const GridStudy& s, Fig18Record& rec, std::vector<Metric>& metrics) {
+  const double b = d.material.b, Q = d.Q;
+  double seconds = 0.0;
+  std::string levels;
+  for (const auto& g : s.levels) {
+    levels += (levels.empty() ? "" : "; ") + std::to_string(g.n_r) + ": " + (g.failed ? ratio6(g.p_b / lim.p_b_fast) : "none");
+    seconds += g.seconds;
+  }
+  const bool failed = s.finest().failed;
+  const double converged = failed ? s.richardson : breakdown::kNaN;
+  rec.oned_csv.row({b, Q, failed ? 1.0 : 0.0, converged, s.finest().p_b, static_cast<double>(s.finest().n_r),
+                    s.observed_order, s.last_change});
+  if (Q < lim.q_min) metrics.push_back(never_fails_metric(d, lim, s.finest()));
+  for (const auto& g : s.levels) rec.every_1d_tensile = rec.every_1d_tensile && (!g.failed || g.tensile);
+  // The order is the scheme's only where the coarsest of the three levels resolves the wall layer
+  // sqrt(t_b/S) (docs/breakdown.md 6(c): second order once dr <= layer/3); the others are shown.
+  const double layer = std::sqrt(s.finest().t_b / an::storage_coefficient(d.material));
+  const double coarse_dr = (1.0 - d.R_i) / s.levels[s.levels.size() - 3].n_r;
+  const bool asymptotic = failed && coarse_dr <= layer / 3.0;
+  if (asymptotic && (std::isnan(rec.lowest_order) || !(s.observed_order >= rec.lowest_order))) {
+    rec.lowest_order = s.observed_order;
+    rec.lowest_order_where = "b = " + fmt(b) + ", Q = " + fmt(Q) + ", n_r " +
+                             std::to_string(s.levels[s.levels.size() - 3].n_r) + "-" + std::to_string(s.finest().n_r);
+  }
+  rec.grid.rows.push_back({fmt(b), fmt(Q), levels, fmt(layer / coarse_dr),
+                           fmt(s.observed_order) + (asymptotic ? "" : " (not gated)"), fmt(s.last_change),
+                           fmt(s.richardson), fmt(s.richardson / lim.p_b_fast), fmt(seconds)});
+  if (Q == p.Q.back()) rec.worst_fast = std::max(rec.worst_fast, std::abs(converged / lim.p_b_fast - 1.0));
+  return converged;
+}
+
+// The lattice at one (b, Q): every N and seed (and the flux-boundary node where planned), the 1D model at
+// each N's spacing; returns the main table's lattice cells, the finest N's ratio to the 1D model and
+// the spacing cells.
+struct Fig18LatticeCells {
+  std::vector<std::string> per_n, spacing;
+  std::string over_1d = "nan";
+};
+Fig18LatticeCells record_fig18_lattice(const Plan& p, const RunCase& base, const an::DimensionlessParameters& d,
+                                       double converged, borehole_fracture::RunSource& source, Fig18Record& rec,
+                                       std::vector<Metric>& metrics) {
+  const double b = d.material.b, Q = d.Q;
+  Fig18LatticeCells cells;
+  for (long long N : p.N) {
+    Group g;
+    for (unsigned long long seed : p.seeds) {
+      const RunCase c = lattice_case(base, b, Q, N, seed, false);
+      const fdm1d::Fdm1dResult ref = borehole_fracture::run_reference(c);
+      g.runs.push_back(source.run(c, label(p, b, Q, N, seed, false), ref));
+    }
+    cells.per_n.push_back(g.summary());
+    if (N == p.N.back() && !g.broken_p().empty()) {
+      const std::vector<double> pb = g.broken_p();
+      const double ratio = std::accumulate(pb.begin(), pb.end(), 0.0) / static_cast<double>(pb.size()) / converged;
+      rec.lattice_low = std::min(rec.lattice_low, ratio), rec.lattice_high = std::max(rec.lattice_high, ratio);
+      cells.over_1d = fmt(ratio);
+    }
+    const RunCase c = lattice_case(base, b, Q, N, 1, false);
+    const breakdown::GridRun at_h = breakdown::run_grid(d, lattice_spacing_n_r(c));
+    rec.spacing_csv.row({b, Q, static_cast<double>(N), static_cast<double>(at_h.n_r), at_h.failed ? 1.0 : 0.0, at_h.p_b});
+    cells.spacing.push_back((at_h.failed ? fmt(at_h.p_b) : std::string("none")) + " (" + std::to_string(at_h.n_r) + ")");
+    for (const auto& o : g.runs) rec.add_run(o, b, Q, N, false, metrics);
+    if (N == p.N.front() && std::find(p.flux_node_Q.begin(), p.flux_node_Q.end(), Q) != p.flux_node_Q.end()) {
+      const RunCase fc = lattice_case(base, b, Q, N, 1, true);
+      const RunOutcome flux = source.run(fc, label(p, b, Q, N, 1, true), borehole_fracture::run_reference(fc));
+      rec.add_run(flux, b, Q, N, true, metrics);
+      for (const RunOutcome* o : std::vector<const RunOutcome*>{&g.runs.front(), &flux})
+        rec.node.rows.push_back({fmt(b), fmt(Q), o == &flux ? "flux boundary (1D's)" : "Eq. 16 storage",
                                  fmt(o->p_before) + " / " + fmt(o->p_first), fmt(o->t_first), std::to_string(o->n_steps),
                                  fmt(o->pre_signed_last), fmt(converged)});
-          runs.rows.push_back({flux.label, fmt(flux.p_before) + " / " + fmt(flux.p_first), fmt(flux.t_first),
-                               std::to_string(flux.n_steps), fmt(flux.r_first), hm::core::name_of(flux.mode_first),
-                               fmt(flux.seconds)});
-        }
-      }
-      row.push_back(fmt(converged));
-      row.push_back(lattice_over_1d);
-      row.push_back((failed ? fmt(s.finest().p_b) : std::string("none")) + " (" + std::to_string(s.finest().n_r) + ")");
-      row.insert(row.end(), spacing_cells.begin(), spacing_cells.end());
-      row.insert(row.end(), {fmt(lim.p_b_slow), fmt(lim.p_b_fast), fmt(lim.p_b_jacketed), paper_statement(Q, lim.q_min)});
-      main.rows.push_back(row);
     }
   }
-  core::close_checked(lattice_out, root / "lattice.csv");
-  core::close_checked(oned_out, root / "fdm1d.csv");
-  core::close_checked(spacing_out, root / "fdm1d_lattice_spacing.csv");
-  core::close_checked(limits_out, root / "breakdown_limits.csv");
-  res.tables = {main, grid, node, runs};
-  res.metrics.push_back({.name = "max over b |1D p_b / p_b_fast - 1| at Q = " + fmt(p.Q.back()) + " (converged: Richardson)",
-                         .value = worst_fast, .reference = 0.0, .tolerance = 1e-3, .comparison = Comparison::at_most,
-                         .justification = "docs/breakdown.md section 6: the 1D model is within 0.12% of p_b_fast from "
-                                          "Q = 0.01 up once its grid resolves the wall layer (b), and its Q = 1 "
-                                          "Richardson value within 4e-6 (c); 1e-3 leaves the growing steps' time "
-                                          "error (~1e-5 here) and the finite rate's deficit (measured <= 1.2e-4 at "
-                                          "Q = 0.1) room"});
-  res.metrics.push_back({.name = "lowest observed order of the 1D grid studies whose coarsest level has dr <= layer/3 (" +
-                                 lowest_order_where + ")",
-                         .value = lowest_order, .reference = 2.0, .tolerance = 1.5, .comparison = Comparison::at_least,
-                         .justification = "the 1D scheme is second order in dr once dr resolves the wall layer "
-                                          "(docs/breakdown.md 6(c): 2.00-2.02), the layer being sqrt(t_b/S); 1.5 "
-                                          "allows the higher-order terms at dr = layer/3 (measured 1.94-2.00 in the "
-                                          "quick tier)"});
-  res.metrics.push_back(flag("every failing 1D wall fails in tension (the lattice beams' criterion)", every_1d_tensile,
-                             "docs/breakdown.md: the Coulomb stress of Eq. 11 is 0.30-0.36 C_u at each limit, far from "
-                             "failure"));
-  res.metrics.push_back({.name = "lattice N = " + std::to_string(p.N.back()) + " mean p_b / 1D converged p_b: lowest over (b, Q)",
-                         .value = lattice_low, .reference = 1.0, .tolerance = 0.0, .comparison = Comparison::at_least,
-                         .justification = "information: the lattice's wall row over-reads the hoop stress by ~1.2-1.4 "
-                                          "(docs/lattice.md) and one beam of the scattered strengths breaks first, so "
-                                          "it breaks below the continuum; its borehole node also differs (notes)",
-                         .gating = false});
-  res.metrics.push_back({.name = "lattice N = " + std::to_string(p.N.back()) + " mean p_b / 1D converged p_b: highest over (b, Q)",
-                         .value = lattice_high, .reference = 1.0, .tolerance = 1.0, .comparison = Comparison::at_most,
-                         .justification = "information (see the lowest)", .gating = false});
+  return cells;
+}
+
+// The metrics over every (b, Q).
+void add_fig18_summary_metrics(const Plan& p, const Fig18Record& rec, std::vector<Metric>& metrics) {
+  metrics.push_back({.name = "max over b |1D p_b / p_b_fast - 1| at Q = " + fmt(p.Q.back()) + " (converged: Richardson)",
+                     .value = rec.worst_fast, .reference = 0.0, .tolerance = 1e-3, .comparison = Comparison::at_most,
+                     .justification = "docs/breakdown.md section 6: the 1D model is within 0.12% of p_b_fast from "
+                                      "Q = 0.01 up once its grid resolves the wall layer (b), and its Q = 1 "
+                                      "Richardson value within 4e-6 (c); 1e-3 leaves the growing steps' time "
+                                      "error (~1e-5 here) and the finite rate's deficit (measured <= 1.2e-4 at "
+                                      "Q = 0.1) room"});
+  metrics.push_back({.name = "lowest observed order of the 1D grid studies whose coarsest level has dr <= layer/3 (" +
+                             rec.lowest_order_where + ")",
+                     .value = rec.lowest_order, .reference = 2.0, .tolerance = 1.5, .comparison = Comparison::at_least,
+                     .justification = "the 1D scheme is second order in dr once dr resolves the wall layer "
+                                      "(docs/breakdown.md 6(c): 2.00-2.02), the layer being sqrt(t_b/S); 1.5 "
+                                      "allows the higher-order terms at dr = layer/3 (measured 1.94-2.00 in the "
+                                      "quick tier)"});
+  metrics.push_back(flag("every failing 1D wall fails in tension (the lattice beams' criterion)", rec.every_1d_tensile,
+                         "docs/breakdown.md: the Coulomb stress of Eq. 11 is 0.30-0.36 C_u at each limit, far from "
+                         "failure"));
+  metrics.push_back({.name = "lattice N = " + std::to_string(p.N.back()) + " mean p_b / 1D converged p_b: lowest over (b, Q)",
+                     .value = rec.lattice_low, .reference = 1.0, .tolerance = 0.0, .comparison = Comparison::at_least,
+                     .justification = "information: the lattice's wall row over-reads the hoop stress by ~1.2-1.4 "
+                                      "(docs/lattice.md) and one beam of the scattered strengths breaks first, so "
+                                      "it breaks below the continuum; its borehole node also differs (notes)",
+                     .gating = false});
+  metrics.push_back({.name = "lattice N = " + std::to_string(p.N.back()) + " mean p_b / 1D converged p_b: highest over (b, Q)",
+                     .value = rec.lattice_high, .reference = 1.0, .tolerance = 1.0, .comparison = Comparison::at_most,
+                     .justification = "information (see the lowest)", .gating = false});
+}
+
+// The figure and the notes.
+void add_fig18_figure_and_notes(const Plan& p, const borehole_fracture::RunSource& source, BenchmarkResult& res) {
   res.figures.push_back({"fig18_breakdown_pressure.py", "fig18_breakdown_pressure.png",
                          "Breakdown pressure against Q (" + p.id + "): lattice first breaks per resolution (markers: "
                          "seeds), the converged 1D model (solid), the 1D model at the lattice's spacing (thin), "
@@ -450,6 +468,44 @@ BenchmarkResult run_fig18(const Plan& p, const BenchmarkContext& ctx) {
       "the lattice shows them, they come from what it adds (the discrete wall, the crack-tip factor, the "
       "strength scatter).");
   if (const std::string read = source.note(); !read.empty()) res.notes.push_back(read);
+}
+
+BenchmarkResult run_fig18(const Plan& p, const BenchmarkContext& ctx) {
+  BenchmarkResult res;
+  const fs::path root = ctx.data_dir / p.id;
+  fs::create_directories(root);
+  borehole_fracture::RunSource source(root, ctx.runs_dir, ctx.progress);
+  const RunCase base = sweep_base_case();
+  Fig18Record rec(p, root);
+  const std::vector<GridStudy> studies = fig18_grid_studies(p, base, ctx);
+  std::size_t next_study = 0;
+  for (double b : p.b) {
+    const RunCase b_case = lattice_case(base, b, p.Q.front(), p.N.front(), 1, false);
+    const an::DimensionlessParameters d_b = borehole_fracture::reference_parameters(b_case);
+    const an::BreakdownLimits lim = an::breakdown_limits(d_b);
+    rec.limits_csv.row({b, lim.q_min, lim.p_b_slow, lim.p_b_fast, lim.p_b_jacketed, d_b.tensile_strength});
+    add_q_min_metrics(d_b, lim, res.metrics);
+    for (double Q : p.Q) {
+      an::DimensionlessParameters d = d_b;
+      d.Q = Q;
+      const GridStudy& s = studies[next_study++];
+      const double converged = record_fig18_1d(p, d, lim, s, rec, res.metrics);
+      const Fig18LatticeCells cells = record_fig18_lattice(p, base, d, converged, source, rec, res.metrics);
+      std::vector<std::string> row = {fmt(b), fmt(Q), fmt(Q / lim.q_min)};
+      row.insert(row.end(), cells.per_n.begin(), cells.per_n.end());
+      row.push_back(fmt(converged));
+      row.push_back(cells.over_1d);
+      row.push_back((s.finest().failed ? fmt(s.finest().p_b) : std::string("none")) + " (" +
+                    std::to_string(s.finest().n_r) + ")");
+      row.insert(row.end(), cells.spacing.begin(), cells.spacing.end());
+      row.insert(row.end(), {fmt(lim.p_b_slow), fmt(lim.p_b_fast), fmt(lim.p_b_jacketed), paper_statement(Q, lim.q_min)});
+      rec.main.rows.push_back(row);
+    }
+  }
+  rec.close();
+  res.tables = {rec.main, rec.grid, rec.node, rec.runs};
+  add_fig18_summary_metrics(p, rec, res.metrics);
+  add_fig18_figure_and_notes(p, source, res);
   return res;
 }
 

@@ -47,6 +47,36 @@ const char* target_reason =
 
 // --- calibration --------------------------------------------------------------------------------
 
+// The calibration's E and nu at N = 1e4 (means over seeds; E also at the other densities), against the
+// targets and the documented constants, and the isotropy of the stiffness.
+void add_calibration_metrics(double e_default, double nu_default, double iso_default,
+                             const std::vector<std::pair<long long, double>>& e_by_density, double stored_nu,
+                             std::vector<Metric>& metrics) {
+  metrics.push_back({.name = "E, mean over seeds 1-3 at N = 1e4", .value = e_default, .reference = target_e,
+                     .tolerance = 0.02, .comparison = Comparison::rel_error,
+                     .justification = "the calibration's 2% on E (k_n is scaled for E = 1 on exactly these "
+                                      "lattices, so the check guards the stored constants)"});
+  for (auto [n, em] : e_by_density)
+    if (n != 10000)
+      metrics.push_back({.name = "E at another density, N = " + std::to_string(n) + " (constants from N = 1e4)",
+                         .value = em, .reference = target_e, .tolerance = 0.02, .comparison = Comparison::rel_error,
+                         .justification = "the calibration's 2% on E, on lattices it did not see; E is "
+                                          "spacing-independent for per-beam k_n up to a measured drift of "
+                                          "+0.6% (2.5e3) to -0.6% (1e5)"});
+  metrics.push_back({.name = "nu, mean over seeds 1-3 at N = 1e4, against the target 0.25", .value = nu_default,
+                     .reference = target_nu, .tolerance = 0.02, .comparison = Comparison::abs_error,
+                     .justification = "the calibration's 0.02 on nu (facet-scaled beams, calibrated to 0.25 on "
+                                      "these lattices)"});
+  metrics.push_back({.name = "nu, mean over seeds 1-3 at N = 1e4, against the documented value",
+                     .value = nu_default, .reference = stored_nu, .tolerance = 0.005,
+                     .comparison = Comparison::abs_error,
+                     .justification = "regression on calibrated_continuum() (2026-11-22): 3x the seed sd 1.5e-3"});
+  metrics.push_back({.name = "max |C66 - (C11-C12)/2| / ((C11-C12)/2), seeds 1-3 at N = 1e4", .value = iso_default,
+                     .tolerance = 0.03, .comparison = Comparison::at_most,
+                     .justification = "isotropy within the region mean's sampling error (~27%/sqrt(3500) per "
+                                      "entry) and the measured systematic ~-1.5% (docs/lattice.md)"});
+}
+
 BenchmarkResult calibration(const BenchmarkContext& ctx) {
   BenchmarkResult res;
   const l2::BeamParameters beams = l2::calibrated_beam_parameters();
@@ -102,29 +132,7 @@ BenchmarkResult calibration(const BenchmarkContext& ctx) {
   }
   res.tables.push_back(per_seed);
   res.tables.push_back(by_density);
-  res.metrics.push_back({.name = "E, mean over seeds 1-3 at N = 1e4", .value = e_default, .reference = target_e,
-                         .tolerance = 0.02, .comparison = Comparison::rel_error,
-                         .justification = "the calibration's 2% on E (k_n is scaled for E = 1 on exactly these "
-                                          "lattices, so the check guards the stored constants)"});
-  for (auto [n, em] : e_by_density)
-    if (n != 10000)
-      res.metrics.push_back({.name = "E at another density, N = " + std::to_string(n) + " (constants from N = 1e4)",
-                             .value = em, .reference = target_e, .tolerance = 0.02, .comparison = Comparison::rel_error,
-                             .justification = "the calibration's 2% on E, on lattices it did not see; E is "
-                                              "spacing-independent for per-beam k_n up to a measured drift of "
-                                              "+0.6% (2.5e3) to -0.6% (1e5)"});
-  res.metrics.push_back({.name = "nu, mean over seeds 1-3 at N = 1e4, against the target 0.25", .value = nu_default,
-                         .reference = target_nu, .tolerance = 0.02, .comparison = Comparison::abs_error,
-                         .justification = "the calibration's 0.02 on nu (facet-scaled beams, calibrated to 0.25 on "
-                                          "these lattices)"});
-  res.metrics.push_back({.name = "nu, mean over seeds 1-3 at N = 1e4, against the documented value",
-                         .value = nu_default, .reference = stored.poisson_ratio, .tolerance = 0.005,
-                         .comparison = Comparison::abs_error,
-                         .justification = "regression on calibrated_continuum() (2026-11-22): 3x the seed sd 1.5e-3"});
-  res.metrics.push_back({.name = "max |C66 - (C11-C12)/2| / ((C11-C12)/2), seeds 1-3 at N = 1e4", .value = iso_default,
-                         .tolerance = 0.03, .comparison = Comparison::at_most,
-                         .justification = "isotropy within the region mean's sampling error (~27%/sqrt(3500) per "
-                                          "entry) and the measured systematic ~-1.5% (docs/lattice.md)"});
+  add_calibration_metrics(e_default, nu_default, iso_default, e_by_density, stored.poisson_ratio, res.metrics);
   if (ctx.tier == Tier::paper) {
     const auto& first = by_density.rows.front();
     const auto& last = by_density.rows.back();
@@ -147,6 +155,32 @@ BenchmarkResult calibration(const BenchmarkContext& ctx) {
 Eigen::Matrix2d continuum_stress(const Eigen::Matrix2d& eps, double e, double nu) {
   const double lambda = e * nu / ((1 + nu) * (1 - 2 * nu)), mu = e / (2 * (1 + nu));
   return lambda * eps.trace() * Eigen::Matrix2d::Identity() + 2 * mu * eps;
+}
+
+// The interior particles within `region` of the centre, their area-weighted mean stress and the
+// particle-to-particle standard deviation (Voigt xx, yy, xy).
+struct CentralStress {
+  std::vector<int> particles;
+  Eigen::Vector3d mean, sd;
+};
+CentralStress central_stress(const l2::Lattice& lattice, const l2::DualGraph& dual, const l2::ParticleStress& stress,
+                             double region) {
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero(), plain = Eigen::Vector3d::Zero();
+  double area = 0;
+  std::vector<int> chosen;
+  for (int i = 0; i < lattice.n_particles(); ++i)
+    if (lattice.boundary[i] == l2::BoundaryTag::interior && lattice.points.col(i).norm() <= region) {
+      chosen.push_back(i);
+      mean += dual.particle_area[i] * stress.stress.col(i);
+      plain += stress.stress.col(i);
+      area += dual.particle_area[i];
+    }
+  mean /= area;
+  plain /= static_cast<double>(chosen.size());
+  Eigen::Vector3d sd = Eigen::Vector3d::Zero();
+  for (int i : chosen) sd += (stress.stress.col(i) - plain).cwiseAbs2();
+  sd = (sd / static_cast<double>(chosen.size())).cwiseSqrt();
+  return {chosen, mean, sd};
 }
 
 BenchmarkResult patch_test(const BenchmarkContext& ctx) {
@@ -172,22 +206,7 @@ BenchmarkResult patch_test(const BenchmarkContext& ctx) {
       lattice, dual, l2::compute_beam_forces(lattice, beams, mechanics.displacement()));
   const double solve_s = seconds_since(start);
 
-  const double region = 0.6;
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero(), plain = Eigen::Vector3d::Zero();
-  double area = 0;
-  std::vector<int> chosen;
-  for (int i = 0; i < lattice.n_particles(); ++i)
-    if (lattice.boundary[i] == l2::BoundaryTag::interior && lattice.points.col(i).norm() <= region) {
-      chosen.push_back(i);
-      mean += dual.particle_area[i] * stress.stress.col(i);
-      plain += stress.stress.col(i);
-      area += dual.particle_area[i];
-    }
-  mean /= area;
-  plain /= static_cast<double>(chosen.size());
-  Eigen::Vector3d sd = Eigen::Vector3d::Zero();
-  for (int i : chosen) sd += (stress.stress.col(i) - plain).cwiseAbs2();
-  sd = (sd / static_cast<double>(chosen.size())).cwiseSqrt();
+  const auto [chosen, mean, sd] = central_stress(lattice, dual, stress, 0.6);
 
   auto voigt = [](const Eigen::Matrix2d& s) { return Eigen::Vector3d(s(0, 0), s(1, 1), s(0, 1)); };
   const Eigen::Vector3d expected = voigt(continuum_stress(eps, cal.youngs_modulus, cal.poisson_ratio));

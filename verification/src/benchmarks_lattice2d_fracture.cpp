@@ -208,6 +208,35 @@ SneddonRun sneddon_case(const l2::Lattice& lattice, const l2::DualGraph& dual, d
   return run;
 }
 
+// One crack's metrics against Sneddon's w0 (`w0_s`, of its c_eff): the maximum and the fitted
+// aperture, the profile's ellipticity (h the mean beam length) and length.
+void add_sneddon_metrics(const SneddonRun& r, double w0_s, double h, std::vector<Metric>& metrics) {
+  const std::string b = " (c = " + fmt(r.c_nominal) + ", " + r.label + " outer boundary)";
+  // The free outer boundary is the paper's default ("mechanically free unless confinement is
+  // included") and gates; the fixed one is shown for the domain effect (see the note) and does not.
+  const bool gate = r.label == "free";
+  const std::string why = gate ? "10%: discretisation (c/h ~ 5-20 spacings, particles half a "
+                             "spacing off the faces) plus the finite domain (a few % for a free boundary)"
+                           : "shown for the domain effect: a fixed boundary at R = 1 stiffens the disk by "
+                             "~(c/R)^2-order; not the paper's setup, so not gating";
+  metrics.push_back({.name = "max aperture 2w / Sneddon 2w0" + b, .value = r.max_aperture / (2 * w0_s),
+                     .reference = 1.0, .tolerance = 0.10, .comparison = Comparison::rel_error,
+                     .justification = why, .gating = gate});
+  metrics.push_back({.name = "ellipse fit w0 / Sneddon w0" + b, .value = r.fit_w0 / w0_s, .reference = 1.0,
+                     .tolerance = 0.10, .comparison = Comparison::rel_error,
+                     .justification = "as the maximum aperture, but from all beams of the profile: " + why,
+                     .gating = gate});
+  metrics.push_back({.name = "profile ellipticity: RMS(w - fitted ellipse) / w0" + b, .value = r.rms_from_fit,
+                     .reference = 0.0, .tolerance = 0.4 * h / r.c_nominal, .comparison = Comparison::at_most,
+                     .justification = "the 'minor variations caused by the unstructured grid' of Fig. C2: per-beam "
+                                      "noise proportional to h/c (h = mean beam length; measured 0.26-0.30 h/c at "
+                                      "N = 1e4, c = 0.1 and 0.2), tolerance 0.4 h/c"});
+  metrics.push_back({.name = "profile shape: fitted ellipse half length / c_eff" + b, .value = r.fit_c / r.c_effective,
+                     .reference = 1.0, .tolerance = 0.10, .comparison = Comparison::rel_error,
+                     .justification = "an elliptic profile of the crack's own length; the tips are only known to "
+                                      "about half a spacing (h/2c <= 0.1 here)"});
+}
+
 BenchmarkResult sneddon(const BenchmarkContext& ctx) {
   BenchmarkResult res;
   const bool paper = ctx.tier == Tier::paper;
@@ -246,30 +275,7 @@ BenchmarkResult sneddon(const BenchmarkContext& ctx) {
     table.rows.push_back({fmt(r.c_nominal), r.label, std::to_string(r.n_crack_beams), fmt(r.c_effective), fmt(r.max_aperture / (2 * w0_s)),
                           fmt(r.fit_w0 / w0_s), fmt(r.fit_c / r.c_effective), fmt(r.rms_from_fit),
                           fmt(r.rms_from_sneddon), fmt(r.seconds)});
-    const std::string b = " (c = " + fmt(r.c_nominal) + ", " + r.label + " outer boundary)";
-    // The free outer boundary is the paper's default ("mechanically free unless confinement is
-    // included") and gates; the fixed one is shown for the domain effect (see the note) and does not.
-    const bool gate = r.label == "free";
-    const std::string why = gate ? "10%: discretisation (c/h ~ 5-20 spacings, particles half a "
-                                   "spacing off the faces) plus the finite domain (a few % for a free boundary)"
-                                 : "shown for the domain effect: a fixed boundary at R = 1 stiffens the disk by "
-                                   "~(c/R)^2-order; not the paper's setup, so not gating";
-    res.metrics.push_back({.name = "max aperture 2w / Sneddon 2w0" + b, .value = r.max_aperture / (2 * w0_s),
-                           .reference = 1.0, .tolerance = 0.10, .comparison = Comparison::rel_error,
-                           .justification = why, .gating = gate});
-    res.metrics.push_back({.name = "ellipse fit w0 / Sneddon w0" + b, .value = r.fit_w0 / w0_s, .reference = 1.0,
-                           .tolerance = 0.10, .comparison = Comparison::rel_error,
-                           .justification = "as the maximum aperture, but from all beams of the profile: " + why,
-                           .gating = gate});
-    res.metrics.push_back({.name = "profile ellipticity: RMS(w - fitted ellipse) / w0" + b, .value = r.rms_from_fit,
-                           .reference = 0.0, .tolerance = 0.4 * h / r.c_nominal, .comparison = Comparison::at_most,
-                           .justification = "the 'minor variations caused by the unstructured grid' of Fig. C2: per-beam "
-                                            "noise proportional to h/c (h = mean beam length; measured 0.26-0.30 h/c at "
-                                            "N = 1e4, c = 0.1 and 0.2), tolerance 0.4 h/c"});
-    res.metrics.push_back({.name = "profile shape: fitted ellipse half length / c_eff" + b, .value = r.fit_c / r.c_effective,
-                           .reference = 1.0, .tolerance = 0.10, .comparison = Comparison::rel_error,
-                           .justification = "an elliptic profile of the crack's own length; the tips are only known to "
-                                            "about half a spacing (h/2c <= 0.1 here)"});
+    add_sneddon_metrics(r, w0_s, h, res.metrics);
   }
   res.tables.push_back(table);
   res.metrics.push_back({.name = "E' = E/(1 - nu^2) measured on this disk's density (uniaxial stress) / calibrated E'",
@@ -307,6 +313,77 @@ BenchmarkResult sneddon(const BenchmarkContext& ctx) {
 
 // --- uniaxial tension ----------------------------------------------------------------------------
 
+// Grips: the rows held at a uniform u_y concentrate stress in the random lattice next to them (measured:
+// without grips the first breaks sit within 0.05 of the loaded rows). As in a laboratory specimen, beams
+// within 0.1 H of a loaded row get 10x strength, so that the failure is decided in the gauge section.
+void strengthen_grips(const l2::Lattice& lattice, double height, l2::BeamStrengths& strengths) {
+  for (int e = 0; e < lattice.n_beams(); ++e) {
+    const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
+    if (0.5 * std::abs(lattice.points(1, i) + lattice.points(1, j)) > 0.4 * height) {
+      strengths.tensile[e] *= 10;
+      strengths.compressive[e] *= 10;
+    }
+  }
+}
+
+// The crack as the cloud of the broken beams' midpoints: its x-span and the angle of its principal axis
+// to x in degrees.
+struct CrackCloud {
+  double x_span, angle_deg;
+};
+CrackCloud crack_cloud(const std::vector<l2::BreakEvent>& breaks) {
+  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+  double x_lo = 1e9, x_hi = -1e9;
+  for (const auto& b : breaks) mean += b.position, x_lo = std::min(x_lo, b.position.x()), x_hi = std::max(x_hi, b.position.x());
+  mean /= std::max<double>(1.0, static_cast<double>(breaks.size()));
+  Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
+  for (const auto& b : breaks) cov += (b.position - mean) * (b.position - mean).transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(cov);
+  const Eigen::Vector2d axis = eig.eigenvectors().col(1);
+  return {x_hi - x_lo, std::atan2(std::abs(axis.y()), std::abs(axis.x())) * 180 / std::numbers::pi};
+}
+
+// The specimen's peak against T_u, its separation, and the crack across it perpendicular to the load.
+void add_uniaxial_tension_metrics(double peak_ratio, double final_stiffness_ratio, double x_span_ratio, double angle_deg,
+                                  std::vector<Metric>& metrics) {
+  metrics.push_back({.name = "peak mean stress / T_u, at most the strongest beam's 1.05", .value = peak_ratio,
+                     .reference = 1.0, .tolerance = 1.05, .comparison = Comparison::at_most,
+                     .justification = "no beam is stronger than 1.05 T_u (uniform +-5%) outside the grips; stress "
+                                      "concentrations can only lower the peak below the mean stress's T_u"});
+  metrics.push_back({.name = "peak mean stress / T_u near 1 (issue's 'peak against T_u'; not met, see note)",
+                     .value = peak_ratio, .reference = 1.0, .tolerance = 0.15, .comparison = Comparison::rel_error,
+                     .justification = "what a lattice with elastically uniform particle stresses would give (+-5% "
+                                      "strengths); this lattice's particle-stress scatter (and the boundary cells' over-reading) lower it",
+                     .gating = false});
+  metrics.push_back({.name = "specimen separated: final secant stiffness (mean stress / strain) / E'",
+                     .value = final_stiffness_ratio, .tolerance = 0.02,
+                     .comparison = Comparison::at_most,
+                     .justification = "a crack across the specimen leaves at most stray ligaments: < 2% of the "
+                                      "initial stiffness (the run stops once the stress is < 2% of the peak, or at "
+                                      "20 T_u/E')"});
+  metrics.push_back({.name = "crack x-span / width", .value = x_span_ratio, .tolerance = 0.9,
+                     .comparison = Comparison::at_least,
+                     .justification = "a crack across the specimen reaches within a spacing of both sides"});
+  metrics.push_back({.name = "crack orientation: angle of the broken beams' principal axis to x (deg)",
+                     .value = angle_deg, .reference = 0.0, .tolerance = 20.0, .comparison = Comparison::at_most,
+                     .justification = "a tensile crack runs perpendicular to the load (y); a random lattice's crack "
+                                      "meanders by a few spacings, and branches widen the cloud of broken beams"});
+}
+
+// What the benchmark loads and what the lattice should give.
+std::string uniaxial_tension_note() {
+  return "The square is pulled by prescribed u_y = +-strain/2 on its top and bottom rows (u_x free except one pin), "
+      "strengths uniform within +-5% of T_u = 2e-4 (seed 1), crack-tip factor on (L_m = 3.13e-3). The load is "
+      "stepped by 0.05 T_u/E' with snapping to each break (fracture.hpp), so the peak is the exact largest mean "
+      "stress of the sequence. What the lattice should give: a beam breaks when its stress, the mean of its two "
+      "particles' virial stresses, reaches its own strength; in a random lattice under a uniform mean stress the "
+      "particle stresses scatter by ~25% (standard deviation; see the cylinder note), so the first break comes when the most "
+      "loaded weak beam reaches T_e, below T_u in mean stress (the free sides' boundary cells over-read the stress "
+      "along them, as in the cylinder benchmark); with the crack-tip factor > 1 at this "
+      "resolution (L ~ 1e-2 > 2 L_m) the first crack then runs unstably across, so the peak is the first-break "
+      "stress. Break log: lattice2d_uniaxial_tension_breaks.csv; VTK: lattice2d_uniaxial_tension_vtk/.";
+}
+
 BenchmarkResult uniaxial_tension(const BenchmarkContext& ctx) {
   BenchmarkResult res;
   const bool paper = ctx.tier == Tier::paper;
@@ -323,16 +400,7 @@ BenchmarkResult uniaxial_tension(const BenchmarkContext& ctx) {
   const l2::StrengthSpec strength_spec;  // Table 1 T_u, C_u, mu_i; uniform +-5% (docs/lattice.md)
   l2::BeamStrengths strengths = l2::draw_beam_strengths(strength_spec, lattice.n_beams());
   const double t_u = strength_spec.tensile_strength;
-  // Grips: the rows held at a uniform u_y concentrate stress in the random lattice next to them (measured:
-  // without grips the first breaks sit within 0.05 of the loaded rows). As in a laboratory specimen, beams
-  // within 0.1 H of a loaded row get 10x strength, so that the failure is decided in the gauge section.
-  for (int e = 0; e < lattice.n_beams(); ++e) {
-    const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
-    if (0.5 * std::abs(lattice.points(1, i) + lattice.points(1, j)) > 0.4 * spec.height) {
-      strengths.tensile[e] *= 10;
-      strengths.compressive[e] *= 10;
-    }
-  }
+  strengthen_grips(lattice, spec.height, strengths);
 
   // Reference strain 1: the load factor is the applied strain. The elastic slope gives E'.
   m.solve();
@@ -361,40 +429,11 @@ BenchmarkResult uniaxial_tension(const BenchmarkContext& ctx) {
   l2::write_break_log(ctx.data_dir / "lattice2d_uniaxial_tension_breaks.csv", result.breaks, "strain");
   write_snapshot(series, m, dual, result.steps.back().load, result.steps.back().load);
 
-  // The crack: broken beams' midpoints; its x-span and the orientation of their principal axis.
-  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
-  double x_lo = 1e9, x_hi = -1e9;
-  for (const auto& b : result.breaks) mean += b.position, x_lo = std::min(x_lo, b.position.x()), x_hi = std::max(x_hi, b.position.x());
-  mean /= std::max<double>(1.0, static_cast<double>(result.breaks.size()));
-  Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
-  for (const auto& b : result.breaks) cov += (b.position - mean) * (b.position - mean).transpose();
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(cov);
-  const Eigen::Vector2d axis = eig.eigenvectors().col(1);
-  const double angle_deg = std::atan2(std::abs(axis.y()), std::abs(axis.x())) * 180 / std::numbers::pi;
+  const auto [x_span, angle_deg] = crack_cloud(result.breaks);
   const double first_stress = result.breaks.empty() ? 0 : result.breaks.front().load * e_prime;
 
-  res.metrics.push_back({.name = "peak mean stress / T_u, at most the strongest beam's 1.05", .value = peak / t_u,
-                         .reference = 1.0, .tolerance = 1.05, .comparison = Comparison::at_most,
-                         .justification = "no beam is stronger than 1.05 T_u (uniform +-5%) outside the grips; stress "
-                                          "concentrations can only lower the peak below the mean stress's T_u"});
-  res.metrics.push_back({.name = "peak mean stress / T_u near 1 (issue's 'peak against T_u'; not met, see note)",
-                         .value = peak / t_u, .reference = 1.0, .tolerance = 0.15, .comparison = Comparison::rel_error,
-                         .justification = "what a lattice with elastically uniform particle stresses would give (+-5% "
-                                          "strengths); this lattice's particle-stress scatter (and the boundary cells' over-reading) lower it",
-                         .gating = false});
-  res.metrics.push_back({.name = "specimen separated: final secant stiffness (mean stress / strain) / E'",
-                         .value = last_strain > 0 ? last / last_strain / e_prime : 1.0, .tolerance = 0.02,
-                         .comparison = Comparison::at_most,
-                         .justification = "a crack across the specimen leaves at most stray ligaments: < 2% of the "
-                                          "initial stiffness (the run stops once the stress is < 2% of the peak, or at "
-                                          "20 T_u/E')"});
-  res.metrics.push_back({.name = "crack x-span / width", .value = (x_hi - x_lo) / spec.width, .tolerance = 0.9,
-                         .comparison = Comparison::at_least,
-                         .justification = "a crack across the specimen reaches within a spacing of both sides"});
-  res.metrics.push_back({.name = "crack orientation: angle of the broken beams' principal axis to x (deg)",
-                         .value = angle_deg, .reference = 0.0, .tolerance = 20.0, .comparison = Comparison::at_most,
-                         .justification = "a tensile crack runs perpendicular to the load (y); a random lattice's crack "
-                                          "meanders by a few spacings, and branches widen the cloud of broken beams"});
+  add_uniaxial_tension_metrics(peak / t_u, last_strain > 0 ? last / last_strain / e_prime : 1.0, x_span / spec.width,
+                               angle_deg, res.metrics);
   Table table{"Uniaxial tension of a square (N = " + std::to_string(lattice.n_particles()) + "), load = applied strain",
               {"E' (elastic slope)", "first break: strain", "first break: mean stress / T_u", "peak mean stress / T_u",
                "strain at peak", "beams broken", "load steps", "solves", "status", "seconds"},
@@ -404,18 +443,8 @@ BenchmarkResult uniaxial_tension(const BenchmarkContext& ctx) {
   res.tables.push_back(table);
   res.figures.push_back({"verify_lattice_uniaxial.py", "verify_lattice_uniaxial.png",
                          "Uniaxial tension: mean stress over T_u against the applied strain, and the broken beams."});
-  res.notes.push_back(
-      "The square is pulled by prescribed u_y = +-strain/2 on its top and bottom rows (u_x free except one pin), "
-      "strengths uniform within +-5% of T_u = 2e-4 (seed 1), crack-tip factor on (L_m = 3.13e-3). The load is "
-      "stepped by 0.05 T_u/E' with snapping to each break (fracture.hpp), so the peak is the exact largest mean "
-      "stress of the sequence. What the lattice should give: a beam breaks when its stress, the mean of its two "
-      "particles' virial stresses, reaches its own strength; in a random lattice under a uniform mean stress the "
-      "particle stresses scatter by ~25% (standard deviation; see the cylinder note), so the first break comes when the most "
-      "loaded weak beam reaches T_e, below T_u in mean stress (the free sides' boundary cells over-read the stress "
-      "along them, as in the cylinder benchmark); with the crack-tip factor > 1 at this "
-      "resolution (L ~ 1e-2 > 2 L_m) the first crack then runs unstably across, so the peak is the first-break "
-      "stress. Break log: lattice2d_uniaxial_tension_breaks.csv; VTK: lattice2d_uniaxial_tension_vtk/." +
-      (result.message.empty() ? std::string() : " Run status: " + result.message));
+  res.notes.push_back(uniaxial_tension_note() +
+                      (result.message.empty() ? std::string() : " Run status: " + result.message));
   core::close_checked(out, out_path);
   return res;
 }
@@ -507,6 +536,85 @@ BenchmarkResult sawtooth_uniaxial_tension(const BenchmarkContext& ctx) {
 
 // --- thick-walled cylinder: first break ----------------------------------------------------------
 
+// The wall beams' (both ends on the borehole wall) mean and largest sigma_1 over Lamé's wall hoop stress.
+std::pair<double, double> wall_stress_ratios(const l2::Lattice& lattice, const l2::BeamStress& intact, double hoop) {
+  double wall_sum = 0, wall_max = 0;
+  int n_wall = 0;
+  for (int e = 0; e < lattice.n_beams(); ++e)
+    if (lattice.beam_boundary[static_cast<std::size_t>(e)] == l2::BoundaryTag::inner)
+      wall_sum += intact.sigma_1[e], wall_max = std::max(wall_max, intact.sigma_1[e]), ++n_wall;
+  return {wall_sum / std::max(n_wall, 1) / hoop, wall_max / hoop};
+}
+
+// Where the first broken beam is: on the borehole wall (an end there), and the angles of the intact
+// state's sigma_1 at it and of the beam itself to the wall's tangent there, in degrees.
+struct FirstBreakGeometry {
+  bool on_wall;
+  double stress_angle, beam_angle;
+};
+FirstBreakGeometry first_break_geometry(const l2::Lattice& lattice, const l2::BeamStress& intact,
+                                        const l2::BreakEvent& first) {
+  const auto [i, j] = lattice.beams[static_cast<std::size_t>(first.beam)];
+  const bool on_wall = lattice.boundary[static_cast<std::size_t>(i)] == l2::BoundaryTag::inner ||
+                       lattice.boundary[static_cast<std::size_t>(j)] == l2::BoundaryTag::inner;
+  const Eigen::Vector2d tangent = Eigen::Vector2d(-first.position.y(), first.position.x()).normalized();
+  auto angle_to_tangent = [&](const Eigen::Vector2d& d) {
+    return std::acos(std::min(1.0, std::abs(d.normalized().dot(tangent)))) * 180 / std::numbers::pi;
+  };
+  return {on_wall, angle_to_tangent(major_direction(intact.stress.col(first.beam))),
+          angle_to_tangent(lattice.direction.col(first.beam))};
+}
+
+// The first break's metrics (one run, `tag` naming its strengths): below Lamé's p_crit, at the wall, tensile,
+// across the hoop stress.
+void add_first_break_metrics(const l2::BreakEvent& first, const std::string& tag, double p_crit, double p_shear,
+                             bool on_wall, double stress_angle, std::vector<Metric>& metrics) {
+  metrics.push_back({.name = "first-break pressure / Lamé p_crit, at most 1.05" + tag, .value = first.load / p_crit,
+                   .reference = 1.0, .tolerance = 1.05, .comparison = Comparison::at_most,
+                   .justification = "no beam is stronger than 1.05 T_u; the wall's stress concentrations can only "
+                                    "bring the first break below Lamé's p_crit"});
+  metrics.push_back({.name = "first-break pressure within 10% of Lamé p_crit (issue target; not met, see note)" + tag,
+                   .value = first.load / p_crit, .reference = 1.0, .tolerance = 0.10,
+                   .comparison = Comparison::rel_error,
+                   .justification = "the target; the wall particles' clipped cells over-read the hoop "
+                                    "stress (~1.4x on average, with scatter) though the wall strains like Lamé "
+                                    "(table and note); not reachable with per-particle stresses",
+                   .gating = false});
+  metrics.push_back({.name = "first break adjacent to the wall (1 = yes)" + tag, .value = on_wall ? 1.0 : 0.0,
+                   .reference = 1.0, .tolerance = 0.0, .comparison = Comparison::abs_error,
+                   .justification = "Lamé's hoop stress is largest at r = R_i and falls like 1/r^2"});
+  metrics.push_back({.name = "first break tensile (1 = yes)" + tag,
+                   .value = first.mode == l2::FailureMode::tensile ? 1.0 : 0.0, .reference = 1.0,
+                   .tolerance = 0.0, .comparison = Comparison::abs_error,
+                   .justification = "p_crit (tensile) = " + fmt(p_crit) + " < p (Eq. 11) = " + fmt(p_shear)});
+  metrics.push_back({.name = "sigma_1 direction of the first broken beam vs the tangent (deg)" + tag,
+                   .value = stress_angle, .reference = 0.0, .tolerance = 15.0, .comparison = Comparison::at_most,
+                   .justification = "sigma_1 = sigma_theta is tangential: the crack opening against it is radial; "
+                                    "15 deg allows the particle-stress scatter at the wall"});
+}
+
+// What the benchmark compares and why the issue's 10% is not met.
+std::string cylinder_note(double p_crit, double p_shear) {
+  return "Lamé (plane strain, free outer boundary R_o = 1): sigma_theta(R_i) = p (R_o^2 + R_i^2)/(R_o^2 - R_i^2), "
+      "sigma_r(R_i) = -p, so the tensile criterion sigma_1 = T_u gives p_crit = T_u (R_o^2 - R_i^2)/(R_o^2 + R_i^2) = " +
+      fmt(p_crit) + " (neither depends on E or nu). Eq. 11 would need p = " + fmt(p_shear) +
+      ", so the first break is tensile. The lattice judges the beam stress, the mean of its two particles' virial "
+      "stresses (dry: the effective stress is the total stress), through its principal sigma_1: for a wall beam "
+      "this is the hoop stress averaged over the wall particles' half-cells, a little below sigma_theta(R_i) (the "
+      "'wall beams' column). The +-5% heterogeneity lowers the first break to the weakest well-loaded wall beam "
+      "(compare the 'none' row). The crack-tip factor plays no part before the first break (no broken beam yet); "
+      "afterwards it multiplies the tip beams' stress by (L/2L_m)^(1/2) > 1 at this resolution. "
+      "Why the 10% is not met (docs/lattice.md, 'Why the wall over-reads'): the wall is not over-strained "
+      "(wall-beam strain / Lamé hoop strain 0.96 at N = 1e4, 0.99 at 1e5), but a wall particle's virial stress "
+      "counts its two wall beams' full forces over a half cell clipped at the wall; in the wall's nearly deviatoric "
+      "state (sigma_theta ~ -sigma_r) the random boundary cell's fabric reads ~1.4x ('mean' column; 1.5x already "
+      "for the exact Lamé displacement imposed without a solve). Facet-scaled beams make a straight regular edge "
+      "exact, not the random wall. The wall's max/mean ~1.3 (particle-stress scatter) costs as much again, and "
+      "the second row's scatter alone caps the first break at ~0.94 p_crit (N = 1e4) and ~0.7 (N = 1e5) whatever "
+      "is done at the wall: reaching 10% needs averaging the stress over a fixed length, a material length the "
+      "paper does not have.";
+}
+
 BenchmarkResult cylinder_first_break(const BenchmarkContext& ctx) {
   BenchmarkResult res;
   const bool paper = ctx.tier == Tier::paper;
@@ -543,13 +651,7 @@ BenchmarkResult cylinder_first_break(const BenchmarkContext& ctx) {
     l2::BeamMechanics m(lattice, beam_parameters(), bc);
     m.solve();
     const l2::BeamStress intact = l2::current_beam_stress(m, dual);
-    // Wall beams (both ends on the borehole wall): their stress against Lamé's wall hoop stress.
-    double wall_sum = 0, wall_max = 0;
-    int n_wall = 0;
-    for (int e = 0; e < lattice.n_beams(); ++e)
-      if (lattice.beam_boundary[static_cast<std::size_t>(e)] == l2::BoundaryTag::inner)
-        wall_sum += intact.sigma_1[e], wall_max = std::max(wall_max, intact.sigma_1[e]), ++n_wall;
-    const double wall_ratio = wall_sum / std::max(n_wall, 1) / hoop;
+    const auto [wall_ratio, wall_max_ratio] = wall_stress_ratios(lattice, intact, hoop);
 
     l2::LoadSteppingOptions options;
     options.load_increment = 0.05 * p_crit;
@@ -568,40 +670,11 @@ BenchmarkResult cylinder_first_break(const BenchmarkContext& ctx) {
       continue;
     }
     const l2::BreakEvent& first = result.breaks.front();
-    const auto [i, j] = lattice.beams[static_cast<std::size_t>(first.beam)];
-    const bool on_wall = lattice.boundary[static_cast<std::size_t>(i)] == l2::BoundaryTag::inner ||
-                         lattice.boundary[static_cast<std::size_t>(j)] == l2::BoundaryTag::inner;
-    const Eigen::Vector2d tangent = Eigen::Vector2d(-first.position.y(), first.position.x()).normalized();
-    auto angle_to_tangent = [&](const Eigen::Vector2d& d) {
-      return std::acos(std::min(1.0, std::abs(d.normalized().dot(tangent)))) * 180 / std::numbers::pi;
-    };
-    const double stress_angle = angle_to_tangent(major_direction(intact.stress.col(first.beam)));
-    const double beam_angle = angle_to_tangent(lattice.direction.col(first.beam));
+    const auto [on_wall, stress_angle, beam_angle] = first_break_geometry(lattice, intact, first);
     table.rows.push_back({name, fmt(first.load / p_crit), core::name_of(first.mode), fmt(first.position.norm()),
-                          on_wall ? "yes" : "no", fmt(stress_angle), fmt(beam_angle), fmt(wall_ratio), fmt(wall_max / hoop), fmt(result.seconds)});
+                          on_wall ? "yes" : "no", fmt(stress_angle), fmt(beam_angle), fmt(wall_ratio), fmt(wall_max_ratio), fmt(result.seconds)});
     const std::string tag = " (strengths " + name + ")";
-    res.metrics.push_back({.name = "first-break pressure / Lamé p_crit, at most 1.05" + tag, .value = first.load / p_crit,
-                           .reference = 1.0, .tolerance = 1.05, .comparison = Comparison::at_most,
-                           .justification = "no beam is stronger than 1.05 T_u; the wall's stress concentrations can only "
-                                            "bring the first break below Lamé's p_crit"});
-    res.metrics.push_back({.name = "first-break pressure within 10% of Lamé p_crit (issue target; not met, see note)" + tag,
-                           .value = first.load / p_crit, .reference = 1.0, .tolerance = 0.10,
-                           .comparison = Comparison::rel_error,
-                           .justification = "the target; the wall particles' clipped cells over-read the hoop "
-                                            "stress (~1.4x on average, with scatter) though the wall strains like Lamé "
-                                            "(table and note); not reachable with per-particle stresses",
-                           .gating = false});
-    res.metrics.push_back({.name = "first break adjacent to the wall (1 = yes)" + tag, .value = on_wall ? 1.0 : 0.0,
-                           .reference = 1.0, .tolerance = 0.0, .comparison = Comparison::abs_error,
-                           .justification = "Lamé's hoop stress is largest at r = R_i and falls like 1/r^2"});
-    res.metrics.push_back({.name = "first break tensile (1 = yes)" + tag,
-                           .value = first.mode == l2::FailureMode::tensile ? 1.0 : 0.0, .reference = 1.0,
-                           .tolerance = 0.0, .comparison = Comparison::abs_error,
-                           .justification = "p_crit (tensile) = " + fmt(p_crit) + " < p (Eq. 11) = " + fmt(p_shear)});
-    res.metrics.push_back({.name = "sigma_1 direction of the first broken beam vs the tangent (deg)" + tag,
-                           .value = stress_angle, .reference = 0.0, .tolerance = 15.0, .comparison = Comparison::at_most,
-                           .justification = "sigma_1 = sigma_theta is tangential: the crack opening against it is radial; "
-                                            "15 deg allows the particle-stress scatter at the wall"});
+    add_first_break_metrics(first, tag, p_crit, p_shear, on_wall, stress_angle, res.metrics);
     if (main_run) {
       double r_max = 0;
       for (const auto& b : result.breaks) r_max = std::max(r_max, b.position.norm());
@@ -615,25 +688,7 @@ BenchmarkResult cylinder_first_break(const BenchmarkContext& ctx) {
   res.figures.push_back({"verify_lattice_cylinder.py", "verify_lattice_cylinder.png",
                          "Cylinder under internal pressure (+-5% strengths): broken beams around the borehole and the "
                          "pressure of each break over Lamé's p_crit."});
-  res.notes.push_back(
-      "Lamé (plane strain, free outer boundary R_o = 1): sigma_theta(R_i) = p (R_o^2 + R_i^2)/(R_o^2 - R_i^2), "
-      "sigma_r(R_i) = -p, so the tensile criterion sigma_1 = T_u gives p_crit = T_u (R_o^2 - R_i^2)/(R_o^2 + R_i^2) = " +
-      fmt(p_crit) + " (neither depends on E or nu). Eq. 11 would need p = " + fmt(p_shear) +
-      ", so the first break is tensile. The lattice judges the beam stress, the mean of its two particles' virial "
-      "stresses (dry: the effective stress is the total stress), through its principal sigma_1: for a wall beam "
-      "this is the hoop stress averaged over the wall particles' half-cells, a little below sigma_theta(R_i) (the "
-      "'wall beams' column). The +-5% heterogeneity lowers the first break to the weakest well-loaded wall beam "
-      "(compare the 'none' row). The crack-tip factor plays no part before the first break (no broken beam yet); "
-      "afterwards it multiplies the tip beams' stress by (L/2L_m)^(1/2) > 1 at this resolution. "
-      "Why the 10% is not met (docs/lattice.md, 'Why the wall over-reads'): the wall is not over-strained "
-      "(wall-beam strain / Lamé hoop strain 0.96 at N = 1e4, 0.99 at 1e5), but a wall particle's virial stress "
-      "counts its two wall beams' full forces over a half cell clipped at the wall; in the wall's nearly deviatoric "
-      "state (sigma_theta ~ -sigma_r) the random boundary cell's fabric reads ~1.4x ('mean' column; 1.5x already "
-      "for the exact Lamé displacement imposed without a solve). Facet-scaled beams make a straight regular edge "
-      "exact, not the random wall. The wall's max/mean ~1.3 (particle-stress scatter) costs as much again, and "
-      "the second row's scatter alone caps the first break at ~0.94 p_crit (N = 1e4) and ~0.7 (N = 1e5) whatever "
-      "is done at the wall: reaching 10% needs averaging the stress over a fixed length, a material length the "
-      "paper does not have.");
+  res.notes.push_back(cylinder_note(p_crit, p_shear));
   return res;
 }
 

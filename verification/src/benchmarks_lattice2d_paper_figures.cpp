@@ -291,6 +291,29 @@ ShellRatio shell_ratio(const std::vector<double>& u, const std::vector<double>& 
   return r;
 }
 
+// One resolution's row of the refinement table: its seeds, and the means and deviations over them of the
+// last snapshot's counts, extent, fracture pressures and p_h, beside the paper's count.
+std::vector<std::string> resolution_row(const std::vector<const RunOutcome*>& group) {
+  const auto last = [&](auto of) {
+    std::vector<double> v;
+    for (const RunOutcome* o : group)
+      if (o->ok && !o->snaps.empty()) v.push_back(of(o->snaps.back()));
+    return mean_sd(v);
+  };
+  std::string seeds;
+  for (const RunOutcome* o : group) seeds += (seeds.empty() ? "" : ", ") + std::to_string(o->seed);
+  const RunOutcome& first = *group.front();
+  return {std::to_string(first.n_particles), seeds, first.snaps.empty() ? "-" : fmt(first.snaps.back().t),
+         last([](const Snapshot& s) { return double(s.stats.n_broken); }),
+         last([](const Snapshot& s) { return double(s.stats.n_arms); }),
+         last([](const Snapshot& s) { return double(s.stats.n_radial); }),
+         last([](const Snapshot& s) { return double(s.stats.n_radial_reaching_outer); }),
+         last([](const Snapshot& s) { return s.stats.max_radial_extent; }),
+         last([](const Snapshot& s) { return s.fp.p_min; }), last([](const Snapshot& s) { return s.fp.p_max; }),
+         last([](const Snapshot& s) { return s.p_h; }),
+         paper_reading("fig19", first.b, first.n_particles).fractures_text()};
+}
+
 BenchmarkResult run_refinement(const BenchmarkContext& ctx) {
   BenchmarkResult res;
   const std::string subdir = std::string("fig19") + (ctx.tier == Tier::quick ? "_quick" : "_paper");
@@ -324,24 +347,8 @@ BenchmarkResult run_refinement(const BenchmarkContext& ctx) {
   }
   const RunOutcome& finest = *by_resolution.back().front();
   for (const auto& group : by_resolution) {
-    const auto last = [&](auto of) {
-      std::vector<double> v;
-      for (const RunOutcome* o : group)
-        if (o->ok && !o->snaps.empty()) v.push_back(of(o->snaps.back()));
-      return mean_sd(v);
-    };
-    std::string seeds;
-    for (const RunOutcome* o : group) seeds += (seeds.empty() ? "" : ", ") + std::to_string(o->seed);
     const RunOutcome& first = *group.front();
-    table.rows.push_back({std::to_string(first.n_particles), seeds, first.snaps.empty() ? "-" : fmt(first.snaps.back().t),
-                          last([](const Snapshot& s) { return double(s.stats.n_broken); }),
-                          last([](const Snapshot& s) { return double(s.stats.n_arms); }),
-                          last([](const Snapshot& s) { return double(s.stats.n_radial); }),
-                          last([](const Snapshot& s) { return double(s.stats.n_radial_reaching_outer); }),
-                          last([](const Snapshot& s) { return s.stats.max_radial_extent; }),
-                          last([](const Snapshot& s) { return s.fp.p_min; }), last([](const Snapshot& s) { return s.fp.p_max; }),
-                          last([](const Snapshot& s) { return s.p_h; }),
-                          paper_reading("fig19", first.b, first.n_particles).fractures_text()});
+    table.rows.push_back(resolution_row(group));
     if (first.snaps.empty() || finest.snaps.empty()) continue;
     const ShellRatio r = shell_ratio(first.snaps.back().u_r, finest.snaps.back().u_r);
     displacement.rows.push_back({std::to_string(first.n_particles), fmt(first.snaps.back().t), fmt(r.mean),

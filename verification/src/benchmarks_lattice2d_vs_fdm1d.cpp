@@ -420,6 +420,42 @@ BenchmarkResult vs_fdm1d_quick(const BenchmarkContext& ctx) {
 
 // --- paper tier: b = 0.2, 0.5, 0.8 at N = 1e4 to t* = 0.1, and at N = 3e4 to t* = 0.025 ------------
 
+// One paper-tier run's metrics: it completed, its balance, its profiles and p_h against the 1D model at
+// the compared times (gated at 5%), and against the 1D model with the paper's nu (shown).
+void add_paper_run_metrics(const Outcome& o, std::vector<Metric>& metrics) {
+  const std::string why = "the lattice's spatial discretisation error against 1D (same time steps): radially averaged "
+                          "u_r and p within 5% over [R_i, 1] at each compared time";
+  const std::string why_ph = "the lattice's discretisation error in the borehole pressure history: within 5% over "
+                             "t* >= " + fmt(kWindow) +
+                             " (before it the wall boundary layer sqrt(t/S) is thinner than ~1.2 mean beam lengths "
+                             "at N = 1e4 for b = 0.8)";
+  const std::string tag = run_label(o.setting.b, o.setting.n_particles);
+  metrics.push_back(completed_metric(o));
+  metrics.push_back(balance_metric(o));
+  for (const auto& pe : o.profiles) {
+    metrics.push_back(
+        at_most(tag + ", t* = " + fmt(pe.t) + ": max |u_r/u_r,1D - 1| over shells", pe.u_local, 0.05, true, why));
+    metrics.push_back(
+        at_most(tag + ", t* = " + fmt(pe.t) + ": max |p - p_1D| / p_h,1D over shells", pe.p, 0.05, true, why));
+  }
+  metrics.push_back(
+      at_most(tag + ": max |p_h/p_h,1D - 1| for t* >= " + fmt(kWindow), o.p_h_window, 0.05, true, why_ph));
+  metrics.push_back(at_most(tag + ": max |p_h/p_h,1D - 1| for t* >= " + fmt(0.5 * kWindow), o.p_h_half_window,
+                            0.05, false,
+                            "information: the window's edge; at N = 1e4, b = 0.8 the lattice is still 5% high "
+                            "at t* = 6e-4, where sqrt(t/S) ~ 1 lattice spacing"));
+  double u25 = 0.0, p25 = 0.0;
+  for (const auto& pe : o.profiles) u25 = std::max(u25, pe.u_local25), p25 = std::max(p25, pe.p25);
+  metrics.push_back(at_most(tag + ": against fdm1d with the paper's nu = 0.25, max |u_r/u_r,1D - 1| (all times)",
+                            u25, 0.05, false,
+                            "information: the paper compares with nu = 0.25; the lattice's calibrated nu is " +
+                                fmt(lt::calibrated_continuum().poisson_ratio) +
+                                " (the same column when they agree; 0.2236 with uniform beams moves the 1D u_r "
+                                "by ~2.5% of max u_r)"));
+  metrics.push_back(at_most(tag + ": against fdm1d with nu = 0.25, max |p - p_1D| / p_h,1D (all times)", p25,
+                            0.05, false, "information: as above; nu moves the 1D p by < 1% of p_h"));
+}
+
 BenchmarkResult vs_fdm1d_paper(const BenchmarkContext& ctx) {
   BenchmarkResult res;
   const fs::path root = ctx.data_dir / "vs_fdm1d_paper";
@@ -443,47 +479,14 @@ BenchmarkResult vs_fdm1d_paper(const BenchmarkContext& ctx) {
     fine.push_back(compare(v, root, *files.ph, *files.p2d, nullptr, profiles));
   }
   files.close();
-  const std::string why = "the lattice's spatial discretisation error against 1D (same time steps): radially averaged "
-                          "u_r and p within 5% over [R_i, 1] at each compared time";
-  const std::string why_ph = "the lattice's discretisation error in the borehole pressure history: within 5% over "
-                             "t* >= " + fmt(kWindow) +
-                             " (before it the wall boundary layer sqrt(t/S) is thinner than ~1.2 mean beam lengths "
-                             "at N = 1e4 for b = 0.8)";
-  auto add_metrics = [&](const Outcome& o) {
-    const std::string tag = run_label(o.setting.b, o.setting.n_particles);
-    res.metrics.push_back(completed_metric(o));
-    res.metrics.push_back(balance_metric(o));
-    for (const auto& pe : o.profiles) {
-      res.metrics.push_back(
-          at_most(tag + ", t* = " + fmt(pe.t) + ": max |u_r/u_r,1D - 1| over shells", pe.u_local, 0.05, true, why));
-      res.metrics.push_back(
-          at_most(tag + ", t* = " + fmt(pe.t) + ": max |p - p_1D| / p_h,1D over shells", pe.p, 0.05, true, why));
-    }
-    res.metrics.push_back(
-        at_most(tag + ": max |p_h/p_h,1D - 1| for t* >= " + fmt(kWindow), o.p_h_window, 0.05, true, why_ph));
-    res.metrics.push_back(at_most(tag + ": max |p_h/p_h,1D - 1| for t* >= " + fmt(0.5 * kWindow), o.p_h_half_window,
-                                  0.05, false,
-                                  "information: the window's edge; at N = 1e4, b = 0.8 the lattice is still 5% high "
-                                  "at t* = 6e-4, where sqrt(t/S) ~ 1 lattice spacing"));
-    double u25 = 0.0, p25 = 0.0;
-    for (const auto& pe : o.profiles) u25 = std::max(u25, pe.u_local25), p25 = std::max(p25, pe.p25);
-    res.metrics.push_back(at_most(tag + ": against fdm1d with the paper's nu = 0.25, max |u_r/u_r,1D - 1| (all times)",
-                                  u25, 0.05, false,
-                                  "information: the paper compares with nu = 0.25; the lattice's calibrated nu is " +
-                                      fmt(lt::calibrated_continuum().poisson_ratio) +
-                                      " (the same column when they agree; 0.2236 with uniform beams moves the 1D u_r "
-                                      "by ~2.5% of max u_r)"));
-    res.metrics.push_back(at_most(tag + ": against fdm1d with nu = 0.25, max |p - p_1D| / p_h,1D (all times)", p25,
-                                  0.05, false, "information: as above; nu moves the 1D p by < 1% of p_h"));
-  };
   for (std::size_t k = 0; k < bs.size(); ++k) {
     add_rows(coarse[k], runs, &one_d);
-    add_metrics(coarse[k]);
+    add_paper_run_metrics(coarse[k], res.metrics);
   }
   for (std::size_t k = 0; k < bs.size(); ++k) {
     const Outcome &c = coarse[k], &f = fine[k];
     add_rows(f, runs, nullptr);
-    add_metrics(f);
+    add_paper_run_metrics(f, res.metrics);
     const std::string b = "b = " + fmt(bs[k]);
     res.metrics.push_back({.name = b + ": |p_h/p_h,1D - 1| at t* = " + fmt(kEarly) + ", N = 1e4 over N = 3e4",
                            .value = c.p_h_early / f.p_h_early, .reference = 1.0, .tolerance = 1.0,

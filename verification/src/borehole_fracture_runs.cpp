@@ -176,12 +176,12 @@ fdm1d::Fdm1dResult write_reference(const RunCase& c, const fs::path& root) {
   return ref;
 }
 
-RunOutcome read_run(const RunCase& c, const std::string& label, const fs::path& dir, const fdm1d::Fdm1dResult& ref) {
-  RunOutcome o = describe(c, label);
-  o.ok = true;
-  o.seconds = o.mechanics = o.fracture = o.geometry = o.flow = kNaN;  // not in the files
-  o.n_halvings = -1;
-  const CsvColumns series(cases::run_file_path(dir, cases::RunFileId::series));
+namespace {
+
+// The series: steps, passes, the balance, the count that must never fall, and p_h against the 1D
+// model before the first break (the largest deviation after the window, and the last); returns the
+// last deviation and its time.
+std::pair<double, double> read_series(const CsvColumns& series, const fdm1d::Fdm1dResult& ref, RunOutcome& o) {
   const auto &t = series["t"], &p_h = series["p_h"], &n_broken = series["n_broken"];
   o.n_steps = static_cast<int>(series.n_rows()) - 1;  // a row per accepted step and one at t = 0
   double passes = 0.0;
@@ -201,25 +201,36 @@ RunOutcome read_run(const RunCase& c, const std::string& label, const fs::path& 
     if (t[k] >= kWindow * (1 - 1e-12) && (std::isnan(o.pre_max) || std::abs(ratio) > o.pre_max))
       o.pre_max = std::abs(ratio), o.pre_max_t = t[k];
   }
+  return {pre_last_ratio, pre_last_t};
+}
+
+// breakdown.csv and, if a beam broke, the first break from breaks.csv (and the beams logged twice);
+// `pre_last` is read_series's last deviation before it, and its time.
+void read_first_break(const RunCase& c, const fs::path& dir, std::pair<double, double> pre_last, RunOutcome& o) {
   const CsvColumns breakdown(cases::run_file_path(dir, cases::RunFileId::breakdown));
   o.t_first = breakdown["t_first_break"].at(0);
   o.p_before = breakdown["p_h_before"].at(0);
   o.p_first = breakdown["p_h_first_break"].at(0);
   o.t_peak = breakdown["t_peak"].at(0);
   o.p_peak = breakdown["p_h_peak"].at(0);
-  if (!std::isnan(o.t_first)) {
-    const std::vector<lt::BreakEvent> log = lt::read_break_log(cases::run_file_path(dir, cases::RunFileId::breaks));
-    if (log.empty()) throw std::runtime_error(cases::run_file_path(dir, cases::RunFileId::breaks).string() + ": no break, breakdown.csv has one");
-    o.r_first = log.front().position.norm();
-    o.mode_first = log.front().mode;
-    o.length_first = lt::generate_lattice(c.lattice).length[static_cast<std::size_t>(log.front().beam)];
-    std::vector<int> beams;
-    for (const auto& e : log) beams.push_back(e.beam);
-    std::sort(beams.begin(), beams.end());
-    o.n_healed = static_cast<int>(beams.size() - static_cast<std::size_t>(std::unique(beams.begin(), beams.end()) - beams.begin()));
-    o.pre_last = std::abs(pre_last_ratio), o.pre_last_t = pre_last_t, o.pre_signed_last = pre_last_ratio;
-  }
-  // The output times: fracture statistics, p_h, and u_r against 1D while still unbroken.
+  if (std::isnan(o.t_first)) return;
+  const fs::path breaks_file = cases::run_file_path(dir, cases::RunFileId::breaks);
+  const std::vector<lt::BreakEvent> log = lt::read_break_log(breaks_file);
+  if (log.empty()) throw std::runtime_error(breaks_file.string() + ": no break, breakdown.csv has one");
+  o.r_first = log.front().position.norm();
+  o.mode_first = log.front().mode;
+  o.length_first = lt::generate_lattice(c.lattice).length[static_cast<std::size_t>(log.front().beam)];
+  std::vector<int> beams;
+  for (const auto& e : log) beams.push_back(e.beam);
+  std::sort(beams.begin(), beams.end());
+  o.n_healed = static_cast<int>(beams.size() - static_cast<std::size_t>(std::unique(beams.begin(), beams.end()) - beams.begin()));
+  o.pre_last = std::abs(pre_last.first), o.pre_last_t = pre_last.second, o.pre_signed_last = pre_last.first;
+}
+
+// The output times: fracture statistics, p_h (from the series), and u_r against 1D while still unbroken.
+void read_snapshots(const RunCase& c, const fs::path& dir, const CsvColumns& series, const fdm1d::Fdm1dResult& ref,
+                    RunOutcome& o) {
+  const auto &t = series["t"], &p_h = series["p_h"];
   const CsvColumns summary(cases::run_file_path(dir, cases::RunFileId::fracture_summary)), radial(cases::run_file_path(dir, cases::RunFileId::radial));
   const std::vector<double> edges = recorder_shell_edges(c);
   for (std::size_t k = 0; k < summary.n_rows(); ++k) {
@@ -245,7 +256,12 @@ RunOutcome read_run(const RunCase& c, const std::string& label, const fs::path& 
     if (snap.stats.n_broken == 0) snap.u_pre = u.max_error;
     o.snaps.push_back(snap);
   }
-  // Where the sizable secondary fractures are (fractures.csv): touching the outer boundary, or inside.
+}
+
+// The sizable secondary fractures at each output time, at the outer boundary or inside (fractures.csv),
+// and the pressure in the fractures (fracture_pressure.csv; a folder written before the recorder wrote it
+// has none, and its metrics stay out of the report).
+void read_fracture_tables(const fs::path& dir, RunOutcome& o) {
   if (fs::exists(cases::run_file_path(dir, cases::RunFileId::fractures))) {
     const CsvColumns fractures(cases::run_file_path(dir, cases::RunFileId::fractures));
     const double sizable = lt::FractureStatisticsOptions{}.sizable_extent;
@@ -255,9 +271,7 @@ RunOutcome read_run(const RunCase& c, const std::string& label, const fs::path& 
         if (snap.t == fractures["t"][k]) ++(fractures["reaches_outer"][k] != 0.0 ? snap.secondary_at_outer : snap.secondary_inside);
     }
   }
-  // The pressure in the fractures at the same output times (RunRecorder's fracture_pressure.csv; a
-  // folder written before the recorder wrote it has none, and its metrics stay out of the report).
-  if (!fs::exists(cases::run_file_path(dir, cases::RunFileId::fracture_pressure))) return o;
+  if (!fs::exists(cases::run_file_path(dir, cases::RunFileId::fracture_pressure))) return;
   const CsvColumns pressure(cases::run_file_path(dir, cases::RunFileId::fracture_pressure));
   for (Snapshot& snap : o.snaps)
     for (std::size_t k = 0; k < pressure.n_rows(); ++k) {
@@ -267,6 +281,19 @@ RunOutcome read_run(const RunCase& c, const std::string& label, const fs::path& 
                  pressure["negative_area_fraction"][k], pressure["p_min"][k], pressure["p_max"][k],
                  pressure["borehole_backflow"][k], pressure["outer_inflow"][k], pressure["mouth_inflow"][k]};
     }
+}
+
+}  // namespace
+
+RunOutcome read_run(const RunCase& c, const std::string& label, const fs::path& dir, const fdm1d::Fdm1dResult& ref) {
+  RunOutcome o = describe(c, label);
+  o.ok = true;
+  o.seconds = o.mechanics = o.fracture = o.geometry = o.flow = kNaN;  // not in the files
+  o.n_halvings = -1;
+  const CsvColumns series(cases::run_file_path(dir, cases::RunFileId::series));
+  read_first_break(c, dir, read_series(series, ref, o), o);
+  read_snapshots(c, dir, series, ref, o);
+  read_fracture_tables(dir, o);
   return o;
 }
 
