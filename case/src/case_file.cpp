@@ -280,7 +280,7 @@ CasePhysics read_physics(CaseTable& root) {
     PhysicsSi si;
     physics_si_keys().read(root, si);
     CaseTable t = root.table("physics_si");
-    located(t, "", [&] { out.parameters = analytic::to_dimensionless(si.p, si.vol_strain); });
+    located(t, [&] { out.parameters = analytic::to_dimensionless(si.p, si.vol_strain); });
     out.physical = si.p;
     out.scales = analytic::scales_of(si.p);
   } else {

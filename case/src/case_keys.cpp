@@ -18,13 +18,12 @@ std::string toml_reals(const std::vector<double>& values) {
   return s + "]";
 }
 
-void located(CaseTable& table, const std::string& prefix, const std::function<void()>& read) {
+void located(CaseTable& table, const std::function<void()>& read) {
   try {
     read();
   } catch (const InputError& e) {
-    std::string what = e.what();
+    const std::string what = e.what();
     if (what.rfind(table.file(), 0) == 0) throw;  // already located
-    if (!prefix.empty() && what.rfind(prefix, 0) == 0) what = what.substr(prefix.size());
     table.fail(what);
   }
 }

@@ -1,7 +1,6 @@
 #include "hm/case/fdm1d_case.hpp"
 
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <utility>
 
@@ -78,13 +77,13 @@ Fdm1dCase read_fdm1d_case(const std::filesystem::path& file, const std::vector<s
 
   try {
     c.numerics.validate(c.physics.parameters.R_i);
+  } catch (const FieldError& e) {
+    // Fdm1dNumerics names its fields; the case file has two of them in [output] under other keys.
+    const auto output_key = e.field() == "output_times" ? "times" : e.field() == "probe_radii" ? "probes" : "";
+    if (*output_key) root.table("output").fail(e.message_as(output_key));
+    root.table("numerics").fail(e.what());
   } catch (const InputError& e) {
-    // Fdm1dNumerics names its fields; say it with the case file's table and key names.
-    std::string what = e.what();
-    const bool is_output = what.rfind("output_times", 0) == 0 || what.rfind("probe_radii", 0) == 0;
-    for (auto [field, key] : {std::pair{"output_times", "times"}, std::pair{"probe_radii", "probes"}})
-      for (std::size_t at; (at = what.find(field)) != std::string::npos;) what.replace(at, std::strlen(field), key);
-    root.table(is_output ? "output" : "numerics").fail(what);
+    root.table("numerics").fail(e.what());
   }
   // What an empty or truncated file lacks, once every given value has been checked.
   if (!root.has("model")) root.fail("model is missing, allowed: \"fdm1d\" (required)");

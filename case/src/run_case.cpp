@@ -200,7 +200,7 @@ void add_flow_keys(CaseKeys<RunCase>& k) {
 
 // [coupling]: the split, its iteration and the stabilisers.
 void add_coupling_keys(CaseKeys<RunCase>& k) {
-  k.table("coupling", "coupling.")
+  k.table("coupling")
       .choice("split", [](auto& c) -> auto& { return c.coupling.split; },
               "the operator split of Section 2.3")
       .real("psi", [](auto& c) -> auto& { return c.coupling.terms.psi; },
@@ -447,10 +447,10 @@ RunCase read_run_case(const std::filesystem::path& file, const std::vector<std::
   // Rules across tables: the time stepping's (times are [output]'s) and the flow's.
   try {
     c.stepping.validate();
-  } catch (const InputError& e) {
-    const std::string what = e.what();
-    if (what.rfind("output.", 0) == 0) root.table("output").fail(what.substr(7));
-    root.table("numerics").fail(what.rfind("numerics.", 0) == 0 ? what.substr(9) : what);
+  } catch (const FieldError& e) {
+    // TimeStepping's fields are [numerics]' keys, but for its output times: [output] times.
+    if (e.field() == "output_times") root.table("output").fail(e.message_as("times"));
+    root.table("numerics").fail(e.what());
   }
   CaseTable numerics = root.table("numerics");
   // The saw-tooth law's defaults in other tables: a tooth judged on a converged state, and a step
@@ -467,7 +467,7 @@ RunCase read_run_case(const std::filesystem::path& file, const std::vector<std::
     numerics.fail("overshoot_tolerance = " + core::format_value(c.stepping.overshoot_tolerance) +
                   ", allowed: 0 unless [coupling] fracture_check = \"at_convergence\" (a break on an unconverged "
                   "pass overshoots whatever the step)");
-  located(numerics, "", [&] { c.flow_parameters().validate(); });
+  located(numerics, [&] { c.flow_parameters().validate(); });
   // What an empty or truncated file lacks, once every given value has been checked.
   if (!root.has("model")) root.fail("model is missing, allowed: \"lattice2d\" (required)");
   require_physics_present(root);

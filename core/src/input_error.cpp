@@ -1,8 +1,38 @@
 #include "hm/core/input_error.hpp"
 
 #include <algorithm>
+#include <utility>
+
+namespace hm {
+
+namespace {
+std::string field_message(std::string_view name, const std::string& element, const std::string& value,
+                          std::string rule) {
+  const std::string named = std::string(name) + element;
+  for (std::size_t at; (at = rule.find("{}")) != std::string::npos;) rule.replace(at, 2, named);
+  return named + " = " + value + ", allowed: " + rule;
+}
+}  // namespace
+
+FieldError::FieldError(std::string field, std::string element, std::string value, std::string rule)
+    : InputError(field_message(field, element, value, rule)),
+      field_(std::move(field)),
+      element_(std::move(element)),
+      value_(std::move(value)),
+      rule_(std::move(rule)) {}
+
+std::string FieldError::message_as(std::string_view name) const { return field_message(name, element_, value_, rule_); }
+
+}  // namespace hm
 
 namespace hm::core {
+
+std::string element_of(std::size_t k) {
+  std::string s = "[";
+  s += std::to_string(k);
+  s += ']';
+  return s;
+}
 
 std::string one_line(std::string_view text, std::size_t max_chars) {
   std::string out;

@@ -32,15 +32,14 @@ void Fdm1dNumerics::validate(double R_i) const {
     throw InputError("dt_max = " + core::format_value(dt_max) + ", allowed: dt_max >= dt_initial (" +
                      core::format_value(dt_initial) + ")");
   core::require_positive(t_end, "t_end");
-  core::require_feasible_stepping(dt_initial, dt_growth, dt_max, t_end, "");
+  core::require_feasible_stepping(dt_initial, dt_growth, dt_max, t_end);
   for (std::size_t k = 0; k < output_times.size(); ++k) {
-    const std::string name = "output_times[" + std::to_string(k) + "]";
+    const std::string element = core::element_of(k);
     if (!(output_times[k] > 0.0 && output_times[k] <= t_end))
-      throw InputError(name + " = " + core::format_value(output_times[k]) + ", allowed: 0 < " + name +
-                       " <= t_end (" + core::format_value(t_end) + ")");
+      throw FieldError("output_times", element, core::format_value(output_times[k]),
+                       "0 < {} <= t_end (" + core::format_value(t_end) + ")");
     if (k > 0 && !(output_times[k] > output_times[k - 1]))
-      throw InputError(name + " = " + core::format_value(output_times[k]) +
-                       ", allowed: strictly increasing output_times");
+      throw FieldError("output_times", element, core::format_value(output_times[k]), "strictly increasing times");
   }
   for (std::size_t k = 0; k < probe_radii.size(); ++k)
     core::require_closed(probe_radii[k], "probe_radii[" + std::to_string(k) + "]", R_i, 1.0);

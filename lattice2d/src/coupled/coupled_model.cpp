@@ -18,52 +18,49 @@ void CouplingOptions::validate() const {
   using namespace hm::core;
   terms.validate();
   if (split == CouplingSplit::drained && terms.psi != 0.0)
-    throw hm::InputError("coupling.psi = " + format_value(terms.psi) + ", allowed: 0 for split = drained");
+    throw hm::FieldError("psi", "", format_value(terms.psi), "0 for split = drained");
   // A pass's relative change stalls at round-off (~1e-11 for the pressure of the Fig. 12 quick case):
   // a tolerance below kMinCouplingTolerance could never be met.
   for (const auto& [value, name] : {std::pair{pressure_tolerance, "pressure_tolerance"},
                                     std::pair{displacement_tolerance, "displacement_tolerance"}})
     if (!(value >= kMinCouplingTolerance && value < 1.0))
-      throw hm::InputError(std::string("coupling.") + name + " = " + format_value(value) + ", allowed: " +
-                           format_value(kMinCouplingTolerance) + " <= " + name + " < 1");
+      throw hm::FieldError(name, "", format_value(value), format_value(kMinCouplingTolerance) + " <= {} < 1");
   if (!(balance_tolerance >= kMinCouplingTolerance && balance_tolerance <= 1.0))
-    throw hm::InputError("coupling.balance_tolerance = " + format_value(balance_tolerance) + ", allowed: " +
-                         format_value(kMinCouplingTolerance) + " <= balance_tolerance <= 1");
-  require_at_least(max_iterations, "coupling.max_iterations", 1);
+    throw hm::FieldError("balance_tolerance", "", format_value(balance_tolerance),
+                         format_value(kMinCouplingTolerance) + " <= {} <= 1");
+  require_at_least(max_iterations, "max_iterations", 1);
   if (events_per_check < 0 || events_per_check > kMaxEventsPerCheck)
-    throw hm::InputError("coupling.events_per_check = " + std::to_string(events_per_check) + ", allowed: 0 ... " +
-                         std::to_string(kMaxEventsPerCheck));
+    throw hm::FieldError("events_per_check", "", std::to_string(events_per_check),
+                         "0 ... " + std::to_string(kMaxEventsPerCheck));
   if (anderson_depth < 1 || anderson_depth > 50)
-    throw hm::InputError("coupling.anderson_depth = " + std::to_string(anderson_depth) + ", allowed: 1 ... 50");
+    throw hm::FieldError("anderson_depth", "", std::to_string(anderson_depth), "1 ... 50");
   if (!(initial_relaxation > 0.0 && initial_relaxation <= 1.0))
-    throw hm::InputError("coupling.initial_relaxation = " + format_value(initial_relaxation) + ", allowed: 0 < initial_relaxation <= 1");
+    throw hm::FieldError("initial_relaxation", "", format_value(initial_relaxation), "0 < {} <= 1");
 }
 
 void TimeStepping::validate() const {
   using namespace hm::core;
-  require_finite(t_end, "numerics.t_end");
-  require_positive(t_end, "numerics.t_end");
-  require_finite(dt_initial, "numerics.dt_initial");
-  require_positive(dt_initial, "numerics.dt_initial");
+  require_finite(t_end, "t_end");
+  require_positive(t_end, "t_end");
+  require_finite(dt_initial, "dt_initial");
+  require_positive(dt_initial, "dt_initial");
   if (dt_initial > t_end)
-    throw hm::InputError("numerics.dt_initial = " + format_value(dt_initial) + ", allowed: <= t_end = " + format_value(t_end));
-  require_finite(dt_growth, "numerics.dt_growth");
-  if (!(dt_growth >= 1.0))
-    throw hm::InputError("numerics.dt_growth = " + format_value(dt_growth) + ", allowed: >= 1");
+    throw hm::FieldError("dt_initial", "", format_value(dt_initial), "<= t_end = " + format_value(t_end));
+  require_finite(dt_growth, "dt_growth");
+  if (!(dt_growth >= 1.0)) throw hm::FieldError("dt_growth", "", format_value(dt_growth), ">= 1");
   if (max_step_halvings < 0 || max_step_halvings > 50)
-    throw hm::InputError("numerics.max_step_halvings = " + std::to_string(max_step_halvings) + ", allowed: 0 ... 50");
+    throw hm::FieldError("max_step_halvings", "", std::to_string(max_step_halvings), "0 ... 50");
   if (!(dt_max >= dt_initial))
-    throw hm::InputError("numerics.dt_max = " + format_value(dt_max) + ", allowed: >= dt_initial = " + format_value(dt_initial));
+    throw hm::FieldError("dt_max", "", format_value(dt_max), ">= dt_initial = " + format_value(dt_initial));
   if (!(overshoot_tolerance >= 0.0 && overshoot_tolerance < 1.0))
-    throw hm::InputError("numerics.overshoot_tolerance = " + format_value(overshoot_tolerance) + ", allowed: 0 <= value < 1");
-  require_feasible_stepping(dt_initial, dt_growth, dt_max, t_end, "numerics.");
+    throw hm::FieldError("overshoot_tolerance", "", format_value(overshoot_tolerance), "0 <= value < 1");
+  require_feasible_stepping(dt_initial, dt_growth, dt_max, t_end);
   for (std::size_t k = 0; k < output_times.size(); ++k) {
     const double t = output_times[k];
+    const std::string element = element_of(k);
     if (!(t > 0.0 && t <= t_end))
-      throw hm::InputError("output.times[" + std::to_string(k) + "] = " + format_value(t) + ", allowed: 0 < t <= t_end = " +
-                           format_value(t_end));
-    if (k > 0 && !(t > output_times[k - 1]))
-      throw hm::InputError("output.times[" + std::to_string(k) + "] = " + format_value(t) + ", allowed: strictly increasing");
+      throw hm::FieldError("output_times", element, format_value(t), "0 < t <= t_end = " + format_value(t_end));
+    if (k > 0 && !(t > output_times[k - 1])) throw hm::FieldError("output_times", element, format_value(t), "strictly increasing");
   }
 }
 

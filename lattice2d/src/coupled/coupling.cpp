@@ -15,9 +15,9 @@ void CouplingTerms::validate() const {
   // beams by so many orders that the mechanical factor loses its digits (xi or psi = 1e12 fails the
   // first solve of the Fig. 12 quick case), and no physical setting needs them.
   if (!(xi > 0.0 && xi <= kMaxPressureForceScale))
-    throw hm::InputError("coupling.xi = " + format_value(xi) + ", allowed: 0 < xi <= " + format_value(kMaxPressureForceScale));
+    throw hm::FieldError("xi", "", format_value(xi), "0 < {} <= " + format_value(kMaxPressureForceScale));
   if (!(psi >= 0.0 && psi <= kMaxSplitFeedback))
-    throw hm::InputError("coupling.psi = " + format_value(psi) + ", allowed: 0 <= psi <= " + format_value(kMaxSplitFeedback));
+    throw hm::FieldError("psi", "", format_value(psi), "0 <= {} <= " + format_value(kMaxSplitFeedback));
 }
 
 Eigen::VectorXd pressure_forces(const Lattice& lattice, const DualGraph& dual, const Eigen::VectorXd& pressure,

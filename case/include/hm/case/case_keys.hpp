@@ -44,9 +44,6 @@ struct CaseKey {
 template <class Case>
 struct CaseKeyTable {
   std::string name;
-  /// Prefix of the library's messages for this table ("coupling." from CouplingOptions::validate),
-  /// dropped when the message is located in the case file.
-  std::string message_prefix;
   std::vector<CaseKey<Case>> keys;
   /// Runs after the table's keys are read and unknown keys rejected (the struct's validate() and
   /// rules across keys); root is the whole file, for a rule that names another table.
@@ -62,16 +59,16 @@ std::string toml_quoted(const std::string& text);
 std::string toml_reals(const std::vector<double>& values);
 
 /// Runs `read`; an InputError from a library parser or validate() becomes
-/// "<file>: [table] key = value, allowed: rule" (the library's `prefix` dropped).
-void located(CaseTable& table, const std::string& prefix, const std::function<void()>& read);
+/// "<file>: [table] key = value, allowed: rule" (the struct's field names are the table's keys).
+void located(CaseTable& table, const std::function<void()>& read);
 
 /// The keys of one case model, table by table in file order.
 template <class Case>
 class CaseKeys {
  public:
   /// Starts a table; the keys declared next belong to it.
-  CaseKeys& table(std::string name, std::string message_prefix = "") {
-    tables_.push_back({std::move(name), std::move(message_prefix), {}, {}, {}});
+  CaseKeys& table(std::string name) {
+    tables_.push_back({std::move(name), {}, {}, {}});
     return *this;
   }
   CaseKeys& check(std::function<void(CaseTable&, CaseTable&, Case&)> rule) {
@@ -148,7 +145,7 @@ class CaseKeys {
     return key({name, "string", std::move(default_text), "one of " + allowed, std::move(help),
                 [name, field, values, default_of](CaseTable& t, Case& c) {
                   const Enum fallback = default_of ? default_of(c) : field(c);
-                  located(t, "", [&] {
+                  located(t, [&] {
                     field(c) = core::from_name(t.get_string(name, core::name_of(fallback)), name, values);
                   });
                 },
@@ -174,7 +171,7 @@ class CaseKeys {
   void read(CaseTable& root, Case& c) const {
     for (const CaseKeyTable<Case>& spec : tables_) {
       CaseTable t = root.table(spec.name);
-      located(t, spec.message_prefix, [&] {
+      located(t, [&] {
         for (const CaseKey<Case>& k : spec.keys) k.read(t, c);
         t.reject_unknown();
         if (spec.check) spec.check(t, root, c);

@@ -17,7 +17,25 @@ class InputError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// Bad input in one field of a parameter struct, kept in its parts so that the layer that knows where
+/// the field came from (a case file's [table] key) names it without rewriting the message: the field's
+/// name in the struct ("output_times"), the element ("[2]", or empty), the value as given and the rule,
+/// in which "{}" stands for the field (with its element). what() names the field as the struct does.
+class FieldError : public InputError {
+ public:
+  FieldError(std::string field, std::string element, std::string value, std::string rule);
+  const std::string& field() const { return field_; }
+  /// The message with the field called `name`: "name[2] = 5, allowed: 0 < name[2] <= t_end (1)".
+  std::string message_as(std::string_view name) const;
+
+ private:
+  std::string field_, element_, value_, rule_;
+};
+
 namespace core {
+
+/// "[k]": the element of a list field, for FieldError.
+std::string element_of(std::size_t k);
 
 /// `text` as one line of at most `max_chars` characters: line breaks and other control characters
 /// become spaces, and a longer text is cut with "…" — so an inline table, a [[table]] or a 100 k

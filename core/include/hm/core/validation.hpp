@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// One-line range checks for validate() methods: each throws hm::InputError
-/// "name = value, allowed: rule" (the Ceres IsValid style).
+/// One-line range checks for validate() methods: each throws hm::FieldError, whose message is
+/// "name = value, allowed: rule" (the Ceres IsValid style); a name "field[k]" is field "field", element "[k]".
 #include <string>
 #include <string_view>
 
@@ -28,9 +28,8 @@ struct SteppingLimits {
   static constexpr double min_dt_over_t_end = 1e-12;
   static constexpr long long max_steps = 1000000;
 };
-/// Throws InputError "<prefix>dt_initial = ..., allowed: ..." when the stepping breaks a limit; the
-/// message gives the number of steps it would take. Call after each value is checked on its own.
-void require_feasible_stepping(double dt_initial, double dt_growth, double dt_max, double t_end,
-                               std::string_view prefix);
+/// Throws a FieldError (t_end or dt_initial) when the stepping breaks a limit; the message gives the
+/// number of steps it would take. Call after each value is checked on its own.
+void require_feasible_stepping(double dt_initial, double dt_growth, double dt_max, double t_end);
 
 }  // namespace hm::core
