@@ -179,7 +179,7 @@ BenchmarkResult rudnicki(const BenchmarkContext& ctx) {
   return res;
 }
 
-BenchmarkResult sneddon(const BenchmarkContext&) {
+BenchmarkResult sneddon_closed_form(const BenchmarkContext&) {
   BenchmarkResult res;
   const SneddonCrack crack{1e-3, 0.1, 0.25};
   const double volume = integrate([&](double x) { return 2 * crack.half_aperture(x); }, -crack.c, crack.c);
@@ -192,7 +192,7 @@ BenchmarkResult sneddon(const BenchmarkContext&) {
   return res;
 }
 
-BenchmarkResult lame(const BenchmarkContext&) {
+BenchmarkResult lame_closed_form(const BenchmarkContext&) {
   BenchmarkResult res;
   const double R_i = 0.138, nu = 0.25, p_i = 1e-3;
   auto check = [&](const std::string& label, const std::function<RadialState(double)>& state, double outer_expected,
@@ -233,9 +233,9 @@ void add_analytic_benchmarks(std::vector<Benchmark>& into) {
                   Tier::quick, rudnicki});
   into.push_back({"analytic.sneddon", "Sneddon's pressurised crack (Appendix C)",
                   "Eq. C1's ellipse: its opened area against quadrature, its maximum against Sneddon (1946).",
-                  Tier::quick, sneddon});
+                  Tier::quick, sneddon_closed_form});
   into.push_back({"analytic.lame", "Lamé thick-walled cylinder, plane strain",
-                  "Free and fixed outer surface: radial equilibrium and boundary conditions.", Tier::quick, lame});
+                  "Free and fixed outer surface: radial equilibrium and boundary conditions.", Tier::quick, lame_closed_form});
 }
 
 }  // namespace hm::verification

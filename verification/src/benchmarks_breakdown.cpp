@@ -49,8 +49,6 @@ using breakdown::GridStudy;
 using breakdown::GridStudyPlan;
 using cases::RunCase;
 
-std::string fmt(double x) { return format_number(x); }
-
 /// A ratio near 1 to six decimals: the grid study's levels differ in the fourth digit and beyond.
 std::string ratio6(double x) {
   char buf[32];

@@ -33,9 +33,7 @@ using fdm1d::Fdm1dResult;
 /// log2 of successive error ratios on grids refined by 2.
 double observed_order(double coarse_error, double fine_error) { return std::log2(coarse_error / fine_error); }
 
-std::string fmt(double x) { return format_number(x); }
-
-Metric balance_metric(const std::string& label, double worst) {
+Metric fdm1d_balance_metric(const std::string& label, double worst) {
   return {.name = "volume balance, max relative error per step (" + label + ")", .value = worst, .tolerance = 1e-10,
           .comparison = Comparison::at_most,
           .justification = "the scheme is conservative by construction: round-off of a sparse LU solve"};
@@ -100,7 +98,7 @@ BenchmarkResult steady_state(const BenchmarkContext& ctx) {
   res.metrics.push_back({.name = "u_r error / max u_r at n_r = " + std::to_string(grids.back()), .value = eu[k],
                          .tolerance = 5e-3, .comparison = Comparison::at_most,
                          .justification = "the measured O(dr^2) error of this table at this n_r, with margin 2-3x"});
-  res.metrics.push_back(balance_metric("all grids", worst_balance));
+  res.metrics.push_back(fdm1d_balance_metric("all grids", worst_balance));
   return res;
 }
 
@@ -219,7 +217,7 @@ BenchmarkResult section32(const BenchmarkContext&) {
   }
   res.tables.push_back(table);
   res.tables.push_back(probe_table);
-  res.metrics.push_back(balance_metric("Section 3.2 runs", worst_balance));
+  res.metrics.push_back(fdm1d_balance_metric("Section 3.2 runs", worst_balance));
   res.notes.push_back(
       "The C_u/T_u threshold is sigma_CC/sigma_1 at the borehole wall: shear failure comes first when C_u/T_u is "
       "below it. The paper quotes one value, ≈ 5.5, for all b; we find it depends on b (6.00 at b = 0 falling to "
@@ -246,7 +244,7 @@ BenchmarkResult fig10_11(const BenchmarkContext& ctx) {
                          .tolerance = 0.01, .comparison = Comparison::at_most,
                          .justification = "Fig. 10A: 'the pressure at t* = 1 fits the steady state'; the "
                                           "remaining transient at t* = 1 is ~exp(-3/S) ~ 4e-3"});
-  res.metrics.push_back(balance_metric("Fig. 10 case", r.summary.max_balance_error));
+  res.metrics.push_back(fdm1d_balance_metric("Fig. 10 case", r.summary.max_balance_error));
   res.figures.push_back({"fig10_fdm1d_pressure_displacement.py", "fig10_fdm1d_pressure_displacement.png",
                          "Fig. 10 (b = 0.5, Q = 0.01): A pressure and B displacement at five times with the steady "
                          "state dashed, C pressure at four radii, D the transient negative pressure.",

@@ -41,8 +41,6 @@ constexpr double degree = std::numbers::pi / 180.0;
 constexpr double T_u = 2e-4;      // Table 1's tensile strength over E, uniform over the beams
 constexpr double theta_H = 30 * degree;  // off the lattice's axes
 
-std::string fmt(double x) { return format_number(x); }
-
 // Beam stresses of the displacement u (intact lattice, no crack tips).
 l2::BeamStress beam_stress_of(const l2::Lattice& l, const l2::DualGraph& dual, const Eigen::VectorXd& u) {
   const l2::BeamParameters beams = l2::calibrated_beam_parameters();

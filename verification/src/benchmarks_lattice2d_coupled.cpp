@@ -40,8 +40,6 @@ namespace {
 
 namespace lt = hm::lattice2d;
 
-std::string fmt(double x) { return format_number(x); }
-
 /// One lattice run of the Fig. 7 setting.
 struct RudnickiVariant {
   std::string label;  // also the data sub-folder
@@ -145,7 +143,7 @@ Metric error_metric(const std::string& what, double value, bool gating, const st
           .justification = why, .gating = gating};
 }
 
-Metric balance_metric(const std::string& label, double worst) {
+Metric flow_balance_metric(const std::string& label, double worst) {
   return {.name = "volume balance, max relative error per step (" + label + ")", .value = worst, .tolerance = 1e-8,
           .comparison = Comparison::at_most,
           .justification = "the flow scheme is conservative by construction: round-off of the sparse solve "
@@ -193,7 +191,7 @@ BenchmarkResult rudnicki_quick(const BenchmarkContext& ctx) {
                                      "(h ~ 0.019), the innermost shell is under-predicted (measured 19% at r* = 0.017; 27% "
                                      "with uniform beams); the "
                                      "paper tier checks it at N = 3e4"));
-  res.metrics.push_back(balance_metric("N = 1e4", o.max_balance));
+  res.metrics.push_back(flow_balance_metric("N = 1e4", o.max_balance));
   res.tables = {runs, profiles};
   res.figures.push_back({"fig07_rudnicki.py", "fig07_rudnicki_free_N1e4.png",
                          "Fig. 7 at N = 1e4 (free disk, Q = 0.1, b = 0.5, t* = 3e-4): radially averaged u_r and p "
@@ -211,7 +209,7 @@ BenchmarkResult rudnicki_paper(const BenchmarkContext& ctx) {
   auto run = [&](const RudnickiVariant& v) {
     const RudnickiOutcome o = run_variant(v, ctx, profiles);
     add_run_row(runs, v.label, o);
-    res.metrics.push_back(balance_metric(v.label, o.max_balance));
+    res.metrics.push_back(flow_balance_metric(v.label, o.max_balance));
     if (!o.ok)
       res.metrics.push_back({.name = v.label + ": run completed", .value = 0.0, .reference = 1.0, .tolerance = 0.0,
                              .comparison = Comparison::abs_error, .justification = o.message});

@@ -31,7 +31,6 @@ namespace {
 
 namespace l2 = hm::lattice2d;
 
-std::string fmt(double x) { return format_number(x); }
 std::string pct(double x) { return format_number(100.0 * x) + "%"; }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -336,7 +335,7 @@ LameRun lame_case(const l2::Lattice& lattice, const l2::DualGraph& dual, l2::Bou
   return run;
 }
 
-BenchmarkResult lame(const BenchmarkContext& ctx) {
+BenchmarkResult lattice_lame(const BenchmarkContext& ctx) {
   BenchmarkResult res;
   const double p = 1e-4;
   const l2::ElasticConstants cal = l2::calibrated_continuum();
@@ -430,7 +429,7 @@ void add_lattice2d_elastic_benchmarks(std::vector<Benchmark>& into) {
   into.push_back({"lattice2d.lame", "Lattice: Lame thick-walled cylinder, free and fixed outer boundary",
                   "Annulus R_i = 0.138 under internal pressure: radially averaged u_r and sigma_theta against Lame's "
                   "plane-strain solution with the calibrated E, nu, at two resolutions.",
-                  Tier::quick, lame});
+                  Tier::quick, lattice_lame});
 }
 
 }  // namespace hm::verification

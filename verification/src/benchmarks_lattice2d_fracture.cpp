@@ -33,8 +33,6 @@ namespace {
 
 namespace l2 = hm::lattice2d;
 
-std::string fmt(double x) { return format_number(x); }
-
 // The beam constants of every fracture benchmark: the toolkit's calibration (calibration.hpp: E = 1 and
 // its measured nu). Sneddon's aperture is compared with Eq. C1 at the calibrated continuum's E, nu, and
 // cross-checked against E' measured here on the lattice itself (plane_strain_modulus).
@@ -237,7 +235,7 @@ void add_sneddon_metrics(const SneddonRun& r, double w0_s, double h, std::vector
                                       "about half a spacing (h/2c <= 0.1 here)"});
 }
 
-BenchmarkResult sneddon(const BenchmarkContext& ctx) {
+BenchmarkResult lattice_sneddon(const BenchmarkContext& ctx) {
   BenchmarkResult res;
   const bool paper = ctx.tier == Tier::paper;
   l2::LatticeSpec spec;
@@ -698,7 +696,7 @@ void add_lattice2d_fracture_benchmarks(std::vector<Benchmark>& into) {
   into.push_back({"lattice2d.sneddon", "Lattice: Sneddon's pressurised crack (Appendix C, Fig. C2)",
                   "A straight crack of broken beams in the dry disk, pressurised on its faces (forces p d_st along each "
                   "broken beam); the aperture profile against Eq. C1 with the calibrated E, nu (cross-checked by E' measured on the lattice).",
-                  Tier::quick, sneddon, {}, {"C2"}});
+                  Tier::quick, lattice_sneddon, {}, {"C2"}});
   into.push_back({"lattice2d.uniaxial_tension", "Lattice: uniaxial tension to failure",
                   "A square pulled by prescribed displacements with the break loop at each load: peak mean stress "
                   "against T_u and a crack across the load direction.",

@@ -21,8 +21,6 @@ namespace {
 
 namespace l2 = hm::lattice2d;
 
-std::string fmt(double x) { return format_number(x); }
-
 struct Scatter {
   double mean = 0.0, low = 0.0, high = 0.0;
 };

@@ -40,8 +40,6 @@ namespace {
 using namespace borehole_fracture;
 namespace fs = std::filesystem;
 
-std::string fmt(double x) { return format_number(x); }
-
 const fs::path kCases = fs::path(HM_SOURCE_DIR) / "cases";
 
 /// The seed scatter's resolution and seeds, as the Fig. 12 benchmark's (~3-5 min a run at Q = 0.01).

@@ -26,8 +26,6 @@ namespace {
 namespace l2 = hm::lattice2d;
 using core::CsvWriter;
 
-std::string fmt(double x) { return format_number(x); }
-
 struct Variant {
   std::string label;
   bool sawtooth;

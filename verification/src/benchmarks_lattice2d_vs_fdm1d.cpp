@@ -61,8 +61,6 @@ namespace {
 namespace lt = hm::lattice2d;
 namespace fs = std::filesystem;
 
-std::string fmt(double x) { return format_number(x); }
-
 constexpr double kQ = 0.01;
 constexpr int kShells = 20;  // shells 0.0431 wide on [R_i, 1], ~2 mean beam lengths at N = 1e4 (h = 0.020)
 

@@ -17,8 +17,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string fmt(double x) { return format_number(x); }
-
 std::string sign_word(double x) { return std::isnan(x) ? "-" : (x < 0.0 ? "negative" : "positive"); }
 
 Metric flag(const std::string& name, bool value, const std::string& why, bool gating = true) {

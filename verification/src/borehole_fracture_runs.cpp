@@ -39,8 +39,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string fmt(double x) { return format_number(x); }
-
 
 /// u_r of the lattice against 1D at time t, shell by shell (Fig. 13's comparison): the max of
 /// |u_r/u_r,1D - 1| and the mean of u_r/u_r,1D over the shells; nothing if the reference has no snapshot at t.

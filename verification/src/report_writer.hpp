@@ -24,5 +24,7 @@ void write_metrics_json(const std::filesystem::path& file, const std::vector<Ben
 
 /// "3.14e-05"-style formatting used in every report table.
 std::string format_number(double value);
+/// The benchmarks' short name for format_number, in the prose they build.
+inline std::string fmt(double value) { return format_number(value); }
 
 }  // namespace hm::verification

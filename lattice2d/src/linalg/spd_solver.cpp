@@ -70,9 +70,10 @@ double SpdSolver::relative_residual(const Eigen::VectorXd& x, const Eigen::Vecto
 // ------------------------------------------------------------------------------------------------
 // CholmodSolver
 
-namespace {
+// RAII owners of CHOLMOD objects; each needs the solver's cholmod_common to be freed. A named
+// namespace, not an anonymous one: CholmodSolver::Impl, declared in the header, holds them.
+namespace cholmod_owners {
 
-// RAII owners of CHOLMOD objects; each needs the solver's cholmod_common to be freed.
 struct SparseDeleter {
   cholmod_common* common;
   void operator()(cholmod_sparse* a) const { cholmod_free_sparse(&a, common); }
@@ -89,7 +90,8 @@ using SparsePtr = std::unique_ptr<cholmod_sparse, SparseDeleter>;
 using FactorPtr = std::unique_ptr<cholmod_factor, FactorDeleter>;
 using DensePtr = std::unique_ptr<cholmod_dense, DenseDeleter>;
 
-}  // namespace
+}  // namespace cholmod_owners
+using namespace cholmod_owners;
 
 struct CholmodSolver::Impl {
   // The common is declared first so it outlives (is destroyed after) the objects that use it.
