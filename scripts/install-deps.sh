@@ -6,7 +6,7 @@
 set -euo pipefail
 
 packages=(
-  g++ cmake make pkg-config
+  g++ cmake make ninja-build pkg-config
   libeigen3-dev libgsl-dev libboost-dev libcgal-dev libsuitesparse-dev
   libtoml11-dev libcli11-dev nlohmann-json3-dev catch2 libbenchmark-dev
   python3-matplotlib python3-numpy python3-meshio python3-pandas python3-pytest

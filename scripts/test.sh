@@ -17,7 +17,9 @@ sanitized_suites=(core analytic fdm1d lattice2d)
 slow_under_sanitizers="sparse factorisation agrees with a dense solve|the same seeds give the identical break sequence|\
 volume balance of every coupled step closes|Point injection into the disk matches Rudnicki|\
 checked at convergence: the break sequence|radial cracks from the wall, never healed"
-cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Release -DHM_SANITIZE=ON > build-sanitize-configure.log 2>&1 ||
+generator=()
+[ -f build-sanitize/CMakeCache.txt ] || generator=(-G Ninja)  # as scripts/build.sh
+cmake -S . -B build-sanitize "${generator[@]}" -DCMAKE_BUILD_TYPE=Release -DHM_SANITIZE=ON > build-sanitize-configure.log 2>&1 ||
   { cat build-sanitize-configure.log; exit 1; }
 rm -f build-sanitize-configure.log
 cmake --build build-sanitize -j "$(nproc)" --target "${sanitized_suites[@]/#/test_}"
