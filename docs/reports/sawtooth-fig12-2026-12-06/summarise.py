@@ -1,5 +1,7 @@
 """summary.csv and table.md of the saw-tooth Fig. 12 study from its run folders (complete or not).
-Usage: /usr/bin/python3 summarise.py RUNS OUT [LABEL]   (LABEL names the setting in table.md)"""
+Usage: /usr/bin/python3 summarise.py RUNS OUT [LABEL]   (LABEL names the setting in table.md)
+Rows of an earlier OUT/summary.csv whose (N, seed) has no run folder in RUNS are kept: a study's runs
+may be made in several sessions, in different folders."""
 import os
 import sys
 
@@ -29,7 +31,13 @@ for name in sorted(os.listdir(runs)):
                      "radial": int(s.n_radial), "reaching_r1": int(s.n_radial_reaching_outer),
                      "max_radial_extent": s.max_radial_extent, "secondary": int(s.n_secondary),
                      "secondary_sizable": int(s.n_secondary_sizable)})
-table = pd.DataFrame(rows).sort_values(["t", "N", "seed"])
+table = pd.DataFrame(rows)
+earlier_path = os.path.join(out, "summary.csv")
+if os.path.exists(earlier_path):
+    earlier = pd.read_csv(earlier_path)
+    here = set(zip(table.N, table.seed)) if len(table) else set()
+    table = pd.concat([table, earlier[[(n, s) not in here for n, s in zip(earlier.N, earlier.seed)]]])
+table = table.sort_values(["t", "N", "seed"])
 table.to_csv(os.path.join(out, "summary.csv"), index=False, float_format="%.6g")
 means = table.groupby(["t", "N"]).mean(numeric_only=True).drop(columns=["seed"])
 spread = table.groupby(["t", "N"]).std(numeric_only=True)  # the seeds' standard deviation (NaN for one)

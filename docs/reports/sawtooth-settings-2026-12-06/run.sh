@@ -10,7 +10,7 @@ OUT=${1:?output folder}
 shift
 SIZES=${*:-3000}
 HERE=$(dirname "$0")
-for c in ${SETTINGS:-fig12_b0.8 fig14_b0.2 fig17_b0.2 fig16_b0.2}; do
+for c in ${SETTINGS:-fig12_b0.8 fig14_b0.2 fig17_b0.2 fig16_b0.2 fig19}; do
   "$H" sweep expand "cases/studies/sawtooth_$c.toml" --out "$OUT/cases_$c" --overwrite
   for n in $SIZES; do for s in 1 2 3; do
     name="n_particles=${n}_seed=${s}"
