@@ -195,6 +195,8 @@ CaseFile::CaseFile(const std::filesystem::path& path, const std::vector<std::str
 
 namespace {
 
+// The key tables are laid out one key per entry (clang-format would break each entry before its name).
+// clang-format off
 // [physics_si]: Table 1's physical inputs and the volumetric-strain choice (not a physical value).
 struct PhysicsSi {
   analytic::PhysicalParameters p;
@@ -265,6 +267,7 @@ const CaseKeys<PhysicsSi>& physics_si_keys() {
   return keys;
 }
 
+// clang-format on
 }  // namespace
 
 std::string physics_reference_markdown() {

@@ -11,6 +11,8 @@ namespace hm::cases {
 
 namespace {
 
+// The key tables are laid out one key per entry (clang-format would break each entry before its name).
+// clang-format off
 CaseKeys<Fdm1dCase> make_fdm1d_case_keys() {
   CaseKeys<Fdm1dCase> k;
   // S_H and S_h as in a 2D case, so that one sweep can name both models; they must be equal here.
@@ -50,6 +52,7 @@ CaseKeys<Fdm1dCase> make_fdm1d_case_keys() {
   return k;
 }
 
+// clang-format on
 }  // namespace
 
 const CaseKeys<Fdm1dCase>& fdm1d_case_keys() {

@@ -81,6 +81,8 @@ void check_cubic_law(CaseTable& flow, const RunCase& c) {
               core::format_value(si) + ")");
 }
 
+// The key tables are laid out one key per entry (clang-format would break each entry before its name).
+// clang-format off
 // [lattice]: the domain and the particles.
 void add_lattice_keys(CaseKeys<RunCase>& k) {
   k.table("lattice")
@@ -425,6 +427,7 @@ CaseKeys<RunCase> make_run_case_keys() {
   return k;
 }
 
+// clang-format on
 }  // namespace
 
 const CaseKeys<RunCase>& run_case_keys() {
