@@ -82,8 +82,8 @@ BenchmarkResult griffith_growth(const BenchmarkContext& ctx) {
   std::vector<Variant> variants = {{"sawtooth, dry process zone", true, PressurisedFaces::broken},
                                     {"sawtooth, pressure in the process zone", true, PressurisedFaces::with_softening},
                                     {"brittle (the paper's)", false, PressurisedFaces::broken}};
-  // The teeth's limit, a study of where K's excess comes from: half the quick tier's Griffith time, so
-  // the paper tier's (its code path is tested in tests/verification/test_crack_growth.cpp).
+  // The teeth's limit studies where K's excess comes from and costs half the quick Griffith time, so it
+  // runs in the paper tier only (its code path is tested in tests/verification/test_crack_growth.cpp).
   if (paper)
     variants.insert(variants.begin() + 2, {"the teeth's envelope followed continuously, pressure in the process zone",
                                            true, PressurisedFaces::with_softening, SofteningPath::continuous});
