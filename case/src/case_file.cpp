@@ -101,6 +101,20 @@ std::vector<double> CaseTable::get_doubles(const std::string& key, const std::ve
   return out;
 }
 
+std::vector<std::string> CaseTable::get_strings(const std::string& key, const std::vector<std::string>& default_value) {
+  const toml::value* v = find(key);
+  if (!v) return default_value;
+  if (!v->is_array()) wrong_type(key, "an array of strings");
+  std::vector<std::string> out;
+  for (const auto& x : v->as_array()) {
+    if (!x.is_string()) wrong_type(key, "an array of strings");
+    out.push_back(x.as_string().str);
+  }
+  return out;
+}
+
+bool CaseTable::is_string(const std::string& key) const { return has(key) && table_.at(key).is_string(); }
+
 std::vector<std::vector<double>> CaseTable::get_double_lists(const std::string& key, std::size_t size,
                                                              const std::vector<std::vector<double>>& default_value) {
   const toml::value* v = find(key);
@@ -123,6 +137,19 @@ CaseTable CaseTable::table(const std::string& key) {
   if (!v) return CaseTable(toml::value(toml::table{}), file_, sub);
   if (!v->is_table()) wrong_type(key, "a table [" + sub + "]");
   return CaseTable(*v, file_, sub);
+}
+
+std::vector<CaseTable> CaseTable::tables(const std::string& key) {
+  const toml::value* v = find(key);
+  std::vector<CaseTable> out;
+  if (!v) return out;
+  const std::string sub = name_.empty() ? key : name_ + "." + key;
+  if (!v->is_array()) wrong_type(key, "an array of tables [[" + sub + "]]");
+  for (const auto& element : v->as_array()) {
+    if (!element.is_table()) wrong_type(key, "an array of tables [[" + sub + "]]");
+    out.emplace_back(element, file_, sub + "[" + std::to_string(out.size()) + "]");
+  }
+  return out;
 }
 
 void CaseTable::reject_unknown() const {

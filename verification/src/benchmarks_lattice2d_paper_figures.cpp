@@ -3,9 +3,11 @@
 //   Fig. 16      Q = 1, iota = 1e3 (high injection rate)
 //   Fig. 17      Q = 1, iota = 1e6 (tight rock)
 //   Figs. 19-20  b = 0.5, Q = 0.01, iota = 1 at t* = 2.5e-2 on lattices of six resolutions
-// The cases are read from cases/ (quick tier, <fig>_b<b>_quick.toml, the sweep_fig19_quick.toml
-// resolutions) and cases/paper/ (paper tier: N = 1e5, and three seeds at N = 2e4 where a count is
-// compared; sweep_fig19.toml), so the harness runs what `hmlattice run` runs. Each run goes through the
+// Each is a spec file in verification/specs/ (figure_specs.hpp): the paper's readings, the titles, the
+// plots and the seed scatter; the runners here are the two kinds of benchmark a spec can ask for. The
+// cases are read from cases/ (quick tier, <fig>_b<b>_quick.toml, the quick sweep's resolutions) and
+// cases/paper/ (paper tier: N = 1e5 and the spec's seed scatter; the paper sweep), so the harness runs
+// what `hmlattice run` runs. Each run goes through the
 // Fig. 12 machinery (borehole_fracture_runs.hpp): its folder is written as `hmlattice run` writes it and
 // its numbers are read back from there, so a folder a workflow made gives the same report.
 //
@@ -24,6 +26,7 @@
 
 #include "borehole_fracture_report.hpp"
 #include "borehole_fracture_runs.hpp"
+#include "figure_specs.hpp"
 #include "hm/case/run_case.hpp"
 #include "hm/case/sweep.hpp"
 #include "hm/verification/benchmark.hpp"
@@ -42,34 +45,23 @@ namespace fs = std::filesystem;
 
 const fs::path kCases = fs::path(HM_SOURCE_DIR) / "cases";
 
-/// The seed scatter's resolution and seeds, as the Fig. 12 benchmark's (~3-5 min a run at Q = 0.01).
-constexpr long long kScatterN = 20000;
-const std::vector<unsigned long long> kSeeds = {1, 2, 3};
-
-// --- Figs. 14-17: one case per b, two b per figure ---------------------------------------------------
-
-struct FractureFigure {
-  std::string id;       // "fig14": cases/<id>_b<b>_quick.toml, cases/paper/<id>_b<b>.toml, paper_reading(id)
-  std::string setting;  // "Q = 0.01, iota = 1e3 (fast flow in the fractures)"
-  std::vector<Figure> (*figures)(const std::string& subdir, const std::string& what);
-  std::vector<std::string> paper_figures;  // the paper's figures it draws
-};
+// --- runner "borehole_pair" (Figs. 14-17): one case per b, two b per figure ---------------------------
 
 const std::vector<std::string> kB = {"0.2", "0.8"};
 
-std::string quick_label(const FractureFigure& f, const std::string& b) { return f.id + "_b" + b + "_quick"; }
-std::string paper_label(const FractureFigure& f, const std::string& b) { return f.id + "_b" + b; }
-std::string seed_label(const FractureFigure& f, const std::string& b, unsigned long long seed) {
-  return paper_label(f, b) + "_N" + std::to_string(kScatterN) + "_seed" + std::to_string(seed);
+std::string quick_label(const FigureSpec& f, const std::string& b) { return f.id + "_b" + b + "_quick"; }
+std::string paper_label(const FigureSpec& f, const std::string& b) { return f.id + "_b" + b; }
+std::string seed_label(const FigureSpec& f, const std::string& b, unsigned long long seed) {
+  return paper_label(f, b) + "_N" + std::to_string(f.scatter_particles) + "_seed" + std::to_string(seed);
 }
-RunCase quick_case(const FractureFigure& f, const std::string& b) {
+RunCase quick_case(const FigureSpec& f, const std::string& b) {
   return read_run_case(kCases / (quick_label(f, b) + ".toml"));
 }
-RunCase paper_case(const FractureFigure& f, const std::string& b) {
+RunCase paper_case(const FigureSpec& f, const std::string& b) {
   return read_run_case(kCases / "paper" / (paper_label(f, b) + ".toml"));
 }
 
-std::vector<PlannedRun> planned(const FractureFigure& f, Tier tier) {
+std::vector<PlannedRun> planned(const FigureSpec& f, Tier tier) {
   std::vector<PlannedRun> runs;
   for (const std::string& b : kB) {
     if (tier == Tier::quick) {
@@ -78,18 +70,19 @@ std::vector<PlannedRun> planned(const FractureFigure& f, Tier tier) {
     }
     const RunCase c = paper_case(f, b);
     runs.push_back({paper_label(f, b), c});
-    for (unsigned long long seed : kSeeds) runs.push_back({seed_label(f, b, seed), with_lattice(c, kScatterN, seed)});
+    for (unsigned long long seed : f.scatter_seeds)
+      runs.push_back({seed_label(f, b, seed), with_lattice(c, f.scatter_particles, seed)});
   }
   return runs;
 }
 
-std::string paper_text(const FractureFigure& f) {
+std::string paper_text(const FigureSpec& f) {
   std::string s;
   for (const std::string& b : kB) {
-    const PaperReading r = paper_reading(f.id, std::stod(b));
+    const PaperReading& r = f.panel(std::stod(b)).reading;
     s += (s.empty() ? "" : "; ") + ("b = " + b + ": \"" + r.quote + "\"");
   }
-  return paper_reading(f.id, 0.2).figure + ": " + s;
+  return f.figure + ": " + s;
 }
 
 // Fig. 15: u_r of the fracturing lattice against the 1D model without fracture, per output time.
@@ -102,14 +95,20 @@ Table displacement_table() {
           {}};
 }
 
+/// The paper's u_r against the 1D model: unbroken up to last_unbroken_t, then above or below it.
+struct DisplacementReading {
+  double last_unbroken_t = 0.0;
+  bool above_after = false;
+};
+
 std::string fig15_statement(const DisplacementReading& paper, bool unbroken, bool first_fractured) {
   if (unbroken) return "unbroken, on the 1D curve";
   if (!first_fractured) return "";
   return paper.above_after ? "fractured: above 1D at most positions" : "fractured: below 1D at all positions";
 }
 
-void add_displacement_rows(const RunOutcome& o, Table& t, std::vector<Metric>& m) {
-  const DisplacementReading paper = fig15_reading(o.b);
+void add_displacement_rows(const FigureSpec& f, const RunOutcome& o, Table& t, std::vector<Metric>& m) {
+  const DisplacementReading paper{*f.unbroken_until, *f.panel(o.b).u_r_above_1d};
   bool fractured_seen = false;
   for (const Snapshot& s : o.snaps) {
     const bool unbroken = s.t <= paper.last_unbroken_t * (1 + 1e-9);
@@ -137,7 +136,7 @@ void add_displacement_rows(const RunOutcome& o, Table& t, std::vector<Metric>& m
   }
 }
 
-BenchmarkResult run_fracture_figure(const FractureFigure& f, const BenchmarkContext& ctx) {
+BenchmarkResult run_fracture_figure(const FigureSpec& f, const BenchmarkContext& ctx) {
   BenchmarkResult res;
   const std::string subdir = f.id + (ctx.tier == Tier::quick ? "_quick" : "_paper");
   const fs::path root = ctx.data_dir / subdir;
@@ -146,7 +145,7 @@ BenchmarkResult run_fracture_figure(const FractureFigure& f, const BenchmarkCont
   const std::string paper = paper_text(f);
   Table snaps = snapshot_table(paper), fluid = fluid_table(paper), breakdown = breakdown_table(), timing = timing_table();
   Table displacement = displacement_table();
-  Table scatter = scatter_table(kScatterN), scatter_bd = scatter_breakdown_table(kScatterN);
+  Table scatter = scatter_table(f.scatter_particles), scatter_bd = scatter_breakdown_table(f.scatter_particles);
   std::vector<RunOutcome> runs;
   std::vector<bool> in_figure;
   for (const std::string& b : kB) {
@@ -156,24 +155,24 @@ BenchmarkResult run_fracture_figure(const FractureFigure& f, const BenchmarkCont
     in_figure.push_back(true);
     if (ctx.tier == Tier::quick) continue;
     std::vector<RunOutcome> seeds;
-    for (unsigned long long seed : kSeeds)
-      seeds.push_back(source.run(with_lattice(c, kScatterN, seed), seed_label(f, b, seed), ref));
+    for (unsigned long long seed : f.scatter_seeds)
+      seeds.push_back(source.run(with_lattice(c, f.scatter_particles, seed), seed_label(f, b, seed), ref));
     add_scatter_rows(b, seeds, scatter, scatter_bd);
     for (auto& s : seeds) runs.push_back(std::move(s)), in_figure.push_back(false);
   }
   write_index(root, runs, in_figure, source);
   for (const auto& o : runs) {
-    const PaperReading reading = paper_reading(f.id, o.b);
+    const PaperReading& reading = f.panel(o.b).reading;
     add_snapshot_rows(o, snaps, reading);
     add_fluid_rows(o, fluid);
     add_breakdown_row(o, breakdown);
     add_timing_row(o, timing);
     add_gating_metrics(o, res.metrics);
     add_paper_metrics(o, res.metrics, reading);
-    if (f.id == "fig14") add_displacement_rows(o, displacement, res.metrics);
+    if (f.unbroken_until) add_displacement_rows(f, o, displacement, res.metrics);
   }
   res.tables = {snaps, fluid};
-  if (f.id == "fig14") res.tables.push_back(displacement);
+  if (f.unbroken_until) res.tables.push_back(displacement);
   if (ctx.tier == Tier::paper) res.tables.insert(res.tables.end(), {scatter, scatter_bd});
   res.tables.insert(res.tables.end(), {breakdown, timing});
   res.figures = f.figures(subdir, ctx.tier == Tier::quick ? "quick tier" : "paper tier, N = 1e5");
@@ -185,36 +184,7 @@ BenchmarkResult run_fracture_figure(const FractureFigure& f, const BenchmarkCont
   return res;
 }
 
-std::vector<Figure> fig14_figures(const std::string& subdir, const std::string& what) {
-  return {{"fig14_fracture_pressure.py", "fig14_fracture_pressure.png",
-           "Fig. 14 (" + what + "): pressure per triangle and broken beams at the case's output times, Q = 0.01, "
-           "iota = 1e3; b = 0.2 (top), 0.8 (bottom).",
-           subdir},
-          {"fig15_displacement_vs_1d.py", "fig15_displacement_vs_1d.png",
-           "Fig. 15 (" + what + "): radially averaged u_r of the fracturing lattice (solid) and of fdm1d without "
-           "fracture (dashed) at the same times.",
-           subdir}};
-}
-
-std::vector<Figure> fig16_figures(const std::string& subdir, const std::string& what) {
-  return {{"fig16_fracture_pressure.py", "fig16_fracture_pressure.png",
-           "Fig. 16 (" + what + "): pressure per triangle and broken beams, Q = 1, iota = 1e3; b = 0.2 (top), 0.8 "
-           "(bottom).",
-           subdir}};
-}
-
-std::vector<Figure> fig17_figures(const std::string& subdir, const std::string& what) {
-  return {{"fig17_fracture_pressure.py", "fig17_fracture_pressure.png",
-           "Fig. 17 (" + what + "): pressure per triangle and broken beams in tight rock, Q = 1, iota = 1e6; b = 0.2 "
-           "(top), 0.8 (bottom).",
-           subdir}};
-}
-
-const FractureFigure kFig14{"fig14", "Q = 0.01, iota = 1e3 (fast flow in the fractures)", fig14_figures, {"14", "15"}};
-const FractureFigure kFig16{"fig16", "Q = 1, iota = 1e3 (high injection rate)", fig16_figures, {"16"}};
-const FractureFigure kFig17{"fig17", "Q = 1, iota = 1e6 (tight rock)", fig17_figures, {"17"}};
-
-// --- Figs. 19-20: one case on lattices of several resolutions ---------------------------------------
+// --- runner "refinement" (Figs. 19-20): one case on lattices of several resolutions ------------------
 
 /// The resolutions of a refinement sweep case (its [sweep] lattice.n_particles), each a RunCase,
 /// expanded as `hmlattice sweep expand` does into root/<name>_cases/.
@@ -229,31 +199,31 @@ std::vector<RunCase> refinement_cases(const fs::path& sweep_case, const fs::path
   return out;
 }
 
-fs::path refinement_sweep(Tier tier) {
-  return tier == Tier::quick ? kCases / "sweep_fig19_quick.toml" : kCases / "paper" / "sweep_fig19.toml";
+fs::path refinement_sweep(const FigureSpec& f, Tier tier) {
+  return kCases / (tier == Tier::quick ? f.quick_sweep : f.paper_sweep);
 }
 
-/// Seeds per resolution: three where a run is cheap (the quick tier's coarsest lattice; N <= 2e4 in
-/// the paper tier, minutes a run), one above.
-std::vector<unsigned long long> refinement_seeds(long long n, Tier tier, bool coarsest) {
-  const bool scatter = tier == Tier::quick ? coarsest : n <= kScatterN;
-  return scatter ? kSeeds : std::vector<unsigned long long>{1};
+/// Seeds per resolution: the spec's scatter where a run is cheap (the quick tier's coarsest lattice;
+/// N <= the scatter's in the paper tier, minutes a run), seed 1 above.
+std::vector<unsigned long long> refinement_seeds(const FigureSpec& f, long long n, Tier tier, bool coarsest) {
+  const bool scatter = tier == Tier::quick ? coarsest : n <= f.scatter_particles;
+  return scatter ? f.scatter_seeds : std::vector<unsigned long long>{1};
 }
 
 /// Unique over both tiers (the quick and the paper sweep share their coarsest lattice).
-std::string refinement_label(long long n, unsigned long long seed, Tier tier) {
-  return std::string(tier == Tier::quick ? "fig19_quick" : "fig19") + "_N" + std::to_string(n) + "_seed" + std::to_string(seed);
+std::string refinement_label(const FigureSpec& f, long long n, unsigned long long seed, Tier tier) {
+  return f.id + (tier == Tier::quick ? "_quick" : "") + "_N" + std::to_string(n) + "_seed" + std::to_string(seed);
 }
 
 /// What the sweep plans, without the expansion's files (for --write-cases): the same RunCases.
-std::vector<PlannedRun> planned_refinement(Tier tier) {
-  const fs::path tmp = fs::temp_directory_path() / ("hmlattice-fig19-plan-" + std::to_string(::getpid()));
-  const std::vector<RunCase> cases = refinement_cases(refinement_sweep(tier), tmp);
+std::vector<PlannedRun> planned_refinement(const FigureSpec& f, Tier tier) {
+  const fs::path tmp = fs::temp_directory_path() / ("hmlattice-" + f.id + "-plan-" + std::to_string(::getpid()));
+  const std::vector<RunCase> cases = refinement_cases(refinement_sweep(f, tier), tmp);
   fs::remove_all(tmp);
   std::vector<PlannedRun> runs;
   for (const RunCase& c : cases)
-    for (unsigned long long seed : refinement_seeds(c.lattice.n_particles, tier, &c == &cases.front()))
-      runs.push_back({refinement_label(c.lattice.n_particles, seed, tier), with_lattice(c, c.lattice.n_particles, seed)});
+    for (unsigned long long seed : refinement_seeds(f, c.lattice.n_particles, tier, &c == &cases.front()))
+      runs.push_back({refinement_label(f, c.lattice.n_particles, seed, tier), with_lattice(c, c.lattice.n_particles, seed)});
   return runs;
 }
 
@@ -291,7 +261,7 @@ ShellRatio shell_ratio(const std::vector<double>& u, const std::vector<double>& 
 
 // One resolution's row of the refinement table: its seeds, and the means and deviations over them of the
 // last snapshot's counts, extent, fracture pressures and p_h, beside the paper's count.
-std::vector<std::string> resolution_row(const std::vector<const RunOutcome*>& group) {
+std::vector<std::string> resolution_row(const FigureSpec& f, const std::vector<const RunOutcome*>& group) {
   const auto last = [&](auto of) {
     std::vector<double> v;
     for (const RunOutcome* o : group)
@@ -309,16 +279,16 @@ std::vector<std::string> resolution_row(const std::vector<const RunOutcome*>& gr
          last([](const Snapshot& s) { return s.stats.max_radial_extent; }),
          last([](const Snapshot& s) { return s.fp.p_min; }), last([](const Snapshot& s) { return s.fp.p_max; }),
          last([](const Snapshot& s) { return s.p_h; }),
-         paper_reading("fig19", first.b, first.n_particles).fractures_text()};
+         f.panel(first.b, first.n_particles).reading.fractures_text()};
 }
 
-BenchmarkResult run_refinement(const BenchmarkContext& ctx) {
+BenchmarkResult run_refinement(const FigureSpec& f, const BenchmarkContext& ctx) {
   BenchmarkResult res;
-  const std::string subdir = std::string("fig19") + (ctx.tier == Tier::quick ? "_quick" : "_paper");
+  const std::string subdir = f.id + (ctx.tier == Tier::quick ? "_quick" : "_paper");
   const fs::path root = ctx.data_dir / subdir;
   fs::create_directories(root);
   RunSource source(root, ctx.runs_dir, ctx.progress);
-  const std::vector<RunCase> resolutions = refinement_cases(refinement_sweep(ctx.tier), root);
+  const std::vector<RunCase> resolutions = refinement_cases(refinement_sweep(f, ctx.tier), root);
   const fdm1d::Fdm1dResult ref = write_reference(resolutions.front(), root);
   Table table = refinement_table(), displacement = refinement_displacement_table(), snaps = snapshot_table(
       "Section 3.6, Fig. 19: 2 fractures at 684 particles, 4 above"), breakdown = breakdown_table(), timing = timing_table();
@@ -327,8 +297,8 @@ BenchmarkResult run_refinement(const BenchmarkContext& ctx) {
   std::vector<std::vector<const RunOutcome*>> by_resolution;
   for (const RunCase& c : resolutions) {
     const long long n = c.lattice.n_particles;
-    for (unsigned long long seed : refinement_seeds(n, ctx.tier, &c == &resolutions.front())) {
-      runs.push_back(source.run(with_lattice(c, n, seed), refinement_label(n, seed, ctx.tier), ref));
+    for (unsigned long long seed : refinement_seeds(f, n, ctx.tier, &c == &resolutions.front())) {
+      runs.push_back(source.run(with_lattice(c, n, seed), refinement_label(f, n, seed, ctx.tier), ref));
       in_figure.push_back(seed == 1);
     }
   }
@@ -336,7 +306,7 @@ BenchmarkResult run_refinement(const BenchmarkContext& ctx) {
   for (const auto& o : runs) {
     if (by_resolution.empty() || by_resolution.back().front()->n_particles != o.n_particles) by_resolution.emplace_back();
     by_resolution.back().push_back(&o);
-    const PaperReading reading = paper_reading("fig19", o.b, o.n_particles);
+    const PaperReading& reading = f.panel(o.b, o.n_particles).reading;
     add_snapshot_rows(o, snaps, reading);
     add_breakdown_row(o, breakdown);
     add_timing_row(o, timing);
@@ -346,7 +316,7 @@ BenchmarkResult run_refinement(const BenchmarkContext& ctx) {
   const RunOutcome& finest = *by_resolution.back().front();
   for (const auto& group : by_resolution) {
     const RunOutcome& first = *group.front();
-    table.rows.push_back(resolution_row(group));
+    table.rows.push_back(resolution_row(f, group));
     if (first.snaps.empty() || finest.snaps.empty()) continue;
     const ShellRatio r = shell_ratio(first.snaps.back().u_r, finest.snaps.back().u_r);
     displacement.rows.push_back({std::to_string(first.n_particles), fmt(first.snaps.back().t), fmt(r.mean),
@@ -366,62 +336,42 @@ BenchmarkResult run_refinement(const BenchmarkContext& ctx) {
   }
   res.tables = {table, displacement, snaps, breakdown, timing};
   const std::string what = ctx.tier == Tier::quick ? "quick tier" : "paper tier";
-  res.figures = {{"fig19_resolution_pressure.py", "fig19_resolution_pressure.png",
-                  "Fig. 19 (" + what + "): pressure per triangle and broken beams at t* = 2.5e-2 per resolution (seed 1), "
-                  "b = 0.5, Q = 0.01, iota = 1.",
-                  subdir},
-                 {"fig20_displacement_resolution.py", "fig20_displacement_resolution.png",
-                  "Fig. 20 (" + what + "): radially averaged u_r at t* = 2.5e-2 per resolution (seed 1).", subdir}};
+  res.figures = f.figures(subdir, what);
   res.notes.push_back(notes_common());
   if (const std::string read = source.note(); !read.empty()) res.notes.push_back(read);
-  res.notes.push_back("The resolutions are the sweep case's (" + refinement_sweep(ctx.tier).filename().string() +
+  res.notes.push_back("The resolutions are the sweep case's (" + refinement_sweep(f, ctx.tier).filename().string() +
                       "; the paper gives only 684 and 170 158, the four between are a geometric series). Data: " +
-                      subdir + "/fig19[_quick]_N<N>_seed<s>/ as `hmlattice run` writes it, runs.csv.");
+                      subdir + "/" + f.id + "[_quick]_N<N>_seed<s>/ as `hmlattice run` writes it, runs.csv.");
   return res;
 }
 
 }  // namespace
 
 void add_lattice2d_paper_figure_benchmarks(std::vector<Benchmark>& into) {
-  for (const FractureFigure* f : {&kFig14, &kFig16, &kFig17}) {
-    const std::string name = f->id == "fig14" ? "Figs. 14-15" : "Fig. " + f->id.substr(3);
+  for (const FigureSpec& spec : figure_specs()) {
+    if (spec.runner == FigureRunner::none) continue;
+    const FigureSpec* f = &spec;
+    const auto run = [f](const BenchmarkContext& ctx) {
+      return f->runner == FigureRunner::refinement ? run_refinement(*f, ctx) : run_fracture_figure(*f, ctx);
+    };
+    const auto plan = [f](Tier tier) {
+      return f->runner == FigureRunner::refinement ? planned_refinement(*f, tier) : planned(*f, tier);
+    };
     into.push_back({.id = "lattice2d." + f->id + "_quick",
-                    .title = "Fracture from a pressurised borehole, " + f->setting + ", b = 0.2 and 0.8 (" + name +
-                             ", quick)",
-                    .description = "cases/" + f->id + "_b0.2_quick.toml and cases/" + f->id +
-                                   "_b0.8_quick.toml: fracture counts, the fluid (pressure range, in the fractures, "
-                                   "backflows) and the breakdown per output time, beside what the paper says of " + name + ".",
+                    .title = f->quick_title,
+                    .description = f->quick_description,
                     .tier = Tier::quick,
-                    .run = [f](const BenchmarkContext& ctx) { return run_fracture_figure(*f, ctx); },
-                    .planned_runs = [f] { return planned(*f, Tier::quick); },
+                    .run = run,
+                    .planned_runs = [plan] { return plan(Tier::quick); },
                     .paper_figures = f->paper_figures});
     into.push_back({.id = "lattice2d." + f->id,
-                    .title = "Fracture from a pressurised borehole, " + f->setting + ", b = 0.2 and 0.8, N = 1e5 and a "
-                             "seed scatter at N = 2e4 (" + name + ")",
-                    .description = "cases/paper/" + f->id + "_b0.2.toml and cases/paper/" + f->id +
-                                   "_b0.8.toml at the paper's resolution, and each at N = 2e4 with seeds 1, 2, 3: as the "
-                                   "quick benchmark, plus mean ± sd over the seeds.",
+                    .title = f->paper_title,
+                    .description = f->paper_description,
                     .tier = Tier::paper,
-                    .run = [f](const BenchmarkContext& ctx) { return run_fracture_figure(*f, ctx); },
-                    .planned_runs = [f] { return planned(*f, Tier::paper); },
+                    .run = run,
+                    .planned_runs = [plan] { return plan(Tier::paper); },
                     .paper_figures = f->paper_figures});
   }
-  into.push_back({.id = "lattice2d.fig19_quick",
-                  .title = "Lattice-size refinement, b = 0.5, Q = 0.01, iota = 1 at t* = 2.5e-2 (Figs. 19-20, quick)",
-                  .description = "cases/sweep_fig19_quick.toml's resolutions (684, three seeds, and 3000): fracture "
-                                 "counts, pressure range and u_r per resolution beside the paper's Section 3.6.",
-                  .tier = Tier::quick,
-                  .run = run_refinement,
-                  .planned_runs = [] { return planned_refinement(Tier::quick); },
-                  .paper_figures = {"19", "20"}});
-  into.push_back({.id = "lattice2d.fig19",
-                  .title = "Lattice-size refinement from 684 to 170 158 particles (Figs. 19-20)",
-                  .description = "cases/paper/sweep_fig19.toml's six resolutions, three seeds up to N = 2e4: as the "
-                                 "quick benchmark.",
-                  .tier = Tier::paper,
-                  .run = run_refinement,
-                  .planned_runs = [] { return planned_refinement(Tier::paper); },
-                  .paper_figures = {"19", "20"}});
 }
 
 }  // namespace hm::verification

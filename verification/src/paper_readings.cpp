@@ -1,69 +1,13 @@
-// What the paper says of its fracture figures: see paper_readings.hpp.
+// What the paper says of its fracture figures: see paper_readings.hpp; the readings themselves are
+// the figure specs' (verification/specs/).
 #include "paper_readings.hpp"
 
-#include <stdexcept>
 #include <vector>
 
+#include "figure_specs.hpp"
 #include "hm/verification/benchmark.hpp"
 
 namespace hm::verification {
-
-namespace {
-
-using Secondary = PaperReading::Secondary;
-using Sign = PaperReading::FracturePressureSign;
-
-// Section 4: "In the final state, when fractures reach the boundary of the domain, ... a negative
-// pressure in most fractures far from the borehole independent of Q and iota".
-constexpr Sign final_state_sign = Sign::negative_at_last_time;
-
-PaperReading fig12(double b) {
-  return {.figure = "Fig. 12", .fractures = b < 0.5 ? 3 : 7, .reaching_outer = PaperReading::all,
-          // Section 3.3: the secondary fractures of Q = 1 were "not observed in the low Q case".
-          .secondary = Secondary::none, .pressure = Sign::negative_at_every_time,
-          .quote = b < 0.5 ? "3 nearly equidistant fractures for b = 0.2, growing until reaching the domain boundary"
-                           : "7 fractures for b = 0.8, growing until reaching the domain boundary"};
-}
-
-PaperReading fig14(double b) {
-  return {.figure = "Fig. 14", .fractures = b < 0.5 ? 2 : 3, .reaching_outer = PaperReading::all,
-          .secondary = Secondary::none, .pressure = final_state_sign, .borehole_pressure_drops = true,
-          .quote = b < 0.5 ? "B: the borehole pressure has dropped significantly; D: both fractures have reached the "
-                             "boundary; the deformation is limited by a negative pressure in the fractures"
-                           : "E: 2 hardly visible fractures; G: a third fracture is initiated; H: all 3 fractures "
-                             "have reached the boundary, and the pressure is reduced"};
-}
-
-PaperReading fig16(double b) {
-  if (b < 0.5)
-    return {.figure = "Fig. 16", .fractures = 4, .reaching_outer = 1, .secondary = Secondary::at_outer_boundary,
-            .pressure = Sign::negative_at_every_time, .borehole_pressure_drops = true,
-            .quote = "A: three radial fractures, open too rapidly to become fluid filled (negative pressure); B: four, "
-                     "secondary fractures initiate at the domain boundary; D: one reaches the boundary, the borehole "
-                     "pressure drops"};
-  return {.figure = "Fig. 16", .fractures = 7, .reaching_outer = 0, .secondary = Secondary::between_primaries,
-          .pressure = Sign::negative_at_every_time, .backflow_into_domain = true,
-          .quote = "E: seven radial fractures; F-G: secondary fractures between the primaries; H: the primaries almost "
-                   "connected to the boundary, several secondary ones are, causing a backflow of fluid into the domain"};
-}
-
-PaperReading fig17(double b) {
-  return {.figure = "Fig. 17", .fractures = b < 0.5 ? 3 : 2, .reaching_outer = PaperReading::all,
-          .pressure = final_state_sign, .backflow_into_borehole = true, .borehole_pressure_drops = true,
-          .quote = b < 0.5 ? "A: a single radial fracture; C: a third; D: all 3 connected to the boundary, fluid flows "
-                             "back into the borehole"
-                           : "E: two radial fractures; G: they reach the boundary; H: the borehole pressure is "
-                             "significantly reduced, backflow into the borehole"};
-}
-
-PaperReading fig19(long long n_particles) {
-  // Section 3.6 gives the coarsest lattice (684) 2 fractures and every finer one 4.
-  return {.figure = "Fig. 19", .fractures = n_particles < 1000 ? 2 : 4,
-          .quote = "only 2 fractures at 684 particles, 4 at every higher resolution, of similar length, with a similar "
-                   "maximum pressure"};
-}
-
-}  // namespace
 
 const std::vector<PaperFigure>& paper_result_figures() {
   static const std::vector<PaperFigure> figures = {
@@ -85,12 +29,6 @@ const std::vector<PaperFigure>& paper_result_figures() {
   return figures;
 }
 
-DisplacementReading fig15_reading(double b) {
-  // Both panels: "no fractures, DEM data fit 1D FDM data" at t* = 2.3e-3 and 4.5e-3; then b = 0.2 "the
-  // displacement increases at most radial positions", b = 0.8 "the displacement is reduced at all".
-  return {.last_unbroken_t = 4.5e-3, .above_after = b < 0.5};
-}
-
 std::string PaperReading::fractures_text() const {
   if (fractures == not_stated) return "not stated";
   std::string s = std::to_string(fractures);
@@ -110,12 +48,7 @@ std::string PaperReading::secondary_text() const {
 }
 
 PaperReading paper_reading(const std::string& figure_id, double b, long long n_particles) {
-  if (figure_id == "fig12") return fig12(b);
-  if (figure_id == "fig14") return fig14(b);
-  if (figure_id == "fig16") return fig16(b);
-  if (figure_id == "fig17") return fig17(b);
-  if (figure_id == "fig19") return fig19(n_particles);
-  throw std::logic_error("paper_reading: no reading of " + figure_id);
+  return figure_spec(figure_id).panel(b, n_particles).reading;
 }
 
 }  // namespace hm::verification

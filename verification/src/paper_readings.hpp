@@ -24,15 +24,8 @@ struct PaperReading {
   std::string secondary_text() const;
 };
 
-/// Fig. 15: the lattice's u_r against the 1D model without fracture.
-struct DisplacementReading {
-  double last_unbroken_t = 0.0;  ///< unbroken, on the 1D curve, up to this output time
-  bool above_after = false;      ///< then u_r above the 1D curve (b = 0.2: "increases at most radial positions")
-};
-DisplacementReading fig15_reading(double b);
-
-/// Fig. 12 (Q = 0.01, iota = 1), Fig. 14 (iota = 1e3), Fig. 16 (Q = 1, iota = 1e3), Fig. 17 (Q = 1,
-/// iota = 1e6) for b = 0.2 or 0.8, and Fig. 19 (b = 0.5) at `n_particles` (2 fractures at 684, 4 above).
+/// The reading of figure `figure_id` ("fig12") for the panel with Biot coefficient b at `n_particles`,
+/// from its spec file (verification/specs/<figure_id>.toml).
 PaperReading paper_reading(const std::string& figure_id, double b, long long n_particles = 0);
 
 }  // namespace hm::verification

@@ -26,6 +26,9 @@ class CaseTable {
   std::string get_string(const std::string& key, const std::string& default_value);
   bool get_bool(const std::string& key, bool default_value);
   std::vector<double> get_doubles(const std::string& key, const std::vector<double>& default_value);
+  std::vector<std::string> get_strings(const std::string& key, const std::vector<std::string>& default_value);
+  /// Whether `key` is present and a string (for a key that takes a number or a word, e.g. 3 or "all").
+  bool is_string(const std::string& key) const;
   /// An array of arrays of finite numbers, each inner one of `size` entries ([[x0, y0, x1, y1], ...]).
   std::vector<std::vector<double>> get_double_lists(const std::string& key, std::size_t size,
                                                     const std::vector<std::vector<double>>& default_value);
@@ -33,6 +36,8 @@ class CaseTable {
   void ignore(const std::string& key) { used_.insert(key); }
   /// A sub-table; an empty one if absent.
   CaseTable table(const std::string& key);
+  /// An array of tables ([[key]] ...), each named "key[i]" in messages; empty if absent.
+  std::vector<CaseTable> tables(const std::string& key);
 
   /// Throws for the first key nobody asked for, listing the keys that are understood here.
   void reject_unknown() const;
