@@ -482,13 +482,7 @@ BenchmarkResult sawtooth_uniaxial_tension(const BenchmarkContext& ctx) {
     l2::StrengthSpec strength_seeded = strength_spec;
     strength_seeded.seed = seed;
     l2::BeamStrengths strengths = l2::draw_beam_strengths(strength_seeded, lattice.n_beams());
-    for (int e = 0; e < lattice.n_beams(); ++e) {  // grips, as in uniaxial_tension
-      const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
-      if (0.5 * std::abs(lattice.points(1, i) + lattice.points(1, j)) > 0.4 * spec.height) {
-        strengths.tensile[e] *= 10;
-        strengths.compressive[e] *= 10;
-      }
-    }
+    strengthen_grips(lattice, spec.height, strengths);
     l2::SawtoothLaw law(lattice, dual, beam_parameters(), strengths, law_options);
     m.solve();
     const double e_prime = top_force(m, top) / spec.width;
