@@ -233,9 +233,10 @@ void add_breakdown(CLI::App* parent) {
   };
   auto a = std::make_shared<Args>();
   auto* cmd = parent->add_subcommand(
-      "breakdown", "Breakdown pressures: without --SH/--Sh the unfractured borehole's limits (1D model: q_min, slow, "
-                   "fast, jacketed); with them Hubbert-Willis, Haimson-Fairhurst and the jacketed annulus under the "
-                   "far field (docs/insitu.md)");
+      "breakdown",
+      "Breakdown pressures: without --SH/--Sh the unfractured borehole's limits (1D model: q_min, slow, "
+      "fast, jacketed); with them Hubbert-Willis, Haimson-Fairhurst and the jacketed annulus under the "
+      "far field (docs/insitu.md)");
   cmd->add_option("--b", a->b, "comma-separated Biot coefficients; E/M by Eq. 22 with Table 1's porosity, K_w, E")
       ->delimiter(',')
       ->required();
@@ -243,7 +244,8 @@ void add_breakdown(CLI::App* parent) {
   cmd->add_option("--Ri,--R_i", a->d.R_i, "borehole radius R_i/R")->capture_default_str();
   cmd->add_option("--Tu,--T_u", a->d.tensile_strength, "tensile strength T_u/E")->capture_default_str();
   auto* SH = cmd->add_option("--SH,--S_H", a->SH, "largest far-field stress magnitude S_H/E, compression positive");
-  auto* Sh = cmd->add_option("--Sh,--S_h", a->Sh, "smallest far-field stress magnitude S_h/E <= S_H, compression positive");
+  auto* Sh =
+      cmd->add_option("--Sh,--S_h", a->Sh, "smallest far-field stress magnitude S_h/E <= S_H, compression positive");
   auto* p0 = cmd->add_option("--p0", a->p0, "in-situ pore pressure p0/E, compression positive (with --SH, --Sh)")
                  ->capture_default_str();
   SH->needs(Sh);

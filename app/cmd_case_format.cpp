@@ -7,7 +7,8 @@
 namespace hm::app {
 
 void add_case_format_command(CLI::App& app) {
-  CLI::App* cmd = app.add_subcommand("case-format", "Print the case-file reference: every key, default and rule (markdown)");
+  CLI::App* cmd =
+      app.add_subcommand("case-format", "Print the case-file reference: every key, default and rule (markdown)");
   cmd->callback([] { std::cout << cases::case_format_reference(); });
 }
 

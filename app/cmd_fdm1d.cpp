@@ -12,14 +12,14 @@
 #include <iostream>
 
 #include "commands.hpp"
-#include "hm/core/file_output.hpp"
-#include "hm/core/interrupt.hpp"
-#include "hm/core/result_folder.hpp"
-#include "hm/fdm1d/fdm1d.hpp"
 #include "hm/case/fdm1d_case.hpp"
 #include "hm/case/fdm1d_output.hpp"
 #include "hm/case/progress.hpp"
 #include "hm/case/provenance.hpp"
+#include "hm/core/file_output.hpp"
+#include "hm/core/interrupt.hpp"
+#include "hm/core/result_folder.hpp"
+#include "hm/fdm1d/fdm1d.hpp"
 
 namespace hm::app {
 
@@ -40,9 +40,9 @@ void add_fdm1d_command(CLI::App& app, int& exit_code, const std::string& command
     core::ResultFolder out(output_folder(a->out, a->case_file), "--out", a->overwrite, command_line);
     const auto& p = c.physics.parameters;
     std::cout << "fdm1d: Q = " << p.Q << ", b = " << p.material.b << ", nu = " << p.material.nu
-              << ", E/M = " << p.material.E_over_M << ", R_i = " << p.R_i << ", vol_strain = "
-              << core::name_of(p.material.vol_strain) << "; n_r = " << c.numerics.n_r << ", t_end = " << c.numerics.t_end
-              << "\n";
+              << ", E/M = " << p.material.E_over_M << ", R_i = " << p.R_i
+              << ", vol_strain = " << core::name_of(p.material.vol_strain) << "; n_r = " << c.numerics.n_r
+              << ", t_end = " << c.numerics.t_end << "\n";
 
     // 2. Run, with a progress line on long runs; every step is written as it is finished.
     cases::ProgressReporter progress(std::cout, "fdm1d");

@@ -23,16 +23,19 @@ void add_fractures_command(CLI::App& app, const std::string& command_line) {
   auto a = std::make_shared<Args>();
   auto* cmd = app.add_subcommand("fractures", "Recompute the fracture statistics of a finished run");
   cmd->add_option("run", a->run_dir, "output folder of `hmlattice run` with [fracture] enabled")->required();
-  cmd->add_option("--link", a->link, "broken beams of one fracture share a 'particle' or a 'triangle' (default: the run's)");
-  cmd->add_option("--arm-gap", a->arm_gap, "arms closer than this along the arm circle, over R, count as one in "
-                                           "n_arms_fixed_gap (default: the run's; 0.03 for a run without the key)");
+  cmd->add_option("--link", a->link,
+                  "broken beams of one fracture share a 'particle' or a 'triangle' (default: the run's)");
+  cmd->add_option("--arm-gap", a->arm_gap,
+                  "arms closer than this along the arm circle, over R, count as one in "
+                  "n_arms_fixed_gap (default: the run's; 0.03 for a run without the key)");
   cmd->callback([a, command_line] {
     cases::StatisticsChange change;
     if (a->link) change.link = core::from_name<lattice2d::FractureLink>(*a->link, "--link");
     change.arm_gap = a->arm_gap;
     const auto done = cases::recompute_fracture_statistics(a->run_dir, change, command_line);
-    std::cout << "fractures: " << done.n_breaks << " breaks, " << done.n_snapshots << " snapshots\nResults: "
-              << a->run_dir << "/{fractures,fracture_summary}.csv, config.toml (the rules used in its [output])\n";
+    std::cout << "fractures: " << done.n_breaks << " breaks, " << done.n_snapshots
+              << " snapshots\nResults: " << a->run_dir
+              << "/{fractures,fracture_summary}.csv, config.toml (the rules used in its [output])\n";
   });
 }
 

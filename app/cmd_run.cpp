@@ -23,20 +23,20 @@
 #include "commands.hpp"
 #include "hm/case/checkpoint.hpp"
 #include "hm/case/coupled_model_of_case.hpp"
-#include "hm/core/peak_memory.hpp"
-#include "hm/core/file_output.hpp"
-#include "hm/core/input_error.hpp"
-#include "hm/core/interrupt.hpp"
-#include "hm/core/toml_text.hpp"
-#include "hm/core/validation.hpp"
-#include "hm/core/result_folder.hpp"
-#include "hm/lattice2d/mechanics/calibration.hpp"
-#include "hm/lattice2d/coupled/coupled_model.hpp"
 #include "hm/case/progress.hpp"
 #include "hm/case/provenance.hpp"
 #include "hm/case/run_case.hpp"
 #include "hm/case/run_files.hpp"
 #include "hm/case/run_output.hpp"
+#include "hm/core/file_output.hpp"
+#include "hm/core/input_error.hpp"
+#include "hm/core/interrupt.hpp"
+#include "hm/core/peak_memory.hpp"
+#include "hm/core/result_folder.hpp"
+#include "hm/core/toml_text.hpp"
+#include "hm/core/validation.hpp"
+#include "hm/lattice2d/coupled/coupled_model.hpp"
+#include "hm/lattice2d/mechanics/calibration.hpp"
 
 namespace hm::app {
 
@@ -66,9 +66,9 @@ void run_case(const RunArgs& a, int& exit_code, const std::string& command_line)
   //    computing. A resumed run reads its folder's config.toml and continues in that folder.
   const bool resuming = !a.resume.empty();
   std::unique_ptr<core::ResultFolder> out =
-      resuming ? std::make_unique<core::ResultFolder>(core::ResultFolder::Resume{}, a.resume, "--resume", command_line)
-               : std::make_unique<core::ResultFolder>(output_folder(a.out, a.case_file), "--out", a.overwrite,
-                                                      command_line);
+      resuming
+          ? std::make_unique<core::ResultFolder>(core::ResultFolder::Resume{}, a.resume, "--resume", command_line)
+          : std::make_unique<core::ResultFolder>(output_folder(a.out, a.case_file), "--out", a.overwrite, command_line);
   const cases::RunCase c = resuming ? cases::read_run_case(cases::run_file_path(out->path(), cases::RunFileId::config))
                                     : cases::read_run_case(a.case_file, a.set);
   const std::string case_text = cases::run_case_to_toml(c, "");
@@ -79,9 +79,8 @@ void run_case(const RunArgs& a, int& exit_code, const std::string& command_line)
   if (!c.insitu.is_zero())
     std::cout << " (S_H = " << c.insitu.S_H << ", S_h = " << c.insitu.S_h << " at " << c.insitu.theta_H_deg
               << " deg, p0 = " << c.insitu.p0 << ")";
-  std::cout << "; split "
-            << core::name_of(c.coupling.split) << ", Psi = " << c.coupling.terms.psi << ", xi = " << c.coupling.terms.xi
-            << "; t_end = " << c.stepping.t_end << "\n";
+  std::cout << "; split " << core::name_of(c.coupling.split) << ", Psi = " << c.coupling.terms.psi
+            << ", xi = " << c.coupling.terms.xi << "; t_end = " << c.stepping.t_end << "\n";
 
   // 2. Build the lattice and the coupled model (mechanics factorised once, with the Eq. 20 springs).
   //    The beams are the toolkit's calibrated constants (E = 1; the lattice's nu is
@@ -100,14 +99,14 @@ void run_case(const RunArgs& a, int& exit_code, const std::string& command_line)
       f << cases::run_case_to_toml(c, cases::to_toml(cases::make_provenance(command_line)));
     });
   }
-  const double setup_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_start).count();
+  const double setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_start).count();
   std::cout << "lattice: " << model->lattice().n_particles() << " particles, " << model->lattice().n_beams()
             << " beams, " << model->lattice().n_triangles() << " triangles\n";
   if (const lattice2d::SawtoothLaw* law = model->sawtooth_law())
     std::cout << "saw-tooth law: G_f/(E R) = " << core::format_value(law->options().fracture_energy) << ", "
-              << law->options().teeth.n_teeth << " teeth of ratio " << core::format_value(law->options().teeth.reduction)
-              << "; " << law->n_brittle_beams() << " of " << model->lattice().n_beams()
+              << law->options().teeth.n_teeth << " teeth of ratio "
+              << core::format_value(law->options().teeth.reduction) << "; " << law->n_brittle_beams() << " of "
+              << model->lattice().n_beams()
               << " beams are too long for their G_f and have one tooth at the strength that dissipates it\n";
   const int first_step = model->run_cursor().totals.n_steps;
   if (resuming)
@@ -140,28 +139,30 @@ void run_case(const RunArgs& a, int& exit_code, const std::string& command_line)
   };
   double step_seconds = 0.0;  // for the ETA of the progress line
   bool stopped_at_first_break = false;
-  const auto run = model->run(c.stepping, [&](const lattice2d::CoupledModel& m, const lattice2d::CoupledStepSummary& s,
-                                              bool is_output) {
-    recorder->record(m, s, is_output || c.reached_first_break(m));
-    step = m.run_cursor().totals.n_steps;  // accepted steps so far (0 at the initial state)
-    const double since = std::chrono::duration<double>(std::chrono::steady_clock::now() - last_checkpoint).count();
-    if (step > 0 && (is_output || since >= a.checkpoint_seconds || step == a.stop_after_steps)) checkpoint(m);
-    step_seconds += s.seconds;
-    const int remaining = remaining_steps(m.time(), s.dt, c.stepping);
-    const int done = step - first_step;
-    progress.update(m.time(), c.stepping.t_end,
-                    "step " + std::to_string(step) + ", broken " + std::to_string(m.n_broken()) + ", iterations " +
-                        std::to_string(s.iterations) + ", contact switches " + std::to_string(s.n_contact_changes) +
-                        ", refactorisations " + std::to_string(s.n_mechanics_factorizations) + " (" +
-                        std::to_string(s.n_mechanics_update_failures) + " after failed updates), ETA " +
-                        std::to_string(static_cast<int>(done > 0 ? step_seconds / done * remaining : 0.0)) + " s" +
-                        (s.n_mechanics_update_failures > 0
-                             ? "; last failed update: " + m.mechanics().solver().report().last_update_failure
-                             : std::string()));
-  }, [&] {
-    stopped_at_first_break = c.reached_first_break(*model);
-    return stopped_at_first_break || interrupt.signal() != 0 || step == a.stop_after_steps;
-  });
+  const auto run = model->run(
+      c.stepping,
+      [&](const lattice2d::CoupledModel& m, const lattice2d::CoupledStepSummary& s, bool is_output) {
+        recorder->record(m, s, is_output || c.reached_first_break(m));
+        step = m.run_cursor().totals.n_steps;  // accepted steps so far (0 at the initial state)
+        const double since = std::chrono::duration<double>(std::chrono::steady_clock::now() - last_checkpoint).count();
+        if (step > 0 && (is_output || since >= a.checkpoint_seconds || step == a.stop_after_steps)) checkpoint(m);
+        step_seconds += s.seconds;
+        const int remaining = remaining_steps(m.time(), s.dt, c.stepping);
+        const int done = step - first_step;
+        progress.update(m.time(), c.stepping.t_end,
+                        "step " + std::to_string(step) + ", broken " + std::to_string(m.n_broken()) + ", iterations " +
+                            std::to_string(s.iterations) + ", contact switches " + std::to_string(s.n_contact_changes) +
+                            ", refactorisations " + std::to_string(s.n_mechanics_factorizations) + " (" +
+                            std::to_string(s.n_mechanics_update_failures) + " after failed updates), ETA " +
+                            std::to_string(static_cast<int>(done > 0 ? step_seconds / done * remaining : 0.0)) + " s" +
+                            (s.n_mechanics_update_failures > 0
+                                 ? "; last failed update: " + m.mechanics().solver().report().last_update_failure
+                                 : std::string()));
+      },
+      [&] {
+        stopped_at_first_break = c.reached_first_break(*model);
+        return stopped_at_first_break || interrupt.signal() != 0 || step == a.stop_after_steps;
+      });
   // Ending at the first break is the run's end, not an interruption (whatever else came with that step).
   const bool complete = run.is_ok() || stopped_at_first_break;
   char summary[500];
@@ -176,7 +177,8 @@ void run_case(const RunArgs& a, int& exit_code, const std::string& command_line)
                 run.max_balance_error, setup_seconds, run.mechanics_seconds, run.stress_seconds, run.break_seconds,
                 run.geometry_seconds, run.flow_seconds, core::peak_memory_bytes() / 1e6);
   progress.finish(summary);
-  if (run.n_mechanics_update_failures > 0)  // each cost a refactorisation: say what CHOLMOD reported (docs/borehole_fracture.md)
+  if (run.n_mechanics_update_failures >
+      0)  // each cost a refactorisation: say what CHOLMOD reported (docs/borehole_fracture.md)
     std::cout << "last failed update: " << model->mechanics().solver().report().last_update_failure << "\n";
 
   // 4. Everything appears at once. A run that stopped early keeps every step it finished, marked
@@ -187,9 +189,10 @@ void run_case(const RunArgs& a, int& exit_code, const std::string& command_line)
   recorder->finish();
   if (!complete) {
     const bool interrupted = run.status == lattice2d::CoupledStatus::interrupted;
-    const std::string why = !interrupted                ? "numerical failure: " + run.message
-                            : interrupt.signal() != 0 ? std::string("interrupted by ") + interrupt.signal_name()
-                                                      : "stopped after step " + std::to_string(step) + " (--stop-after-steps)";
+    const std::string why = !interrupted ? "numerical failure: " + run.message
+                            : interrupt.signal() != 0
+                                ? std::string("interrupted by ") + interrupt.signal_name()
+                                : "stopped after step " + std::to_string(step) + " (--stop-after-steps)";
     // A resumed folder stays where it is when it stops again (a killed run's staging folder included).
     const std::filesystem::path kept = resuming ? std::filesystem::path(a.resume) : out->target();
     core::write_stopped_status(out->path() / "status.toml", "run", why, step, model->time(), c.stepping.t_end, kept,
@@ -241,8 +244,9 @@ void add_run_command(CLI::App& app, int& exit_code, const std::string& command_l
                                  "continue the run in this folder (one that stopped before t_end) from its checkpoint");
   add_set_option(*cmd, a->set);
   resume->excludes(file)->excludes("--out")->excludes("--overwrite")->excludes("--set");
-  cmd->add_option("--checkpoint-every", a->checkpoint_seconds,
-                  "write a checkpoint at least every this many seconds of wall time (and at each output time; 0: every step)")
+  cmd->add_option(
+         "--checkpoint-every", a->checkpoint_seconds,
+         "write a checkpoint at least every this many seconds of wall time (and at each output time; 0: every step)")
       ->check(finite_between(0.0, 1e9))
       ->capture_default_str();
   cmd->add_option("--stop-after-steps", a->stop_after_steps,
@@ -250,8 +254,7 @@ void add_run_command(CLI::App& app, int& exit_code, const std::string& command_l
       ->check(integer_between(1, 100000000));
   cmd->footer(cases::run_files_help());
   cmd->callback([a, &exit_code, command_line, file, resume] {
-    if (file->count() == 0 && resume->count() == 0)
-      throw InputError("run: a case file or --resume DIR is required");
+    if (file->count() == 0 && resume->count() == 0) throw InputError("run: a case file or --resume DIR is required");
     run_case(*a, exit_code, command_line);
   });
 }

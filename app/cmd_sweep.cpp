@@ -48,7 +48,8 @@ void expand(const SweepArgs& a, const std::string& command_line, int& exit_code)
   out.commit();
   std::cout << "sweep: " << sweep.combinations.size() << " " << sweep.model << " cases over";
   for (const cases::SweepAxis& axis : sweep.axes) std::cout << " " << axis.key << " (" << axis.values.size() << ")";
-  std::cout << "\nResults: " << out.target().string() << "/{" << cases::sweep_index_name << ", <name>.toml}; run each with"
+  std::cout << "\nResults: " << out.target().string() << "/{" << cases::sweep_index_name
+            << ", <name>.toml}; run each with"
             << " hmlattice " << sweep.command << " <name>.toml --out <runs>/<name>\n";
 }
 
@@ -57,8 +58,9 @@ void collect(const SweepArgs& a) {
   std::ostringstream csv;
   const cases::SweepCollectCounts n = cases::collect_sweep(a.folder, a.runs, csv);
   std::cout << csv.str();
-  std::cerr << "sweep collect: " << n.complete + n.incomplete + n.missing + n.other_case << " combinations: " << n.complete
-            << " complete, " << n.incomplete << " incomplete, " << n.missing << " missing"
+  std::cerr << "sweep collect: " << n.complete + n.incomplete + n.missing + n.other_case
+            << " combinations: " << n.complete << " complete, " << n.incomplete << " incomplete, " << n.missing
+            << " missing"
             << (n.other_case > 0 ? ", " + std::to_string(n.other_case) +
                                        " of another case (status 'other case': made before the sweep changed? remove "
                                        "them to have them redone)"
@@ -72,7 +74,8 @@ void add_sweep_command(CLI::App& app, int& exit_code, const std::string& command
   auto a = std::make_shared<SweepArgs>();
   auto* cmd = app.add_subcommand("sweep", "Parameter studies: expand a [sweep] case, collect its runs' results");
   cmd->require_subcommand(1);
-  auto* ex = cmd->add_subcommand("expand", "Write one resolved case per combination of a case's [sweep] lists, and index.csv");
+  auto* ex =
+      cmd->add_subcommand("expand", "Write one resolved case per combination of a case's [sweep] lists, and index.csv");
   ex->add_option("case", a->case_file, "case file (TOML) with a [sweep] table")->required();
   add_output_options(*ex, a->out, a->overwrite);
   ex->add_option("--max-combinations", a->max_combinations,

@@ -27,8 +27,7 @@ void add_verify_command(CLI::App& app, int& exit_code, const std::string& comman
   auto opt = std::make_shared<Options>();
   cmd->add_option("--tier", opt->tier, "quick (minutes, run by the tests) or paper (paper resolution)")
       ->capture_default_str();
-  cmd->add_option("--out", opt->out,
-                  "output folder: a new or empty folder, or an earlier report with --overwrite")
+  cmd->add_option("--out", opt->out, "output folder: a new or empty folder, or an earlier report with --overwrite")
       ->capture_default_str();
   cmd->add_flag("--overwrite", opt->overwrite, "replace the output folder if it holds an earlier hmlattice result");
   cmd->add_option("--jobs", opt->jobs,
@@ -81,9 +80,10 @@ void add_verify_command(CLI::App& app, int& exit_code, const std::string& comman
     options.jobs = opt->jobs;
     options.command_line = command_line;
     const auto summary = verification::run_harness(verification::all_benchmarks(), options, std::cout);
-    std::cout << "\n" << summary.n_benchmarks << " benchmarks, " << summary.n_metrics << " metrics: "
-              << summary.n_failed << " failed, " << summary.n_benchmark_errors << " errors, "
-              << summary.n_missing_figures << " figures missing\n"
+    std::cout << "\n"
+              << summary.n_benchmarks << " benchmarks, " << summary.n_metrics << " metrics: " << summary.n_failed
+              << " failed, " << summary.n_benchmark_errors << " errors, " << summary.n_missing_figures
+              << " figures missing\n"
               << "Report: " << summary.report.string() << "\n";
     exit_code = summary.ok() ? 0 : 1;
   });

@@ -19,9 +19,9 @@
 #include <string>
 
 #include "commands.hpp"
-#include "hm/core/input_error.hpp"
 #include "hm/case/blas_threads.hpp"
 #include "hm/case/provenance.hpp"
+#include "hm/core/input_error.hpp"
 
 namespace {
 
@@ -37,7 +37,9 @@ void reject_empty_values(CLI::App& app) {
   for (CLI::Option* opt : app.get_options())
     if (opt->get_type_size_max() > 0)
       opt->check(CLI::Validator(
-          [](std::string& value) { return value.empty() ? std::string("'' (empty), allowed: a value") : std::string(); },
+          [](std::string& value) {
+            return value.empty() ? std::string("'' (empty), allowed: a value") : std::string();
+          },
           "", "non-empty"));
   for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) reject_empty_values(*sub);
 }
@@ -62,7 +64,8 @@ int main(int argc, char** argv) {
   CLI::App app{"hmlattice: fluid-driven fracture in porous rock, verified (Ulven & Sun 2017)", "hmlattice"};
   app.require_subcommand(1);
   const hm::cases::Provenance build = hm::cases::make_provenance("");
-  app.set_version_flag("--version", build.version + " (commit " + build.git_commit + ", " + build.build_type + " build)");
+  app.set_version_flag("--version",
+                       build.version + " (commit " + build.git_commit + ", " + build.build_type + " build)");
   int exit_code = 0;
   hm::app::add_verify_command(app, exit_code, joined(argc, argv));
   hm::app::add_fdm1d_command(app, exit_code, joined(argc, argv));

@@ -51,6 +51,7 @@ double seconds_per_step(Eigen::Index n, int depth, int repeats) {
 int main() {
   std::printf("%10s %6s %14s\n", "unknowns", "depth", "s per next()");
   for (const Eigen::Index n : {50000, 500000})
-    for (const int depth : {10, 20}) std::printf("%10ld %6d %14.4f\n", static_cast<long>(n), depth, seconds_per_step(n, depth, 15));
+    for (const int depth : {10, 20})
+      std::printf("%10ld %6d %14.4f\n", static_cast<long>(n), depth, seconds_per_step(n, depth, 15));
   return 0;
 }

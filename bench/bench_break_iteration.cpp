@@ -20,12 +20,12 @@
 #include <vector>
 
 #include "hm/analytic/biot_modulus.hpp"
-#include "hm/lattice2d/mechanics/calibration.hpp"
 #include "hm/lattice2d/coupled/coupling.hpp"
-#include "hm/lattice2d/geometry/dual_graph.hpp"
 #include "hm/lattice2d/fracture/fracture.hpp"
-#include "hm/lattice2d/mechanics/mechanics.hpp"
 #include "hm/lattice2d/fracture/strength.hpp"
+#include "hm/lattice2d/geometry/dual_graph.hpp"
+#include "hm/lattice2d/mechanics/calibration.hpp"
+#include "hm/lattice2d/mechanics/mechanics.hpp"
 
 using namespace hm::lattice2d;
 

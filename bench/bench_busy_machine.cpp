@@ -42,7 +42,8 @@ void replace(std::string& text, const std::string& from, const std::string& to) 
 // Wall seconds of `hmlattice run case.toml` in `dir` with the environment assignments `env`.
 double timed_run(const fs::path& dir, const std::string& env) {
   fs::remove_all(dir / "out");
-  const std::string cmd = "cd '" + dir.string() + "' && env " + env + " '" HMLATTICE_EXE "' run case.toml --out out > run.log 2>&1";
+  const std::string cmd =
+      "cd '" + dir.string() + "' && env " + env + " '" HMLATTICE_EXE "' run case.toml --out out > run.log 2>&1";
   const auto start = std::chrono::steady_clock::now();
   if (std::system(cmd.c_str()) != 0) throw std::runtime_error("the run failed: see " + (dir / "run.log").string());
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -69,9 +70,10 @@ int main(int argc, char** argv) {
   const std::vector<Mode> modes = {{"one thread (OMP_NUM_THREADS=1)", "OMP_NUM_THREADS=1"},
                                    {"default (asleep between regions)", "HM_BENCH=1"},
                                    {"spinning (OMP_WAIT_POLICY=active)", "OMP_WAIT_POLICY=active"}};
-  std::printf("Fig. 12 quick case, b = 0.2, N = %ld, to t* = 4.5e-3; %ld cores; median of %d runs per row, the\n"
-              "modes interleaved (a shared machine's speed drifts)\n",
-              n, sysconf(_SC_NPROCESSORS_ONLN), repeats);
+  std::printf(
+      "Fig. 12 quick case, b = 0.2, N = %ld, to t* = 4.5e-3; %ld cores; median of %d runs per row, the\n"
+      "modes interleaved (a shared machine's speed drifts)\n",
+      n, sysconf(_SC_NPROCESSORS_ONLN), repeats);
   std::printf("%-8s %-34s %9s %14s   %s\n", "machine", "threads", "wall [s]", "/ one thread", "runs [s]");
   for (const bool busy : {false, true}) {
     pid_t loop = 0;

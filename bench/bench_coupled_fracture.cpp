@@ -11,9 +11,9 @@
 #include <cstdlib>
 
 #include "hm/analytic/biot_modulus.hpp"
-#include "hm/lattice2d/mechanics/calibration.hpp"
 #include "hm/lattice2d/coupled/coupled_model.hpp"
 #include "hm/lattice2d/fracture/strength.hpp"
+#include "hm/lattice2d/mechanics/calibration.hpp"
 
 using namespace hm::lattice2d;
 
@@ -56,12 +56,18 @@ int main(int argc, char** argv) {
   const CoupledRunSummary run = model.run(stepping);
   const double total = seconds_since(start);
   std::printf("Fig. 12 b = 0.2 to t* = 0.0272 at N = %d particles: %s, %d steps, %d passes, %d beams broken\n",
-              lattice.n_particles(), hm::core::name_of(run.status).c_str(), run.n_steps, run.total_iterations, model.n_broken());
+              lattice.n_particles(), hm::core::name_of(run.status).c_str(), run.n_steps, run.total_iterations,
+              model.n_broken());
   std::printf("  %-40s %9s %7s\n", "part", "seconds", "share");
-  const double parts[] = {setup,           run.mechanics_seconds, run.stress_seconds, run.break_seconds,
-                          run.geometry_seconds, run.flow_seconds,  total};
-  const char* names[] = {"set-up (lattice, factorisations)", "mechanical solves", "stresses and failure checks",
-                         "factor downdates (breaks)", "deformed geometry", "flow (factorise/refine, solve)",
+  const double parts[] = {
+      setup, run.mechanics_seconds, run.stress_seconds, run.break_seconds, run.geometry_seconds, run.flow_seconds,
+      total};
+  const char* names[] = {"set-up (lattice, factorisations)",
+                         "mechanical solves",
+                         "stresses and failure checks",
+                         "factor downdates (breaks)",
+                         "deformed geometry",
+                         "flow (factorise/refine, solve)",
                          "whole run"};
   for (int k = 0; k < 7; ++k) std::printf("  %-40s %9.2f %6.1f%%\n", names[k], parts[k], 100.0 * parts[k] / total);
   return run.is_ok() ? 0 : 1;

@@ -24,8 +24,8 @@
 #include <Eigen/SparseCore>
 
 #include "hm/analytic/biot_modulus.hpp"
-#include "hm/lattice2d/geometry/dual_graph.hpp"
 #include "hm/lattice2d/flow/flow_network.hpp"
+#include "hm/lattice2d/geometry/dual_graph.hpp"
 #include "hm/lattice2d/geometry/lattice.hpp"
 
 using namespace hm::lattice2d;
@@ -142,28 +142,32 @@ void run(long long n_particles, int repeats) {
   Eigen::VectorXd b = Eigen::VectorXd::Zero(matrices[0].rows());
   b[b.size() - 1] = 0.01 * dt;  // Q dt into the borehole node
   b.head(b.size() - 1).setConstant(1e-9);
-  std::printf("N = %lld particles: %d particles, %d triangles, %lld unknowns, %lld nonzeros (both triangles);"
-              " lattice %.1f s; %d repeats\n",
-              n_particles, lattice.n_particles(), lattice.n_triangles(), static_cast<long long>(matrices[0].rows()),
-              static_cast<long long>(matrices[0].nonZeros()), lattice_seconds, repeats);
+  std::printf(
+      "N = %lld particles: %d particles, %d triangles, %lld unknowns, %lld nonzeros (both triangles);"
+      " lattice %.1f s; %d repeats\n",
+      n_particles, lattice.n_particles(), lattice.n_triangles(), static_cast<long long>(matrices[0].rows()),
+      static_cast<long long>(matrices[0].nonZeros()), lattice_seconds, repeats);
   std::printf("  %-36s %8s %10s %9s %9s %9s\n", "solver", "analyse", "factorise", "solve", "max res", "nnz(L)");
 
   using EigenLdlt = Eigen::SimplicialLDLT<Matrix>;
   // nnz(L) with its diagonal, as CHOLMOD counts it (Eigen stores the unit diagonal implicitly).
   auto eigen_nnz = [](EigenLdlt& s) { return double(s.matrixL().nestedExpression().nonZeros() + s.rows()); };
-  print("Eigen SimplicialLDLT (AMD)", time_solver<EigenLdlt>(matrices, b, [](EigenLdlt&) {}, eigen_nnz));
+  print("Eigen SimplicialLDLT (AMD)", time_solver<EigenLdlt>(
+                                          matrices, b, [](EigenLdlt&) {}, eigen_nnz));
   using Super = Eigen::CholmodSupernodalLLT<Matrix>;
   using Simplicial = Eigen::CholmodSimplicialLDLT<Matrix>;
   print("CHOLMOD supernodal LL' (NESDIS)",
-        time_solver<Super>(matrices, b, [](Super& s) { cholmod_ordering(s, CHOLMOD_NESDIS); }, cholmod_nnz<Super>));
+        time_solver<Super>(
+            matrices, b, [](Super& s) { cholmod_ordering(s, CHOLMOD_NESDIS); }, cholmod_nnz<Super>));
   print("CHOLMOD supernodal LL' (AMD)",
-        time_solver<Super>(matrices, b, [](Super& s) { cholmod_ordering(s, CHOLMOD_AMD); }, cholmod_nnz<Super>));
-  print("CHOLMOD simplicial LDL' (NESDIS)", time_solver<Simplicial>(
-                                                matrices, b, [](Simplicial& s) { cholmod_ordering(s, CHOLMOD_NESDIS); },
-                                                cholmod_nnz<Simplicial>));
-  print("CHOLMOD simplicial LDL' (AMD)", time_solver<Simplicial>(
-                                             matrices, b, [](Simplicial& s) { cholmod_ordering(s, CHOLMOD_AMD); },
-                                             cholmod_nnz<Simplicial>));
+        time_solver<Super>(
+            matrices, b, [](Super& s) { cholmod_ordering(s, CHOLMOD_AMD); }, cholmod_nnz<Super>));
+  print("CHOLMOD simplicial LDL' (NESDIS)",
+        time_solver<Simplicial>(
+            matrices, b, [](Simplicial& s) { cholmod_ordering(s, CHOLMOD_NESDIS); }, cholmod_nnz<Simplicial>));
+  print("CHOLMOD simplicial LDL' (AMD)",
+        time_solver<Simplicial>(
+            matrices, b, [](Simplicial& s) { cholmod_ordering(s, CHOLMOD_AMD); }, cholmod_nnz<Simplicial>));
   // CHOLMOD's own choice: supernodal when flops / nnz(L) >= supernodal_switch (40), else simplicial.
   using Auto = Eigen::CholmodDecomposition<Matrix>;
   double flops_per_nnz = 0.0;
@@ -173,8 +177,7 @@ void run(long long n_particles, int repeats) {
                                        flops_per_nnz = s.cholmod().fl / s.cholmod().lnz;
                                        return s.cholmod().lnz;
                                      }));
-  std::printf("  (NESDIS: %.0f flops per nonzero of L; CHOLMOD goes supernodal above %.0f)\n", flops_per_nnz,
-              40.0);
+  std::printf("  (NESDIS: %.0f flops per nonzero of L; CHOLMOD goes supernodal above %.0f)\n", flops_per_nnz, 40.0);
 
   // The flow network itself: update_geometry() marks the factor stale, so every solve() assembles,
   // refactorises and solves (reuse_factorisation off, the default).
@@ -197,9 +200,10 @@ void run(long long n_particles, int repeats) {
     if (!s.is_ok()) std::printf("  FlowNetwork::step: %s\n", s.message.c_str());
     balance = std::max(balance, s.balance_error);
   }
-  std::printf("  FlowNetwork: construction (analysis) %.4f s, step after update_geometry %.4f s (median), "
-              "balance error <= %.1e, p_h = %.6e\n",
-              construct, median(pass), balance, network.borehole_pressure());
+  std::printf(
+      "  FlowNetwork: construction (analysis) %.4f s, step after update_geometry %.4f s (median), "
+      "balance error <= %.1e, p_h = %.6e\n",
+      construct, median(pass), balance, network.borehole_pressure());
 }
 
 }  // namespace

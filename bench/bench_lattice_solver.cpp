@@ -45,7 +45,8 @@ SpdSolver::Matrix beam_columns(const BeamMechanics& m, const std::vector<int>& f
   std::vector<Eigen::Triplet<double>> t;
   for (int c = 0; c < 3; ++c)
     for (int a = 0; a < 6; ++a)
-      if (free_index[static_cast<std::size_t>(dofs[a])] >= 0) t.emplace_back(free_index[static_cast<std::size_t>(dofs[a])], c, V(a, c));
+      if (free_index[static_cast<std::size_t>(dofs[a])] >= 0)
+        t.emplace_back(free_index[static_cast<std::size_t>(dofs[a])], c, V(a, c));
   SpdSolver::Matrix W(m.n_free_dofs(), 3);
   W.setFromTriplets(t.begin(), t.end());
   return W;
@@ -78,11 +79,13 @@ void run(long long n, bool variants, bool with_pcg) {
   for (int e = 0; e < lattice.n_beams() && breaks.size() < 10; e += 1 + lattice.n_beams() / 4000) {
     const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
     const double r = lattice.points.col(i).norm();
-    if (lattice.boundary[i] == BoundaryTag::interior && lattice.boundary[j] == BoundaryTag::interior && r > 0.25 && r < 0.35)
+    if (lattice.boundary[i] == BoundaryTag::interior && lattice.boundary[j] == BoundaryTag::interior && r > 0.25 &&
+        r < 0.35)
       breaks.push_back(e);
   }
   std::printf("\nN = %d particles, %d beams, %d unknowns, nnz(A) = %ld; lattice %.2f s, BeamMechanics set-up %.2f s\n",
-              lattice.n_particles(), lattice.n_beams(), mech.n_free_dofs(), static_cast<long>(A.nonZeros()), t_lattice, t_setup);
+              lattice.n_particles(), lattice.n_beams(), mech.n_free_dofs(), static_cast<long>(A.nonZeros()), t_lattice,
+              t_setup);
 
   // 2. CHOLMOD.
   CholmodSolver chol;
@@ -135,14 +138,15 @@ void run(long long n, bool variants, bool with_pcg) {
     return median(t);
   };
   SpdSolverOptions full_options, serial_options;
-  full_options.reuse_forward_solve = false;  // full forward + backward solve each time (CHOLMOD's)
+  full_options.reuse_forward_solve = false;          // full forward + backward solve each time (CHOLMOD's)
   serial_options.parallel_triangular_solve = false;  // CHOLMOD's one-thread backward solve
   const double t_resolve_full = resolve_with(full_options), t_resolve_serial = resolve_with(serial_options);
   std::printf("  minimum over repeats: repeated solve %.4f s, re-solve %.4f s (4 solves, %d breaks; medians below)\n",
               *std::min_element(solves.begin(), solves.end()), *std::min_element(resolves.begin(), resolves.end()),
               static_cast<int>(breaks.size()));
   std::printf("  CHOLMOD ordering %s, nnz(L) = %.3g, residual after 10 downdates %.1e, info %d\n",
-              chol.ordering_used().c_str(), chol.factor_nonzeros(), chol.report().relative_residual, static_cast<int>(chol.info()));
+              chol.ordering_used().c_str(), chol.factor_nonzeros(), chol.report().relative_residual,
+              static_cast<int>(chol.info()));
 
   // 3. Through the mechanics (contact check, equilibrium residual, forces not included).
   mech.solve();
@@ -167,40 +171,43 @@ void run(long long n, bool variants, bool with_pcg) {
     line("BeamMechanics break_beam + solve", t_mech);
   }
   if (with_pcg) {
-  // 4. PCG (incomplete Cholesky), cold and warm.
-  SpdSolverOptions po;
-  po.cg_tolerance = 1e-10;
-  PcgSolver pcg(po);
-  t0 = now();
-  pcg.compute(A);
-  const double t_ichol = now() - t0;
-  t0 = now();
-  pcg.solve(b);
-  const double t_cg_cold = now() - t0;
-  const int it_cold = pcg.report().iterations;
-  const SpdSolver::Matrix W = beam_columns(mech, free_index, breaks[0]);
-  t0 = now();
-  pcg.modify(W, -1);
-  pcg.solve(b);  // includes rebuilding the incomplete Cholesky preconditioner
-  const double t_cg_warm = now() - t0;
-  const int it_warm = pcg.report().iterations;
+    // 4. PCG (incomplete Cholesky), cold and warm.
+    SpdSolverOptions po;
+    po.cg_tolerance = 1e-10;
+    PcgSolver pcg(po);
+    t0 = now();
+    pcg.compute(A);
+    const double t_ichol = now() - t0;
+    t0 = now();
+    pcg.solve(b);
+    const double t_cg_cold = now() - t0;
+    const int it_cold = pcg.report().iterations;
+    const SpdSolver::Matrix W = beam_columns(mech, free_index, breaks[0]);
+    t0 = now();
+    pcg.modify(W, -1);
+    pcg.solve(b);  // includes rebuilding the incomplete Cholesky preconditioner
+    const double t_cg_warm = now() - t0;
+    const int it_warm = pcg.report().iterations;
 
-  const double cg = t_ichol + t_cg_cold;
-  auto row = [&](const char* name, double t) { std::printf("  %-58s %10.4f %8.4f\n", name, t, t / cg); };
-  row("CHOLMOD analyse + factorise", t_factor);
-  row("  of which numeric (refactorize(): factorise + to LDL')", t_numeric);
-  row("CHOLMOD first solve (forward + backward)", t_first);
-  row("CHOLMOD repeated solve, same b (backward half)", t_solve);
-  row("  of which the residual check ||A x - b||", t_residual);
-  row("CHOLMOD re-solve after one break (rank-3 downdate + solve)", t_resolve);
-  row("  of which the downdate (cholmod_updown_solve)", t_downdate);
-  row("  same, full solve (reuse_forward_solve = false)", t_resolve_full);
-  row("  same, CHOLMOD's one-thread solves (parallel_triangular_solve = false)", t_resolve_serial);
-  row("BeamMechanics break_beam + solve", t_mech);
-  row("PCG cold: ichol set-up + solve from 0 (= CG)", cg);
-  std::printf("  %-58s %10.4f %8.4f   (%d iterations)\n", "  of which the CG iterations", t_cg_cold, t_cg_cold / cg, it_cold);
-  std::printf("  %-58s %10.4f %8.4f   (%d iterations)\n", "PCG re-solve after one break, warm start (+ ichol)", t_cg_warm, t_cg_warm / cg, it_warm);
-  std::printf("  speed-up of the CHOLMOD re-solve over warm PCG: %.0fx, over cold PCG: %.0fx\n", t_cg_warm / t_resolve, cg / t_resolve);
+    const double cg = t_ichol + t_cg_cold;
+    auto row = [&](const char* name, double t) { std::printf("  %-58s %10.4f %8.4f\n", name, t, t / cg); };
+    row("CHOLMOD analyse + factorise", t_factor);
+    row("  of which numeric (refactorize(): factorise + to LDL')", t_numeric);
+    row("CHOLMOD first solve (forward + backward)", t_first);
+    row("CHOLMOD repeated solve, same b (backward half)", t_solve);
+    row("  of which the residual check ||A x - b||", t_residual);
+    row("CHOLMOD re-solve after one break (rank-3 downdate + solve)", t_resolve);
+    row("  of which the downdate (cholmod_updown_solve)", t_downdate);
+    row("  same, full solve (reuse_forward_solve = false)", t_resolve_full);
+    row("  same, CHOLMOD's one-thread solves (parallel_triangular_solve = false)", t_resolve_serial);
+    row("BeamMechanics break_beam + solve", t_mech);
+    row("PCG cold: ichol set-up + solve from 0 (= CG)", cg);
+    std::printf("  %-58s %10.4f %8.4f   (%d iterations)\n", "  of which the CG iterations", t_cg_cold, t_cg_cold / cg,
+                it_cold);
+    std::printf("  %-58s %10.4f %8.4f   (%d iterations)\n", "PCG re-solve after one break, warm start (+ ichol)",
+                t_cg_warm, t_cg_warm / cg, it_warm);
+    std::printf("  speed-up of the CHOLMOD re-solve over warm PCG: %.0fx, over cold PCG: %.0fx\n",
+                t_cg_warm / t_resolve, cg / t_resolve);
   }
 
   if (!variants) return;
@@ -246,9 +253,12 @@ int main(int argc, char** argv) {
   bool variants = true, with_pcg = true;
   for (int a = 1; a < argc; ++a) {
     const std::string arg = argv[a];
-    if (arg == "--quick") variants = false;
-    else if (arg == "--no-pcg") with_pcg = false;
-    else sizes.push_back(std::atoll(arg.c_str()));
+    if (arg == "--quick")
+      variants = false;
+    else if (arg == "--no-pcg")
+      with_pcg = false;
+    else
+      sizes.push_back(std::atoll(arg.c_str()));
   }
   if (sizes.empty()) sizes = {10000, 100000};
   try {

@@ -76,18 +76,19 @@ int main() {
         min_ratio = std::min(min_ratio, s[k].sigma_theta / s[k].p_h);
         max_ratio = std::max(max_ratio, s[k].sigma_theta / s[k].p_h);
       }
-      std::printf("(a) Q = q_min, n_r = 400, to t = 300 (%ld steps): max sigma_theta / final = %.12f, final / T_u = %.6f,\n"
-                  "    smallest step change of p_h = %.3e, of sigma_theta = %.3e; sigma_theta/p_h from %.6f to %.6f "
-                  "(fast limit %.6f, steady %.6f)\n",
-                  res.summary.n_steps, max_hoop / s.back().sigma_theta, s.back().sigma_theta / d.tensile_strength,
-                  min_dp, min_dhoop, min_ratio, max_ratio, d.tensile_strength / lim.p_b_fast,
-                  d.tensile_strength / lim.p_b_slow);
+      std::printf(
+          "(a) Q = q_min, n_r = 400, to t = 300 (%ld steps): max sigma_theta / final = %.12f, final / T_u = %.6f,\n"
+          "    smallest step change of p_h = %.3e, of sigma_theta = %.3e; sigma_theta/p_h from %.6f to %.6f "
+          "(fast limit %.6f, steady %.6f)\n",
+          res.summary.n_steps, max_hoop / s.back().sigma_theta, s.back().sigma_theta / d.tensile_strength, min_dp,
+          min_dhoop, min_ratio, max_ratio, d.tensile_strength / lim.p_b_fast, d.tensile_strength / lim.p_b_slow);
     }
 
     // (b) p_b(Q).
-    std::printf("(b) %-10s %-12s %-14s %-14s %-9s %-9s\n", "Q", "Q/q_min", "p_b (n_r=400)", "p_b (n_r=4000)",
-                "/slow", "/fast");
-    for (const double Q : {1.01 * lim.q_min, 1.1 * lim.q_min, 2.0 * lim.q_min, 5.0 * lim.q_min, 1e-2, 1e-1, 1.0, 10.0}) {
+    std::printf("(b) %-10s %-12s %-14s %-14s %-9s %-9s\n", "Q", "Q/q_min", "p_b (n_r=400)", "p_b (n_r=4000)", "/slow",
+                "/fast");
+    for (const double Q :
+         {1.01 * lim.q_min, 1.1 * lim.q_min, 2.0 * lim.q_min, 5.0 * lim.q_min, 1e-2, 1e-1, 1.0, 10.0}) {
       DimensionlessParameters d = base;
       d.Q = Q;
       // Steps from a thousandth of the wall-layer time; a fast run fails within a few of them.

@@ -78,7 +78,9 @@ int main(int argc, char** argv) {
   base.faces = wet ? PressurisedFaces::with_softening : PressurisedFaces::broken;
   base.volume_step = env_or("HM_GRIFFITH_STEP", base.volume_step);
   base.history_tolerance = env_or("HM_GRIFFITH_TOL", base.history_tolerance);
-  std::printf("| path | faces | kappa | N | seed | K / K_c | booked / G_f | cost (W - pV/2) / G_f | rock / G_f | broken | solves | s |\n");
+  std::printf(
+      "| path | faces | kappa | N | seed | K / K_c | booked / G_f | cost (W - pV/2) / G_f | rock / G_f | broken | "
+      "solves | s |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (long long n : sizes)
     for (const std::string path : {"teeth", "continuous"}) {

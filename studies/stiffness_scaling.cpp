@@ -18,15 +18,15 @@
 #include <Eigen/Core>
 
 #include "hm/analytic/lame.hpp"
+#include "hm/lattice2d/fracture/fracture.hpp"
+#include "hm/lattice2d/fracture/strength.hpp"
+#include "hm/lattice2d/geometry/dual_graph.hpp"
+#include "hm/lattice2d/geometry/lattice.hpp"
+#include "hm/lattice2d/io/radial_average.hpp"
 #include "hm/lattice2d/mechanics/beam_stiffness.hpp"
 #include "hm/lattice2d/mechanics/calibration.hpp"
-#include "hm/lattice2d/geometry/dual_graph.hpp"
-#include "hm/lattice2d/fracture/fracture.hpp"
-#include "hm/lattice2d/geometry/lattice.hpp"
 #include "hm/lattice2d/mechanics/mechanics.hpp"
 #include "hm/lattice2d/mechanics/particle_stress.hpp"
-#include "hm/lattice2d/io/radial_average.hpp"
-#include "hm/lattice2d/fracture/strength.hpp"
 
 using namespace hm::lattice2d;
 
@@ -112,9 +112,10 @@ void measure(const Option& o, long long n, std::uint64_t seed) {
   double err = 0;
   for (std::size_t k = 0; k < a.shells.size(); ++k)
     err = std::max(err, std::abs(a.shells[k].mean - b.shells[k].mean) / std::abs(b.shells.front().mean));
-  std::printf("| %s, a = %g | %lld | %llu | %.4f | %.4f | %.3f | %.1f%% | %.2f | %.2f | %.3f | %.3f | %.1f%% | %.3f |\n", o.name, o.aspect,
-              n, static_cast<unsigned long long>(seed), nu, e.youngs_modulus, e.shear_isotropy_error,
-              100 * e.scatter(0, 0) / e.stiffness(0, 0), wall_mean, wall_max, first[0], first[1], 100 * err, solve_s);
+  std::printf(
+      "| %s, a = %g | %lld | %llu | %.4f | %.4f | %.3f | %.1f%% | %.2f | %.2f | %.3f | %.3f | %.1f%% | %.3f |\n",
+      o.name, o.aspect, n, static_cast<unsigned long long>(seed), nu, e.youngs_modulus, e.shear_isotropy_error,
+      100 * e.scatter(0, 0) / e.stiffness(0, 0), wall_mean, wall_max, first[0], first[1], 100 * err, solve_s);
 }
 
 void measure_all() {
@@ -122,7 +123,9 @@ void measure_all() {
   const long long n = env ? std::atoll(env) : 10000;
   const char* seeds_env = std::getenv("HM_MEASURE_SEEDS");
   const int n_seeds = seeds_env ? std::atoi(seeds_env) : 1;
-  std::printf("| option | N | seed | nu (a=0.05) | E (k_n=1) | C66 err | scatter | wall mean | wall max | first/p_crit (+-5%%) | first (none) | Lame u_r err | solve s |\n");
+  std::printf(
+      "| option | N | seed | nu (a=0.05) | E (k_n=1) | C66 err | scatter | wall mean | wall max | first/p_crit (+-5%%) "
+      "| first (none) | Lame u_r err | solve s |\n");
   const Option options[] = {{"uniform", StiffnessScaling::uniform, 0.0, 1.0},
                             {"facet", StiffnessScaling::voronoi_facet, 0.0, 1.0},
                             {"facet floor 0.05", StiffnessScaling::voronoi_facet, 0.05, 1.0},
@@ -132,7 +135,7 @@ void measure_all() {
                             {"facet calibrated", StiffnessScaling::voronoi_facet, 0.0, 1.0, 0.506},
                             {"facet calibrated + boundary 1.3", StiffnessScaling::voronoi_facet, 0.0, 1.3, 0.506}};
   const char* only = std::getenv("HM_MEASURE_ONLY");  // one option by name
-  if (std::getenv("HM_MEASURE_CALIBRATE")) {  // calibrate_beams with voronoi_facet, seeds 1-3
+  if (std::getenv("HM_MEASURE_CALIBRATE")) {          // calibrate_beams with voronoi_facet, seeds 1-3
     CalibrationSpec spec;
     spec.n_particles = n;
     spec.stiffness_scaling = StiffnessScaling::voronoi_facet;

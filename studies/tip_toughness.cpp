@@ -59,7 +59,7 @@ using namespace hm::lattice2d;
 
 namespace {
 
-constexpr double kInnerRadius = 0.138;                       // Table 1: R_i / R
+constexpr double kInnerRadius = 0.138;                            // Table 1: R_i / R
 const std::vector<double> kMaterialLengths{3.13e-3, 1e-3, 3e-4};  // L_m / R; 3.13e-3 is the default
 const std::vector<int> kWallCrackBeams{1, 2, 4, 8};
 const std::vector<double> kSneddonHalfLengths{0.05, 0.1, 0.2};  // c / R: fixed physical cracks
@@ -175,10 +175,10 @@ struct Row {
   int n_crack_beams = 0;                 // 0: intact wall
   double c_nominal = 0;                  // Sneddon: the cut's half-length c / R
   double c = 0, h = 0, f = 0, p_init = 0;
-  double first_to_tip = 0;               // first breaking beam's midpoint to the (nearest) crack tip
-  double tip_to_tip = 0;                 // the same for the breaking tip beam of `tip`
-  FirstBreak first;  // first break anywhere
-  FirstBreak tip;    // first break of a crack-tip beam: the crack's own advance
+  double first_to_tip = 0;  // first breaking beam's midpoint to the (nearest) crack tip
+  double tip_to_tip = 0;    // the same for the breaking tip beam of `tip`
+  FirstBreak first;         // first break anywhere
+  FirstBreak tip;           // first break of a crack-tip beam: the crack's own advance
   /// K at the crack's advance, p_tip sqrt(pi c) F.
   double k_c() const { return tip.pressure * std::sqrt(std::numbers::pi * c) * f; }
   /// K at the first break anywhere, p_first sqrt(pi c) F: what the break loop sees when the first beam
@@ -270,7 +270,8 @@ void wall_crack_study(long long n_target, int seed, int n_rays) {
       if (k > 0 && std::find(kWallCrackBeams.begin(), kWallCrackBeams.end(), k) == kWallCrackBeams.end()) continue;
       const MechanicsSummary solved = m.solve(false);
       if (!solved.is_converged()) {
-        std::printf("  [N %lld seed %d ray %d, %d beams: solve failed: %s]\n", n_target, seed, ray, k, solved.message.c_str());
+        std::printf("  [N %lld seed %d ray %d, %d beams: solve failed: %s]\n", n_target, seed, ray, k,
+                    solved.message.c_str());
         break;
       }
       double c = 0.0, f = 0.0;
@@ -333,7 +334,8 @@ void sneddon_study(long long n_target, int seed) {
     m.set_external_forces(crack_face_forces(lattice, dual, crack, 1.0));  // unit crack pressure
     const MechanicsSummary solved = m.solve(false);
     if (!solved.is_converged()) {
-      std::printf("  [Sneddon N %lld seed %d c %g: solve failed: %s]\n", n_target, seed, c_nominal, solved.message.c_str());
+      std::printf("  [Sneddon N %lld seed %d c %g: solve failed: %s]\n", n_target, seed, c_nominal,
+                  solved.message.c_str());
       continue;
     }
     // The crack's ends are the outermost Voronoi points of its broken beams' triangles (as the Sneddon
@@ -399,19 +401,53 @@ void write_rows_csv(const std::filesystem::path& dir) {
   for (const std::string study : {"wall", "sneddon"}) {
     const auto path = dir / (study == "wall" ? "wall_crack.csv" : "sneddon.csv");
     std::ofstream out = hm::core::open_for_writing(path);
-    hm::core::CsvWriter csv(out, {"n_particles", "seed", "ray", "strengths_none", "L_m", "crack_beams", "c_nominal",
-                                  "c", "h_mean", "F", "p_init", "p_first", "first_where", "first_mode_shear",
-                                  "first_tip_factor", "first_distance_to_tip_over_h", "p_tip", "tip_mode_shear",
-                                  "tip_tip_factor", "tip_distance_to_tip_over_h", "K_c", "K_c_over_scale"});
+    hm::core::CsvWriter csv(out, {"n_particles",
+                                  "seed",
+                                  "ray",
+                                  "strengths_none",
+                                  "L_m",
+                                  "crack_beams",
+                                  "c_nominal",
+                                  "c",
+                                  "h_mean",
+                                  "F",
+                                  "p_init",
+                                  "p_first",
+                                  "first_where",
+                                  "first_mode_shear",
+                                  "first_tip_factor",
+                                  "first_distance_to_tip_over_h",
+                                  "p_tip",
+                                  "tip_mode_shear",
+                                  "tip_tip_factor",
+                                  "tip_distance_to_tip_over_h",
+                                  "K_c",
+                                  "K_c_over_scale"});
     for (const Row& r : g_rows) {
       if (r.study != study) continue;
       const bool crack = r.tip.beam >= 0;
-      csv.row({static_cast<double>(r.n), static_cast<double>(r.seed), static_cast<double>(r.ray),
-               static_cast<double>(r.strengths), r.l_m, static_cast<double>(r.n_crack_beams), r.c_nominal, r.c, r.h,
-               r.f, r.p_init, r.first.pressure, where_code(r.first), r.first.mode == hm::analytic::FailureMode::shear ? 1.0 : 0.0,
-               r.first.tip_factor, r.first_to_tip / r.h, crack ? r.tip.pressure : NAN,
-               crack ? (r.tip.mode == hm::analytic::FailureMode::shear ? 1.0 : 0.0) : NAN, crack ? r.tip.tip_factor : NAN,
-               crack ? r.tip_to_tip / r.h : NAN, crack ? r.k_c() : NAN, crack ? r.k_c() / k_scale(r) : NAN});
+      csv.row({static_cast<double>(r.n),
+               static_cast<double>(r.seed),
+               static_cast<double>(r.ray),
+               static_cast<double>(r.strengths),
+               r.l_m,
+               static_cast<double>(r.n_crack_beams),
+               r.c_nominal,
+               r.c,
+               r.h,
+               r.f,
+               r.p_init,
+               r.first.pressure,
+               where_code(r.first),
+               r.first.mode == hm::analytic::FailureMode::shear ? 1.0 : 0.0,
+               r.first.tip_factor,
+               r.first_to_tip / r.h,
+               crack ? r.tip.pressure : NAN,
+               crack ? (r.tip.mode == hm::analytic::FailureMode::shear ? 1.0 : 0.0) : NAN,
+               crack ? r.tip.tip_factor : NAN,
+               crack ? r.tip_to_tip / r.h : NAN,
+               crack ? r.k_c() : NAN,
+               crack ? r.k_c() / k_scale(r) : NAN});
     }
     hm::core::close_checked(out, path);
   }
@@ -455,18 +491,22 @@ void table(const std::string& name, const char* title, const std::string& study,
     std::printf("| %lld | %s |", key.first, lm_name(-key.second).c_str());
     for (int c : columns) {
       const auto it = row.find(c);
-      if (it == row.end()) std::printf(" – |");
-      else std::printf(" %.3g ± %.2g (%d) |", it->second.mean(), it->second.sd(), it->second.n);
+      if (it == row.end())
+        std::printf(" – |");
+      else
+        std::printf(" %.3g ± %.2g (%d) |", it->second.mean(), it->second.sd(), it->second.n);
     }
     std::printf("\n");
   }
   if (g_csv_dir.empty()) return;
   const auto path = g_csv_dir / (name + "_" + strengths_slug(strengths) + ".csv");
   std::ofstream out = hm::core::open_for_writing(path);
-  hm::core::CsvWriter csv(out, {"n_thousands", "L_m", study == "wall" ? "crack_beams" : "c_thousandths", "mean", "sd", "count"});
+  hm::core::CsvWriter csv(
+      out, {"n_thousands", "L_m", study == "wall" ? "crack_beams" : "c_thousandths", "mean", "sd", "count"});
   for (const auto& [key, row] : cells)
     for (const auto& [col, m] : row)
-      csv.row({static_cast<double>(key.first), -key.second, static_cast<double>(col), m.mean(), m.sd(), static_cast<double>(m.n)});
+      csv.row({static_cast<double>(key.first), -key.second, static_cast<double>(col), m.mean(), m.sd(),
+               static_cast<double>(m.n)});
   hm::core::close_checked(out, path);
 }
 
@@ -486,8 +526,10 @@ void drift_table(const std::string& name, const std::string& study, int strength
       const double rel_se = m.n > 1 ? m.sd() / std::sqrt(static_cast<double>(m.n)) / m.mean() : 1.0;
       points[key.second][col].push_back({std::log(1000.0 * key.first), std::log(m.mean()), 1.0 / (rel_se * rel_se)});
     }
-  std::printf("\nDrift exponent alpha ± standard error of K ~ N^alpha at fixed L_m (%s crack, %s strengths; 0 = "
-              "mesh-independent) [%s]\n| L_m |", study.c_str(), strengths ? "no-heterogeneity" : "default", name.c_str());
+  std::printf(
+      "\nDrift exponent alpha ± standard error of K ~ N^alpha at fixed L_m (%s crack, %s strengths; 0 = "
+      "mesh-independent) [%s]\n| L_m |",
+      study.c_str(), strengths ? "no-heterogeneity" : "default", name.c_str());
   for (int c : columns) std::printf(" %d %s |", c, column_unit);
   std::printf("\n|---|");
   for (std::size_t k = 0; k < columns.size(); ++k) std::printf("---|");
@@ -497,7 +539,8 @@ void drift_table(const std::string& name, const std::string& study, int strength
   const auto path = g_csv_dir / (name + "_" + strengths_slug(strengths) + ".csv");
   if (!g_csv_dir.empty()) {
     out = hm::core::open_for_writing(path);
-    csv.emplace(out, std::vector<std::string>{"L_m", study == "wall" ? "crack_beams" : "c_thousandths", "alpha", "alpha_se"});
+    csv.emplace(
+        out, std::vector<std::string>{"L_m", study == "wall" ? "crack_beams" : "c_thousandths", "alpha", "alpha_se"});
   }
   for (const auto& [neg_lm, by_col] : points) {
     std::printf("| %s |", lm_name(-neg_lm).c_str());
@@ -528,9 +571,10 @@ void where_table(const std::string& name, const std::string& study, int strength
     if (r.study != study || r.strengths != strengths || r.tip.beam < 0) continue;
     count[{n_key(r), -r.l_m}][static_cast<std::size_t>(where_code(r.first))]++;
   }
-  std::printf("\nWhere the first beam breaks (%s crack, %s strengths): counts over all cracks of crack-tip beam / other wall "
-              "beam / elsewhere [%s]\n| N / 1e3 | L_m | tip | wall | elsewhere |\n|---|---|---|---|---|\n",
-              study.c_str(), strengths ? "no-heterogeneity" : "default", name.c_str());
+  std::printf(
+      "\nWhere the first beam breaks (%s crack, %s strengths): counts over all cracks of crack-tip beam / other wall "
+      "beam / elsewhere [%s]\n| N / 1e3 | L_m | tip | wall | elsewhere |\n|---|---|---|---|---|\n",
+      study.c_str(), strengths ? "no-heterogeneity" : "default", name.c_str());
   for (const auto& [key, c] : count)
     std::printf("| %lld | %s | %d | %d | %d |\n", key.first, lm_name(-key.second).c_str(), c[0], c[1], c[2]);
   if (g_csv_dir.empty()) return;
@@ -558,7 +602,8 @@ int main() {
     }
     const double t_u = StrengthSpec{}.tensile_strength;
     std::printf("# Crack-tip rule toughness study (T_u = %g, C_u = %g, mu_i = %g; calibrated facet beams, nu = %.3f)\n",
-                t_u, StrengthSpec{}.compressive_strength, StrengthSpec{}.friction, calibrated_continuum().poisson_ratio);
+                t_u, StrengthSpec{}.compressive_strength, StrengthSpec{}.friction,
+                calibrated_continuum().poisson_ratio);
     const auto t_all = std::chrono::steady_clock::now();
     for (long long n : ns)
       for (int seed = 1; seed <= (n == n_largest ? n_seeds_largest : n_seeds); ++seed) {
@@ -566,7 +611,8 @@ int main() {
         wall_crack_study(n, seed, n_rays);
         const double t_wall = seconds_since(t0);
         sneddon_study(n, seed);
-        std::printf("  N %lld seed %d: wall cracks %.1f s, Sneddon %.1f s\n", n, seed, t_wall, seconds_since(t0) - t_wall);
+        std::printf("  N %lld seed %d: wall cracks %.1f s, Sneddon %.1f s\n", n, seed, t_wall,
+                    seconds_since(t0) - t_wall);
         std::fflush(stdout);
       }
     std::printf("  total %.1f s\n", seconds_since(t_all));
@@ -581,20 +627,24 @@ int main() {
     const std::string k_raw = "K_c / T_u (units R^(1/2))";
     for (int s : {0, 1}) {
       std::printf("\n## %s strengths\n", s ? "No-heterogeneity" : "Default (uniform ±5%)");
-      table("wall_p_first_over_p_lame",
-            "Wall crack: p_first / p_Lame, first break anywhere (0 beams: the intact wall's initiation p_init; p_Lame = "
-            "T_u (1 - R_i^2)/(1 + R_i^2))", "wall", s, {0, 1, 2, 4, 8}, "beams",
-            [&](const Row& r) { return r.first.pressure / p_lame; });
-      table("wall_p_tip_over_p_init", "Wall crack: p_tip / p_init, the crack's advance over the intact wall's initiation",
-            "wall", s, wall_cols, "beams", [](const Row& r) { return r.tip.beam >= 0 ? r.tip.pressure / r.p_init : NAN; });
+      table(
+          "wall_p_first_over_p_lame",
+          "Wall crack: p_first / p_Lame, first break anywhere (0 beams: the intact wall's initiation p_init; p_Lame = "
+          "T_u (1 - R_i^2)/(1 + R_i^2))",
+          "wall", s, {0, 1, 2, 4, 8}, "beams", [&](const Row& r) { return r.first.pressure / p_lame; });
+      table("wall_p_tip_over_p_init",
+            "Wall crack: p_tip / p_init, the crack's advance over the intact wall's initiation", "wall", s, wall_cols,
+            "beams", [](const Row& r) { return r.tip.beam >= 0 ? r.tip.pressure / r.p_init : NAN; });
       // p_tip is proportional to L_m^(1/2) (the tip beam's stress carries (L/2 L_m)^(1/2), p_init has no tip),
       // so L_m (p_init / p_tip)^2 is the L_m at which this crack advances exactly at the initiation pressure.
       table("wall_L_m_balance", "Wall crack: L_m at which p_tip = p_init, L_m (p_init / p_tip)^2 (rule-on rows agree)",
-            "wall", s, wall_cols, "beams",
-            [](const Row& r) { return r.tip.beam >= 0 && r.l_m > 0 ? r.l_m * std::pow(r.p_init / r.tip.pressure, 2) : NAN; });
+            "wall", s, wall_cols, "beams", [](const Row& r) {
+              return r.tip.beam >= 0 && r.l_m > 0 ? r.l_m * std::pow(r.p_init / r.tip.pressure, 2) : NAN;
+            });
       where_table("wall_first_break_where", "wall", s);
-      table("wall_c_over_h", "Wall crack: c / h, depth of the crack's Voronoi tip below the wall over the mean beam length",
-            "wall", s, wall_cols, "beams", [](const Row& r) { return r.tip.beam >= 0 ? r.c / r.h : NAN; });
+      table("wall_c_over_h",
+            "Wall crack: c / h, depth of the crack's Voronoi tip below the wall over the mean beam length", "wall", s,
+            wall_cols, "beams", [](const Row& r) { return r.tip.beam >= 0 ? r.c / r.h : NAN; });
       table("wall_F", "Wall crack: F(c)", "wall", s, wall_cols, "beams",
             [](const Row& r) { return r.tip.beam >= 0 ? r.f : NAN; });
       table("wall_K_c", ("Wall crack: " + k_raw).c_str(), "wall", s, wall_cols, "beams",
@@ -609,14 +659,16 @@ int main() {
             [&](const Row& r) { return r.k_c() / t_u; });
       table("sneddon_K_c_over_K_rule", ("Sneddon crack: " + k_title).c_str(), "sneddon", s, sneddon_cols, "c/1e-3",
             [](const Row& r) { return r.k_c() / k_scale(r); });
-      table("sneddon_p_first_over_p_tip", "Sneddon crack: p_first / p_tip (< 1: a beam away from the tips breaks first)",
-            "sneddon", s, sneddon_cols, "c/1e-3", [](const Row& r) { return r.first.pressure / r.tip.pressure; });
+      table("sneddon_p_first_over_p_tip",
+            "Sneddon crack: p_first / p_tip (< 1: a beam away from the tips breaks first)", "sneddon", s, sneddon_cols,
+            "c/1e-3", [](const Row& r) { return r.first.pressure / r.tip.pressure; });
       drift_table("sneddon_K_c_drift", "sneddon", s, sneddon_cols, "c/1e-3", [](const Row& r) { return r.k_c(); });
       table("sneddon_K_first_over_K_rule",
             "Sneddon crack: K_first / K_rule, K_first = p_first sqrt(pi c): the first break anywhere (a tip "
-             "triangle's neighbour where it goes first)", "sneddon", s, sneddon_cols, "c/1e-3",
-            [](const Row& r) { return r.k_first() / k_scale(r); });
-      drift_table("sneddon_K_first_drift", "sneddon", s, sneddon_cols, "c/1e-3", [](const Row& r) { return r.k_first(); });
+            "triangle's neighbour where it goes first)",
+            "sneddon", s, sneddon_cols, "c/1e-3", [](const Row& r) { return r.k_first() / k_scale(r); });
+      drift_table("sneddon_K_first_drift", "sneddon", s, sneddon_cols, "c/1e-3",
+                  [](const Row& r) { return r.k_first(); });
     }
     if (const char* dir = std::getenv("HM_TIP_ROWS_DIR")) write_rows_csv(dir);
   } catch (const std::exception& e) {

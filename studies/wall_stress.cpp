@@ -27,9 +27,9 @@
 #include <Eigen/Cholesky>
 
 #include "hm/analytic/lame.hpp"
-#include "hm/lattice2d/mechanics/beam_stiffness.hpp"
 #include "hm/lattice2d/geometry/dual_graph.hpp"
 #include "hm/lattice2d/geometry/lattice.hpp"
+#include "hm/lattice2d/mechanics/beam_stiffness.hpp"
 #include "hm/lattice2d/mechanics/mechanics.hpp"
 #include "hm/lattice2d/mechanics/particle_stress.hpp"
 #include "lattice2d/lattice_fixtures.hpp"
@@ -116,8 +116,8 @@ void study(const WallOption& o, long long n, std::uint64_t seed) {
       const auto [i, j] = l.beams[static_cast<std::size_t>(e)];
       const auto [s, t] = l.beam_triangles[static_cast<std::size_t>(e)];
       const Eigen::Vector2d cs = dual.dual_point.col(s);
-      const Eigen::Vector2d ct = t >= 0 ? Eigen::Vector2d(dual.dual_point.col(t))
-                                        : Eigen::Vector2d(0.5 * (l.points.col(i) + l.points.col(j)));
+      const Eigen::Vector2d ct =
+          t >= 0 ? Eigen::Vector2d(dual.dual_point.col(t)) : Eigen::Vector2d(0.5 * (l.points.col(i) + l.points.col(j)));
       pieces.emplace_back(0.25 * l.length[e] * dual.dual_length[e], (l.points.col(q) + cs + ct) / 3.0);
     }
   };
@@ -127,18 +127,25 @@ void study(const WallOption& o, long long n, std::uint64_t seed) {
   for (int e = 0; e < nb; ++e) {
     if (!is_wall_b(e)) continue;
     const auto [i, j] = l.beams[static_cast<std::size_t>(e)];
-    const double eb = (u.segment<2>(dof_index(j, 0)) - u.segment<2>(dof_index(i, 0))).dot(l.direction.col(e)) / l.length[e];
+    const double eb =
+        (u.segment<2>(dof_index(j, 0)) - u.segment<2>(dof_index(i, 0))).dot(l.direction.col(e)) / l.length[e];
     strain_ratio.add(eb / eps_lame);
   }
   for (int i = 0; i < np; ++i)
-    if (is_wall_p(i)) ur_ratio.add(u.segment<2>(dof_index(i, 0)).dot(l.points.col(i).normalized()) / lame.state(r_i).u_r);
+    if (is_wall_p(i))
+      ur_ratio.add(u.segment<2>(dof_index(i, 0)).dot(l.points.col(i).normalized()) / lame.state(r_i).u_r);
 
   // (b), (c), (e): per wall particle. Alternative particle stresses for the wall particles (columns
   // replaced; every other particle keeps the library's stress).
   enum { cur, mirror_v, half_wall_virial, traction, edge_const, edge_const_dl, fit_const, fit_edge, n_alt };
-  const char* alt_name[n_alt] = {"current 1/(2V) sum F(x)L", "V + mirrored wall half-diamonds",
-                                 "wall-beam virial x 1/2", "+ boundary traction term", "edge: s_rr=-p, s_tt=E'eps+nu/(1-nu)s_rr", "edge, eps = dL-weighted mean of the 2 wall beams",
-                                 "LS strain fit (w = dL), s = C eps", "LS fit eps_tt, s_rr=-p, s_tt=E'eps_tt+nu/(1-nu)s_rr"};
+  const char* alt_name[n_alt] = {"current 1/(2V) sum F(x)L",
+                                 "V + mirrored wall half-diamonds",
+                                 "wall-beam virial x 1/2",
+                                 "+ boundary traction term",
+                                 "edge: s_rr=-p, s_tt=E'eps+nu/(1-nu)s_rr",
+                                 "edge, eps = dL-weighted mean of the 2 wall beams",
+                                 "LS strain fit (w = dL), s = C eps",
+                                 "LS fit eps_tt, s_rr=-p, s_tt=E'eps_tt+nu/(1-nu)s_rr"};
   const double lam = o.nu / ((1 + o.nu) * (1 - 2 * o.nu)), mu = 0.5 / (1 + o.nu);  // E = 1, plane strain
   std::vector<Eigen::Matrix3Xd> alt(n_alt, ps.stress);
   Stats tt_ratio_ri, tt_ratio_cen, tt_ratio_cell, rr_over_p, rt_over_p, r_cent_over_h, v_over_hl;
@@ -191,8 +198,12 @@ void study(const WallOption& o, long long n, std::uint64_t seed) {
     double fw = 0, fi = 0, fd = 0;
     int ninw = 0;
     for (int e : beams_of[static_cast<std::size_t>(q)]) {
-      const double w = 0.25 * l.length[e] * dual.dual_length[e] / vq, ct = l.direction.col(e).dot(et), cr = l.direction.col(e).dot(er);
-      if (is_wall_b(e)) fw += w; else ++ninw;
+      const double w = 0.25 * l.length[e] * dual.dual_length[e] / vq, ct = l.direction.col(e).dot(et),
+                   cr = l.direction.col(e).dot(er);
+      if (is_wall_b(e))
+        fw += w;
+      else
+        ++ninw;
       fi += w * ct * ct, fd += w * ct * ct * (ct * ct - cr * cr);
     }
     fab_wt.add(fw), fab_iso.add(fi / 0.5), fab_dev.add(fd / 0.25), n_inward.add(ninw);
@@ -210,8 +221,7 @@ void study(const WallOption& o, long long n, std::uint64_t seed) {
         S_wall += outer;
         extra_v += 0.25 * l.length[e] * dual.dual_length[e];
         const auto [i, j] = l.beams[static_cast<std::size_t>(e)];
-        wall_strains.push_back(
-            (u.segment<2>(dof_index(j, 0)) - u.segment<2>(dof_index(i, 0))).dot(nn) / l.length[e]);
+        wall_strains.push_back((u.segment<2>(dof_index(j, 0)) - u.segment<2>(dof_index(i, 0))).dot(nn) / l.length[e]);
         eps_dl += dual.dual_length[e] * l.length[e] * wall_strains.back(), w_dl += dual.dual_length[e] * l.length[e];
         // Boundary traction on the half chord next to q: t = p m (m into the solid), arm (x - x_q) = s c,
         // c the chord direction from q: int_0^{L/2} s ds c (x) t = L^2/8 c (x) t (Cauchy average term).
@@ -269,18 +279,26 @@ void study(const WallOption& o, long long n, std::uint64_t seed) {
   std::printf("\n### %s, N = %lld, seed %llu: %d wall particles, %d wall beams, mean wall beam %.4f (r_min %.4f)\n",
               o.name, n, static_cast<unsigned long long>(seed), static_cast<int>(ur_ratio.v.size()), n_wall_beams,
               mean_wall_beam_len, l.min_spacing);
-  std::printf("(a) wall-beam axial strain / Lame u_r(R_i)/R_i: mean %.3f sd %.3f min %.3f max %.3f; wall u_r / Lame: mean %.3f sd %.3f max %.3f\n",
-              strain_ratio.mean(), strain_ratio.sd(), strain_ratio.min(), strain_ratio.max(), ur_ratio.mean(), ur_ratio.sd(), ur_ratio.max());
-  std::printf("(b) wall particle s_tt / Lame(R_i): mean %.3f sd %.3f max %.3f; / Lame(centroid r) %.3f; / Lame cell avg %.3f\n",
-              tt_ratio_ri.mean(), tt_ratio_ri.sd(), tt_ratio_ri.max(), tt_ratio_cen.mean(), tt_ratio_cell.mean());
-  std::printf("    Lame(centroid)/Lame(R_i) %.3f, Lame cell avg/Lame(R_i) %.3f, centroid depth (r_c - R_i)/L_wall %.3f, V/L_wall^2 %.3f\n",
-              lame_cen_over_ri.mean(), lame_cell_over_ri.mean(), r_cent_over_h.mean(), v_over_hl.mean());
+  std::printf(
+      "(a) wall-beam axial strain / Lame u_r(R_i)/R_i: mean %.3f sd %.3f min %.3f max %.3f; wall u_r / Lame: mean %.3f "
+      "sd %.3f max %.3f\n",
+      strain_ratio.mean(), strain_ratio.sd(), strain_ratio.min(), strain_ratio.max(), ur_ratio.mean(), ur_ratio.sd(),
+      ur_ratio.max());
+  std::printf(
+      "(b) wall particle s_tt / Lame(R_i): mean %.3f sd %.3f max %.3f; / Lame(centroid r) %.3f; / Lame cell avg %.3f\n",
+      tt_ratio_ri.mean(), tt_ratio_ri.sd(), tt_ratio_ri.max(), tt_ratio_cen.mean(), tt_ratio_cell.mean());
+  std::printf(
+      "    Lame(centroid)/Lame(R_i) %.3f, Lame cell avg/Lame(R_i) %.3f, centroid depth (r_c - R_i)/L_wall %.3f, "
+      "V/L_wall^2 %.3f\n",
+      lame_cen_over_ri.mean(), lame_cell_over_ri.mean(), r_cent_over_h.mean(), v_over_hl.mean());
   std::printf("    s_tt/Lame(R_i) parts: wall beams normal %.3f shear %.3f | inward beams normal %.3f shear %.3f\n",
               c_wall_n.mean(), c_wall_s.mean(), c_in_n.mean(), c_in_s.mean());
-  std::printf("    s_rr/p: mean %.3f sd %.3f (wall beams %.3f, inward %.3f); s_rt/p mean %.3f sd %.3f\n", rr_over_p.mean(),
-              rr_over_p.sd(), rr_wall.mean(), rr_in.mean(), rt_over_p.mean(), rt_over_p.sd());
-  std::printf("    wall-cell fabric: tangential weight %.3f (regular edge 1/3), hoop gain eps=I %.3f, polar pure shear %.3f; inward beams per wall particle %.2f\n",
-              fab_wt.mean(), fab_iso.mean(), fab_dev.mean(), n_inward.mean());
+  std::printf("    s_rr/p: mean %.3f sd %.3f (wall beams %.3f, inward %.3f); s_rt/p mean %.3f sd %.3f\n",
+              rr_over_p.mean(), rr_over_p.sd(), rr_wall.mean(), rr_in.mean(), rt_over_p.mean(), rt_over_p.sd());
+  std::printf(
+      "    wall-cell fabric: tangential weight %.3f (regular edge 1/3), hoop gain eps=I %.3f, polar pure shear %.3f; "
+      "inward beams per wall particle %.2f\n",
+      fab_wt.mean(), fab_iso.mean(), fab_dev.mean(), n_inward.mean());
   note(std::string(o.name) + " fabric tangential weight", fab_wt.mean());
   note(std::string(o.name) + " fabric hoop gain eps=I", fab_iso.mean());
   note(std::string(o.name) + " fabric hoop gain polar pure shear", fab_dev.mean());
@@ -354,14 +372,17 @@ void study(const WallOption& o, long long n, std::uint64_t seed) {
       best = std::max(best, r);
       if (!is_wall_p(i) && !is_wall_p(j)) best_off = std::max(best_off, r);
     }
-    std::printf("    %s: wall beams s1/Lame mean %.3f max %.3f (max/mean %.3f); off-wall max %.3f; p_first/p_crit %.3f\n",
-                smooth_name[k].c_str(), wall.mean(), wall.max(), wall.max() / wall.mean(), best_off, 1.0 / best);
+    std::printf(
+        "    %s: wall beams s1/Lame mean %.3f max %.3f (max/mean %.3f); off-wall max %.3f; p_first/p_crit %.3f\n",
+        smooth_name[k].c_str(), wall.mean(), wall.max(), wall.max() / wall.mean(), best_off, 1.0 / best);
     note(std::string(o.name) + " (e) " + smooth_name[k] + ": wall mean", wall.mean());
     note(std::string(o.name) + " (e) " + smooth_name[k] + ": max/mean", wall.max() / wall.mean());
     note(std::string(o.name) + " (e) " + smooth_name[k] + ": off-wall max", best_off);
     note(std::string(o.name) + " (e) " + smooth_name[k] + ": p_first/p_crit", 1.0 / best);
   }
-  std::printf("(c-e) | wall-particle stress | particle s_tt/Lame mean | wall beams s1/Lame mean | sd | max | max/mean | max over all beams (where) | p_first/p_crit |\n");
+  std::printf(
+      "(c-e) | wall-particle stress | particle s_tt/Lame mean | wall beams s1/Lame mean | sd | max | max/mean | max "
+      "over all beams (where) | p_first/p_crit |\n");
   for (int k = 0; k < n_alt; ++k) {
     const BeamStress bs = compute_beam_stress(l, ParticleStress{alt[k], ps.skew});
     Stats wall;
@@ -380,10 +401,15 @@ void study(const WallOption& o, long long n, std::uint64_t seed) {
         off_local = bs.sigma_1[e] / lame.state(off_r).sigma_theta;
       }
     }
-    const char* wname = where == 2 ? "wall beam" : where == 1 ? "beam with one end on wall" : where == 0 ? "off-wall" : "both ends on wall, not a wall beam";
-    std::printf("| %s | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f (%s; off-wall max %.3f at r = %.4f, %.2f x Lame there) | %.3f |\n", alt_name[k],
-                alt_tt[static_cast<std::size_t>(k)].mean(), wall.mean(), wall.sd(), wall.max(), wall.max() / wall.mean(),
-                best, wname, best_not_wall_touching, off_r, off_local, 1.0 / best);
+    const char* wname = where == 2   ? "wall beam"
+                        : where == 1 ? "beam with one end on wall"
+                        : where == 0 ? "off-wall"
+                                     : "both ends on wall, not a wall beam";
+    std::printf(
+        "| %s | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f (%s; off-wall max %.3f at r = %.4f, %.2f x Lame there) | %.3f "
+        "|\n",
+        alt_name[k], alt_tt[static_cast<std::size_t>(k)].mean(), wall.mean(), wall.sd(), wall.max(),
+        wall.max() / wall.mean(), best, wname, best_not_wall_touching, off_r, off_local, 1.0 / best);
     const std::string key = std::string(o.name) + " (e) " + alt_name[k];
     note(key + ": wall beam s1 mean", wall.mean());
     note(key + ": wall beam s1 max", wall.max());
@@ -414,9 +440,11 @@ void study(const WallOption& o, long long n, std::uint64_t seed) {
     }
     for (int e = 0; e < nb; ++e)
       if (is_wall_b(e)) wb.add(bl.sigma_1[e] / hoop);
-    std::printf("    imposed Lame u: wall particle s_tt/Lame(R_i) %.3f (sd %.3f), s_rr/p %.3f; wall beams s1 mean %.3f max %.3f; "
-                "interior 0.3<r<0.5 s_tt/Lame %.3f s_rr/Lame %.3f; relaxed/imposed wall s_tt %.3f\n",
-                wt.mean(), wt.sd(), wr.mean(), wb.mean(), wb.max(), it.mean(), ir.mean(), tt_lat_vs_imposed.mean());
+    std::printf(
+        "    imposed Lame u: wall particle s_tt/Lame(R_i) %.3f (sd %.3f), s_rr/p %.3f; wall beams s1 mean %.3f max "
+        "%.3f; "
+        "interior 0.3<r<0.5 s_tt/Lame %.3f s_rr/Lame %.3f; relaxed/imposed wall s_tt %.3f\n",
+        wt.mean(), wt.sd(), wr.mean(), wb.mean(), wb.max(), it.mean(), ir.mean(), tt_lat_vs_imposed.mean());
     note(std::string(o.name) + " imposed Lame: wall particle s_tt/Lame(R_i)", wt.mean());
     note(std::string(o.name) + " imposed Lame: wall beam s1 mean", wb.mean());
     note(std::string(o.name) + " imposed Lame: wall beam s1 max", wb.max());
@@ -427,7 +455,8 @@ void study(const WallOption& o, long long n, std::uint64_t seed) {
   // the interior's mean affine stress (0.3 < r < 0.9) in the same polar frame, as a least-squares gain
   // sum(s_wall s_int)/sum(s_int^2): the boundary cell's fabric error alone.
   for (int k = 0; k < 2; ++k) {
-    Eigen::Matrix2d eps = k == 0 ? Eigen::Matrix2d::Identity() : Eigen::Matrix2d(Eigen::Vector2d(1.0, -1.0).asDiagonal());
+    Eigen::Matrix2d eps =
+        k == 0 ? Eigen::Matrix2d::Identity() : Eigen::Matrix2d(Eigen::Vector2d(1.0, -1.0).asDiagonal());
     Eigen::VectorXd ua = Eigen::VectorXd::Zero(3 * np);
     for (int i = 0; i < np; ++i) ua.segment<2>(dof_index(i, 0)) = eps * l.points.col(i);
     const ParticleStress pa = compute_particle_stress(l, dual, compute_beam_forces(l, bp, ua));
@@ -478,10 +507,12 @@ void study(const WallOption& o, long long n, std::uint64_t seed) {
         b_ri.add(bs.sigma_1[e] / hoop), b_local.add(bs.sigma_1[e] / lame.state(rm).sigma_theta);
       }
     }
-    std::printf("    second row (%d particles, depth %.2f L_wall): s_tt/Lame(r) mean %.3f sd %.3f max %.3f [interior 0.3<r<0.5: mean %.3f sd %.3f]; "
-                "row-2 beams s1/Lame(R_i) mean %.3f max %.3f, s1/Lame(r) mean %.3f\n",
-                static_cast<int>(tt_local.v.size()), depth.mean(), tt_local.mean(), tt_local.sd(), tt_local.max(), tt_interior.mean(),
-                tt_interior.sd(), b_ri.mean(), b_ri.max(), b_local.mean());
+    std::printf(
+        "    second row (%d particles, depth %.2f L_wall): s_tt/Lame(r) mean %.3f sd %.3f max %.3f [interior "
+        "0.3<r<0.5: mean %.3f sd %.3f]; "
+        "row-2 beams s1/Lame(R_i) mean %.3f max %.3f, s1/Lame(r) mean %.3f\n",
+        static_cast<int>(tt_local.v.size()), depth.mean(), tt_local.mean(), tt_local.sd(), tt_local.max(),
+        tt_interior.mean(), tt_interior.sd(), b_ri.mean(), b_ri.max(), b_local.mean());
     note(std::string(o.name) + " row 2: s_tt/Lame(r) mean", tt_local.mean());
     note(std::string(o.name) + " row 2: beams s1/Lame(R_i) max", b_ri.max());
     note(std::string(o.name) + " interior 0.3<r<0.5 s_tt/Lame(r) mean", tt_interior.mean());
@@ -495,7 +526,8 @@ void study(const WallOption& o, long long n, std::uint64_t seed) {
       // F_ij = +|F| n_ij in tension (force on i towards j).
       fn_d.add(Fn / dual.dual_length[e] / hoop);
     }
-  std::printf("    per-beam F_n/d_su on wall beams / Lame(R_i): mean %.3f sd %.3f max %.3f\n", fn_d.mean(), fn_d.sd(), fn_d.max());
+  std::printf("    per-beam F_n/d_su on wall beams / Lame(R_i): mean %.3f sd %.3f max %.3f\n", fn_d.mean(), fn_d.sd(),
+              fn_d.max());
   note(std::string(o.name) + " (e) wall beam F_n/d_su mean", fn_d.mean());
   note(std::string(o.name) + " (e) wall beam F_n/d_su max", fn_d.max());
 }
@@ -508,7 +540,9 @@ void regular_lattice_free_edge() {
   const int edge = 10, inner = 10 * n + 5;  // bottom-row middle particle; an interior particle
   const double hoop = (1 + 0.138 * 0.138) / (1 - 0.138 * 0.138);
   std::printf("\n## Regular triangular lattice, affine u = eps x (omega = 0), edge particle vs interior particle\n");
-  std::printf("| beams | a | strain (eps_xx, eps_yy) | edge s_xx / interior s_xx | edge s_yy / interior s_yy | interior (s_xx, s_yy) |\n");
+  std::printf(
+      "| beams | a | strain (eps_xx, eps_yy) | edge s_xx / interior s_xx | edge s_yy / interior s_yy | interior (s_xx, "
+      "s_yy) |\n");
   for (StiffnessScaling sc : {StiffnessScaling::uniform, StiffnessScaling::voronoi_facet})
     for (double a : {1e-3, 0.5061}) {
       BeamParameters bp;

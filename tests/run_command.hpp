@@ -47,8 +47,8 @@ inline CommandResult run_hmlattice(const std::string& args, const std::filesyste
                           std::to_string(std::hash<std::string>{}(workdir.string()));
   const auto out = std::filesystem::temp_directory_path() / (tag + ".stdout.txt"),
              err = std::filesystem::temp_directory_path() / (tag + ".stderr.txt");
-  const std::string cmd = prefix + "cd '" + workdir.string() + "' && " + launcher + "'" + HMLATTICE_EXE + "' " + args + " > '" +
-                          out.string() + "' 2> '" + err.string() + "'";
+  const std::string cmd = prefix + "cd '" + workdir.string() + "' && " + launcher + "'" + HMLATTICE_EXE + "' " + args +
+                          " > '" + out.string() + "' 2> '" + err.string() + "'";
   const int status = std::system(cmd.c_str());
   CommandResult r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
   std::filesystem::remove(out);

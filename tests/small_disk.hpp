@@ -20,7 +20,8 @@ class SmallDisk {
     std::filesystem::create_directories(folder_);
     const std::string size = "size=" + std::to_string(kib) + "k";
     // HM_TEST_NO_TMPFS=1 tries the fault injection as root too.
-    mounted_ = ::geteuid() == 0 && !std::getenv("HM_TEST_NO_TMPFS") && ::mount("tmpfs", folder_.c_str(), "tmpfs", 0, size.c_str()) == 0;
+    mounted_ = ::geteuid() == 0 && !std::getenv("HM_TEST_NO_TMPFS") &&
+               ::mount("tmpfs", folder_.c_str(), "tmpfs", 0, size.c_str()) == 0;
   }
   ~SmallDisk() {
     if (mounted_) ::umount(folder_.c_str());

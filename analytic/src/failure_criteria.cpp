@@ -19,8 +19,8 @@ double coulomb_stress(double sigma_1, double sigma_3, double friction) {
   return coulomb_factor(friction) * sigma_1 - sigma_3;
 }
 
-FailureCheck check_failure(double sigma_1, double sigma_3, double tensile_strength,
-                           double compressive_strength, double friction) {
+FailureCheck check_failure(double sigma_1, double sigma_3, double tensile_strength, double compressive_strength,
+                           double friction) {
   const double tensile = sigma_1 / tensile_strength;
   const double shear = coulomb_stress(sigma_1, sigma_3, friction) / compressive_strength;
   const double ratio = std::max(tensile, shear);

@@ -29,7 +29,8 @@ PolarState michell_cos2(const MichellCos2& m, double nu, double r, double psi) {
   st.sigma_theta = (2.0 * m.A + 12.0 * m.B * r2 + 6.0 * m.C * ir4) * c;
   st.sigma_rtheta = (2.0 * m.A + 6.0 * m.B * r2 - 6.0 * m.C * ir4 - 2.0 * m.D * ir2) * s;
   st.u_r = (-2.0 * m.A * r + (kappa - 3.0) * m.B * r2 * r + 2.0 * m.C * ir2 / r + (kappa + 1.0) * m.D / r) * c / two_mu;
-  st.u_theta = (2.0 * m.A * r + (kappa + 3.0) * m.B * r2 * r + 2.0 * m.C * ir2 / r - (kappa - 1.0) * m.D / r) * s / two_mu;
+  st.u_theta =
+      (2.0 * m.A * r + (kappa + 3.0) * m.B * r2 * r + 2.0 * m.C * ir2 / r - (kappa - 1.0) * m.D / r) * s / two_mu;
   return st;
 }
 

@@ -32,8 +32,8 @@ void PhysicalParameters::validate() const {
   require_non_negative(mu_i, "mu_i");
   // Eq. 22 gives E/M <= 0 when b is well below the porosity: no physical Biot modulus.
   if (E_over_M_eq22(b, nu, porosity, E_si / K_w_si) <= 0.0)
-    throw InputError("b = " + format_value(b) + ", allowed: b large enough that Eq. 22 gives M > 0 (porosity = " +
-                     format_value(porosity) + ")");
+    throw InputError("b = " + format_value(b) +
+                     ", allowed: b large enough that Eq. 22 gives M > 0 (porosity = " + format_value(porosity) + ")");
 }
 
 void DimensionlessParameters::validate() const {
@@ -45,11 +45,12 @@ void DimensionlessParameters::validate() const {
     throw InputError("iota = " + format_value(iota) + ", allowed: " + format_value(kMinIota) +
                      " <= iota <= " + format_value(kMaxIota));
   require_half_open(R_i, "R_i", 0.0, 1.0);
-  for (const auto& [value, name] : {std::pair{tensile_strength, "tensile_strength"},
-                                    std::pair{compressive_strength, "compressive_strength"}})
+  for (const auto& [value, name] :
+       {std::pair{tensile_strength, "tensile_strength"}, std::pair{compressive_strength, "compressive_strength"}})
     if (!(value > 0.0 && value <= kMaxStrength))
-      throw InputError(std::string(name) + " = " + format_value(value) + ", allowed: 0 < " + name + " <= " +
-                       format_value(kMaxStrength) + " (over E, a strain at failure; a strength in Pa belongs in a case "
+      throw InputError(std::string(name) + " = " + format_value(value) + ", allowed: 0 < " + name +
+                       " <= " + format_value(kMaxStrength) +
+                       " (over E, a strain at failure; a strength in Pa belongs in a case "
                        "in SI units)");
   require_non_negative(friction, "friction");
   require_positive(E_over_Kw, "E_over_Kw");

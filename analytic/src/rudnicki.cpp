@@ -46,8 +46,7 @@ Kernel kernel(double r, double t, double S) {
 
 }  // namespace
 
-RudnickiLineSource::RudnickiLineSource(double Q, const PoroelasticParameters& m)
-    : Q_(Q), material_(m), storage_(0.0) {
+RudnickiLineSource::RudnickiLineSource(double Q, const PoroelasticParameters& m) : Q_(Q), material_(m), storage_(0.0) {
   material_.validate();
   require_finite(Q, "Q");
   storage_ = storage_coefficient(material_);
@@ -55,8 +54,8 @@ RudnickiLineSource::RudnickiLineSource(double Q, const PoroelasticParameters& m)
 
 RadialState RudnickiLineSource::state(double r, double t) const {
   if (!(std::isfinite(r) && r > 0.0) || !std::isfinite(t))
-    throw std::domain_error("RudnickiLineSource: need finite r > 0 and finite t, got r = " +
-                            format_value(r) + ", t = " + format_value(t));
+    throw std::domain_error("RudnickiLineSource: need finite r > 0 and finite t, got r = " + format_value(r) +
+                            ", t = " + format_value(t));
   RadialState s;
   if (t <= 0.0) return s;  // before injection starts: unstressed, p = p0
 

@@ -2,16 +2,16 @@
 
 #include <charconv>
 #include <cmath>
-#include <limits>
-#include <system_error>
 #include <cstdio>
+#include <limits>
 #include <regex>
 #include <sstream>
+#include <system_error>
 
 #include "hm/analytic/biot_modulus.hpp"
+#include "hm/case/case_keys.hpp"
 #include "hm/core/input_error.hpp"
 #include "hm/core/validation.hpp"
-#include "hm/case/case_keys.hpp"
 
 namespace hm::cases {
 
@@ -303,8 +303,7 @@ std::string physics_reference_markdown() {
 
 CasePhysics read_physics(CaseTable& root) {
   const bool dimensionless = root.has("physics"), physical = root.has("physics_si");
-  if (dimensionless && physical)
-    root.fail("both [physics] and [physics_si] given, allowed: exactly one of them");
+  if (dimensionless && physical) root.fail("both [physics] and [physics_si] given, allowed: exactly one of them");
   CasePhysics out;
   if (physical) {
     PhysicsSi si;

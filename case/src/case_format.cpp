@@ -18,10 +18,9 @@ std::string case_format_reference() {
          "beside every result lists every key with its value and repeats the run (a [physics_si] case's\n"
          "config.toml holds [physics_si], with the dimensionless values it converts to as comments).\n\n"
          "## Physics (both models): exactly one of [physics] or [physics_si]\n\n" +
-         physics_reference_markdown() +
-         "## model = \"lattice2d\" (`hmlattice run`)\n\n" + run_case_keys().reference_markdown() +
-         "## model = \"fdm1d\" (`hmlattice fdm1d`)\n\n" + fdm1d_case_keys().reference_markdown() +
-         sweep_reference_markdown();
+         physics_reference_markdown() + "## model = \"lattice2d\" (`hmlattice run`)\n\n" +
+         run_case_keys().reference_markdown() + "## model = \"fdm1d\" (`hmlattice fdm1d`)\n\n" +
+         fdm1d_case_keys().reference_markdown() + sweep_reference_markdown();
 }
 
 }  // namespace hm::cases

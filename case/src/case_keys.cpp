@@ -1,8 +1,8 @@
 #include "hm/case/case_keys.hpp"
 
+#include "hm/core/input_error.hpp"
 #include "hm/core/toml_text.hpp"
 #include "hm/core/validation.hpp"
-#include "hm/core/input_error.hpp"
 
 namespace hm::cases {
 

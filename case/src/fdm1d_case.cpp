@@ -69,8 +69,7 @@ Fdm1dCase read_fdm1d_case(const std::filesystem::path& file, const std::vector<s
 
   Fdm1dCase c;
   c.physics = read_physics(root);
-  if (!(c.physics.parameters.R_i > 0.0))
-    root.fail("R_i = 0, allowed: 0 < R_i < 1 (the 1D model needs a borehole)");
+  if (!(c.physics.parameters.R_i > 0.0)) root.fail("R_i = 0, allowed: 0 < R_i < 1 (the 1D model needs a borehole)");
   fdm1d_case_keys().read(root, c);
   root.reject_unknown();
   // The default output times are Fig. 10's, up to t* = 1: a shorter run keeps those it reaches (its

@@ -4,8 +4,8 @@
 
 #include "hm/analytic/failure_criteria.hpp"
 #include "hm/analytic/steady_borehole.hpp"
-#include "hm/core/validation.hpp"
 #include "hm/core/file_output.hpp"
+#include "hm/core/validation.hpp"
 
 namespace hm::cases {
 
@@ -41,8 +41,8 @@ void Fdm1dRecorder::record(const hm::fdm1d::Fdm1dResult& res) {
   if (r_.empty()) r_ = res.r;  // the grid never changes during a run
   for (; n_samples_ < res.borehole.size(); ++n_samples_) {
     const auto& s = res.borehole[n_samples_];
-    borehole_->row({s.t, s.p_h, s.injected, s.stored, s.outflow, s.balance_error, s.sigma_r, s.sigma_theta, s.sigma_z,
-                    s.coulomb});
+    borehole_->row(
+        {s.t, s.p_h, s.injected, s.stored, s.outflow, s.balance_error, s.sigma_r, s.sigma_theta, s.sigma_z, s.coulomb});
     std::vector<double> row = {s.t};
     row.insert(row.end(), res.probe_p[n_samples_].begin(), res.probe_p[n_samples_].end());
     probes_->row(row);

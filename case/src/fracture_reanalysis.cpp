@@ -7,20 +7,19 @@
 #include <stdexcept>
 #include <vector>
 
+#include "hm/case/provenance.hpp"
+#include "hm/case/run_case.hpp"
+#include "hm/case/run_files.hpp"
 #include "hm/core/file_output.hpp"
-#include "hm/core/toml_text.hpp"
 #include "hm/core/input_error.hpp"
+#include "hm/core/result_folder.hpp"
+#include "hm/core/toml_text.hpp"
 #include "hm/core/validation.hpp"
-#include "hm/core/result_folder.hpp"
-#include "hm/core/result_folder.hpp"
 #include "hm/lattice2d/fracture/failure.hpp"
 #include "hm/lattice2d/geometry/lattice.hpp"
-#include "hm/lattice2d/io/vtk_writer.hpp"
-#include "hm/case/provenance.hpp"
-#include "hm/case/run_files.hpp"
-#include "hm/case/run_case.hpp"
 #include "hm/lattice2d/io/break_log.hpp"
 #include "hm/lattice2d/io/fracture_tables.hpp"
+#include "hm/lattice2d/io/vtk_writer.hpp"
 
 namespace hm::cases {
 
@@ -42,7 +41,8 @@ std::vector<double> snapshot_times(const std::filesystem::path& file) {
   std::string line;
   std::getline(in, line);
   if (line.rfind("t,n_broken,", 0) != 0)
-    throw InputError(file.string() + ":1: not a fracture summary, allowed: the fracture_summary.csv `hmlattice run` wrote");
+    throw InputError(file.string() +
+                     ":1: not a fracture summary, allowed: the fracture_summary.csv `hmlattice run` wrote");
   std::vector<double> times;
   for (int line_no = 2; std::getline(in, line); ++line_no) {
     if (line.empty()) continue;
@@ -81,7 +81,8 @@ FractureReanalysis recompute_fracture_statistics(const std::filesystem::path& ru
   if (!core::is_complete_result(run_dir))
     throw InputError("run folder = " + run_dir.string() +
                      " holds a run that has not finished (see its status.toml), allowed: a finished run; continue it "
-                     "with hmlattice run --resume " + run_dir.string() + " first");
+                     "with hmlattice run --resume " +
+                     run_dir.string() + " first");
   RunCase c = read_run_case(config_file);
   if (!c.fracture_enabled)
     throw InputError("run folder = " + run_dir.string() + ": [fracture] enabled = false in its config.toml");
@@ -98,11 +99,13 @@ FractureReanalysis recompute_fracture_statistics(const std::filesystem::path& ru
   // the generator, an edited config) is caught here instead of giving wrong statistics.
   for (const lt::BreakEvent& ev : log) {
     const bool known = ev.beam >= 0 && ev.beam < lattice.n_beams();
-    const std::array<int, 2> ends = known ? lattice.beams[static_cast<std::size_t>(ev.beam)] : std::array<int, 2>{-1, -1};
+    const std::array<int, 2> ends =
+        known ? lattice.beams[static_cast<std::size_t>(ev.beam)] : std::array<int, 2>{-1, -1};
     if (ends[0] != ev.particle_i || ends[1] != ev.particle_j)
-      throw std::runtime_error(breaks_file.string() + ": beam " + std::to_string(ev.beam) + " joins particles " +
-                               std::to_string(ev.particle_i) + "-" + std::to_string(ev.particle_j) +
-                               " in the log but not in the lattice of config.toml; was the run made by another version?");
+      throw std::runtime_error(
+          breaks_file.string() + ": beam " + std::to_string(ev.beam) + " joins particles " +
+          std::to_string(ev.particle_i) + "-" + std::to_string(ev.particle_j) +
+          " in the log but not in the lattice of config.toml; was the run made by another version?");
   }
   std::vector<lt::FractureSnapshot> snapshots;
   for (double t : times) {
@@ -114,10 +117,10 @@ FractureReanalysis recompute_fracture_statistics(const std::filesystem::path& ru
   }
 
   const std::string provenance = provenance_part(text_of(config_file));
-  const std::string config =
-      run_case_to_toml(c, "# fracture statistics recomputed with fracture_link = \"" + hm::core::name_of(options.link) +
-                              "\", arm_gap = " + toml_real(options.arm_gap) + " by: " + core::toml_string(command_line) + " (" + make_provenance(command_line).utc_time + ")\n" +
-                              provenance);
+  const std::string config = run_case_to_toml(
+      c, "# fracture statistics recomputed with fracture_link = \"" + hm::core::name_of(options.link) +
+             "\", arm_gap = " + toml_real(options.arm_gap) + " by: " + core::toml_string(command_line) + " (" +
+             make_provenance(command_line).utc_time + ")\n" + provenance);
   lt::write_fracture_table(fractures_file, snapshots);
   lt::write_fracture_summary(summary_file, snapshots);
   core::write_file_atomically(config_file, [&](std::ostream& out) { out << config; });

@@ -5,8 +5,11 @@
 namespace hm::cases {
 
 ProgressReporter::ProgressReporter(std::ostream& out, std::string label, double interval_s)
-    : out_(out), label_(std::move(label)), interval_s_(interval_s),
-      start_(std::chrono::steady_clock::now()), last_(start_) {}
+    : out_(out),
+      label_(std::move(label)),
+      interval_s_(interval_s),
+      start_(std::chrono::steady_clock::now()),
+      last_(start_) {}
 
 void ProgressReporter::update(double t, double t_end, const std::string& extra) {
   const auto now = std::chrono::steady_clock::now();

@@ -4,20 +4,21 @@
 #include <limits>
 #include <numbers>
 
+#include "hm/case/case_keys.hpp"
 #include "hm/core/input_error.hpp"
 #include "hm/core/validation.hpp"
 #include "hm/lattice2d/mechanics/calibration.hpp"
 #include "hm/lattice2d/mechanics/far_field.hpp"
-#include "hm/case/case_keys.hpp"
 
 namespace hm::cases {
 
 namespace lt = hm::lattice2d;
 
-
 lt::BeamParameters RunCase::beams() const { return lt::calibrated_beam_parameters(stiffness_scaling); }
 
-hm::analytic::FarFieldStress InSituState::far_field() const { return {S_H, S_h, theta_H_deg * std::numbers::pi / 180.0}; }
+hm::analytic::FarFieldStress InSituState::far_field() const {
+  return {S_H, S_h, theta_H_deg * std::numbers::pi / 180.0};
+}
 
 lt::BoundaryConditions RunCase::boundary_conditions() const {
   lt::BoundaryConditions bc = boundary;
@@ -70,8 +71,9 @@ void check_cubic_law(CaseTable& flow, const RunCase& c) {
     return;
   }
   if (k == 0.0 && !c.physics.physical)
-    flow.fail("rock_permeability is missing, allowed: 1e-25 <= value <= 1e-2 (k/R^2), required with fracture_flow = "
-              "\"cubic\" and [physics]");
+    flow.fail(
+        "rock_permeability is missing, allowed: 1e-25 <= value <= 1e-2 (k/R^2), required with fracture_flow = "
+        "\"cubic\" and [physics]");
   // 1e-25: a nanodarcy shale (1e-21 m^2) in a domain of 100 m; 1e-2: a pore as wide as a tenth of R.
   if (!(k >= 1e-25 && k <= 1e-2))
     flow.fail("rock_permeability = " + core::format_value(k) + ", allowed: 1e-25 <= value <= 1e-2 (k/R^2)");

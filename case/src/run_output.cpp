@@ -7,9 +7,9 @@
 
 #include "hm/core/file_output.hpp"
 #include "hm/core/input_error.hpp"
-#include "hm/lattice2d/io/radial_average.hpp"
 #include "hm/lattice2d/io/break_log.hpp"
 #include "hm/lattice2d/io/fracture_tables.hpp"
+#include "hm/lattice2d/io/radial_average.hpp"
 
 namespace hm::cases {
 
@@ -62,13 +62,22 @@ RadialFields radial_fields(const lt::CoupledModel& model, const std::vector<doub
 
 namespace {
 
-const std::vector<std::string> series_columns = {"t", "dt", "p_h", "injected", "stored", "coupling", "outflow",
-                                                 "balance_error", "n_broken", "iterations", "pressure_residual",
+const std::vector<std::string> series_columns = {"t",
+                                                 "dt",
+                                                 "p_h",
+                                                 "injected",
+                                                 "stored",
+                                                 "coupling",
+                                                 "outflow",
+                                                 "balance_error",
+                                                 "n_broken",
+                                                 "iterations",
+                                                 "pressure_residual",
                                                  "displacement_residual"};
 const std::vector<std::string> radial_columns = {"t", "r", "r_mean", "n_triangles", "u_r", "p"};
-const std::vector<std::string> fracture_pressure_columns = {"t", "mean_all", "mean_away", "min_away", "n_all", "n_away",
-                                                            "negative_area_fraction", "p_min", "p_max",
-                                                            "borehole_backflow", "outer_inflow", "mouth_inflow"};
+const std::vector<std::string> fracture_pressure_columns = {
+    "t",     "mean_all", "mean_away",         "min_away",     "n_all",       "n_away", "negative_area_fraction",
+    "p_min", "p_max",    "borehole_backflow", "outer_inflow", "mouth_inflow"};
 
 // The streamed CSV files in the table's order: the order of their lengths in a checkpoint.
 std::vector<RunFileId> streamed_files() {
@@ -79,7 +88,9 @@ std::vector<RunFileId> streamed_files() {
 }
 
 // The folder of the VTK snapshots: the .pvd's.
-std::filesystem::path vtk_folder(const std::filesystem::path& dir) { return run_file_path(dir, RunFileId::vtk).parent_path(); }
+std::filesystem::path vtk_folder(const std::filesystem::path& dir) {
+  return run_file_path(dir, RunFileId::vtk).parent_path();
+}
 
 // The fracture statistics when the log held its first n events: broken beams never heal and only the
 // break loop breaks them (logging each), so those events' beams are the broken ones at that time.
@@ -130,7 +141,8 @@ RunRecorder::RunRecorder(const std::filesystem::path& dir, const RunCase& c, con
   r.get("recorder.file_sizes", sizes);
   const std::vector<RunFileId> streamed = streamed_files();
   if (sizes.size() != streamed.size())
-    throw InputError(r.source() + ": at 'recorder.file_sizes': " + std::to_string(streamed.size()) + " values expected");
+    throw InputError(r.source() + ": at 'recorder.file_sizes': " + std::to_string(streamed.size()) +
+                     " values expected");
   std::vector<double> b;
   r.get("recorder.breakdown", b);
   if (b.size() != 9) throw InputError(r.source() + ": at 'recorder.breakdown': 9 values expected");
@@ -155,8 +167,8 @@ RunRecorder::RunRecorder(const std::filesystem::path& dir, const RunCase& c, con
   for (std::size_t k = 0; k < fracture_t.size(); ++k) {
     if (fracture_n[k] < 0 || static_cast<std::size_t>(fracture_n[k]) > log.size())
       throw InputError(r.source() + ": at 'recorder.fracture_log_sizes': longer than the break log");
-    fractures_.push_back(fracture_snapshot(model.lattice(), log, static_cast<std::size_t>(fracture_n[k]),
-                                           fracture_t[k], statistics_options_));
+    fractures_.push_back(fracture_snapshot(model.lattice(), log, static_cast<std::size_t>(fracture_n[k]), fracture_t[k],
+                                           statistics_options_));
     fracture_log_sizes_.push_back(static_cast<std::size_t>(fracture_n[k]));
   }
   if (fracture_) breaks_ = log;
@@ -177,7 +189,8 @@ RunRecorder::RunRecorder(const std::filesystem::path& dir, const RunCase& c, con
       if (!std::filesystem::is_regular_file(file, ec))
         problem = "is missing";
       else if (const auto size = static_cast<std::int64_t>(std::filesystem::file_size(file, ec)); size != vtk_sizes[k])
-        problem = "has " + std::to_string(size) + " bytes, not the " + std::to_string(vtk_sizes[k]) + " the stopped run wrote";
+        problem = "has " + std::to_string(size) + " bytes, not the " + std::to_string(vtk_sizes[k]) +
+                  " the stopped run wrote";
       if (!problem.empty())
         throw InputError("'" + file.string() + "' " + problem +
                          "; allowed: the run folder as the stopped run left it (rerun the case from its config.toml "
@@ -186,7 +199,8 @@ RunRecorder::RunRecorder(const std::filesystem::path& dir, const RunCase& c, con
 
   for (std::size_t k = 0; k < streamed.size(); ++k)
     if (writes(c, run_file(streamed[k])))
-      streams_[streamed[k]] = core::open_for_appending(run_file_path(dir, streamed[k]), static_cast<std::uintmax_t>(sizes[k]));
+      streams_[streamed[k]] =
+          core::open_for_appending(run_file_path(dir, streamed[k]), static_cast<std::uintmax_t>(sizes[k]));
   open_writers(core::CsvHeader::already_written);
   if (output_.vtk)
     vtk_ = std::make_unique<lt::VtkSeries>(vtk_folder(dir), "lattice", lt::VtkFormat::binary, std::move(written));
@@ -266,13 +280,13 @@ void RunRecorder::record(const lt::CoupledModel& model, const lt::CoupledStepSum
     radial_->row({model.time(), f.r_mid[k], f.r_mean[k], static_cast<double>(f.n_triangles[k]), f.u_r[k], f.p[k]});
   streams_[RunFileId::radial].flush();
   if (fracture_) {
-    fractures_.push_back(
-        fracture_snapshot(model.lattice(), model.break_log(), model.break_log().size(), model.time(), statistics_options_));
+    fractures_.push_back(fracture_snapshot(model.lattice(), model.break_log(), model.break_log().size(), model.time(),
+                                           statistics_options_));
     fracture_log_sizes_.push_back(model.break_log().size());
     const FracturePressure fp = fracture_pressure(model);
     pressure_->row({model.time(), fp.mean_all, fp.mean_away, fp.min_away, static_cast<double>(fp.n_all),
-                    static_cast<double>(fp.n_away), fp.negative_area_fraction, fp.p_min, fp.p_max,
-                    fp.borehole_backflow, fp.outer_inflow, fp.mouth_inflow});
+                    static_cast<double>(fp.n_away), fp.negative_area_fraction, fp.p_min, fp.p_max, fp.borehole_backflow,
+                    fp.outer_inflow, fp.mouth_inflow});
     streams_[RunFileId::fracture_pressure].flush();
   }
   if (vtk_) {

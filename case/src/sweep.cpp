@@ -22,8 +22,8 @@ namespace {
 // A combination's name is a file name on every system the toolkit runs on: anything but these
 // becomes '-', and two combinations that end up with one name are refused.
 bool is_name_character(char ch) {
-  return (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') || ch == '.' ||
-         ch == '_' || ch == '=' || ch == '+' || ch == '-';
+  return (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') || ch == '.' || ch == '_' ||
+         ch == '=' || ch == '+' || ch == '-';
 }
 
 std::string safe_name(std::string text) {
@@ -77,7 +77,8 @@ constexpr const char* list_rule = "a non-empty list of numbers, strings or boole
 std::vector<Axis> read_axes(const toml::value& root, const std::string& file) {
   const auto fail = [&](const std::string& message) -> void { throw InputError(file + ": [sweep] " + message); };
   if (!root.contains("sweep"))
-    throw InputError(file + ": [sweep] is missing, allowed: a table of \"table.key\" = [values] (see docs/case-format.md)");
+    throw InputError(file +
+                     ": [sweep] is missing, allowed: a table of \"table.key\" = [values] (see docs/case-format.md)");
   const toml::value& sweep = root.at("sweep");
   if (!sweep.is_table() || sweep.as_table().empty())
     throw InputError(file + ": sweep = " + echo_value(sweep) +
@@ -97,7 +98,8 @@ std::vector<Axis> read_axes(const toml::value& root, const std::string& file) {
     if (dot == std::string::npos || dot == 0 || dot + 1 == name.size() || name.find('.', dot + 1) != std::string::npos)
       fail(shown + ", allowed: a key \"table.key\" of the case, e.g. \"physics.Q\"");
     const std::string table = name.substr(0, dot), key = name.substr(dot + 1);
-    if (table == "sweep" || table == "provenance") fail(shown + ", allowed: a key of the case's model, not of [" + table + "]");
+    if (table == "sweep" || table == "provenance")
+      fail(shown + ", allowed: a key of the case's model, not of [" + table + "]");
     if (!list.is_array() || list.as_array().empty()) fail(shown + ", allowed: " + list_rule);
     const std::string kind = kind_of(list.as_array().front());
     for (const toml::value& v : list.as_array())
@@ -134,15 +136,17 @@ SweepExpansion expand_sweep(const fs::path& case_file, const fs::path& folder, l
   SweepExpansion out;
   out.model = root.contains("model") && root.at("model").is_string() ? root.at("model").as_string().str : "";
   if (out.model != "lattice2d" && out.model != "fdm1d")
-    throw InputError(file + ": model = " + (root.contains("model") ? core::echo(toml::format(root.at("model"))) : "(missing)") +
-                     ", allowed: \"lattice2d\" or \"fdm1d\" (the model every combination runs)");
+    throw InputError(
+        file + ": model = " + (root.contains("model") ? core::echo(toml::format(root.at("model"))) : "(missing)") +
+        ", allowed: \"lattice2d\" or \"fdm1d\" (the model every combination runs)");
   out.command = out.model == "fdm1d" ? "fdm1d" : "run";
   const std::vector<Axis> axes = read_axes(root, file);
   for (const Axis& a : axes) out.axes.push_back(a.shown);
   out.n_planned = 1;
   std::string sizes;
   for (const Axis& a : axes) {
-    out.n_planned = static_cast<long long>(std::min<double>(static_cast<double>(out.n_planned) * a.values.size(), 9e18));
+    out.n_planned =
+        static_cast<long long>(std::min<double>(static_cast<double>(out.n_planned) * a.values.size(), 9e18));
     sizes += (sizes.empty() ? "" : " x ") + std::to_string(a.values.size());
   }
   if (out.n_planned > max_combinations)
@@ -169,8 +173,8 @@ SweepExpansion expand_sweep(const fs::path& case_file, const fs::path& folder, l
       const toml::value& v = a.values[at[i]];
       if (!c.contains(a.table)) c[a.table] = toml::table{};
       if (!c.at(a.table).is_table())
-        throw InputError(file + ": [sweep] " + a.shown.key + ": " + a.table + " = " +
-                         echo_value(c.at(a.table)) + ", allowed: a table [" + a.table + "]");
+        throw InputError(file + ": [sweep] " + a.shown.key + ": " + a.table + " = " + echo_value(c.at(a.table)) +
+                         ", allowed: a table [" + a.table + "]");
       c[a.table][a.key] = v;
       combination.values.push_back(a.shown.values[at[i]]);
       combination.name += (i ? "_" : "") + a.shown.short_name + "=" + a.shown.values[at[i]];

@@ -46,7 +46,6 @@ std::string marker_value(const fs::path& marker, const std::string& key) {
   return "";
 }
 
-
 // Seconds since the epoch of "2026-12-02T14:08:00Z" (core::utc_now), or -1.
 long long utc_seconds(const std::string& stamp) {
   std::tm t{};
@@ -67,7 +66,8 @@ std::string wall_seconds(const fs::path& run) {
   } catch (const std::exception&) {
     return "";
   }
-  const long long from = utc_seconds(started), to = utc_seconds(marker_value(run / core::result_marker_name, "utc_time"));
+  const long long from = utc_seconds(started),
+                  to = utc_seconds(marker_value(run / core::result_marker_name, "utc_time"));
   return from >= 0 && to >= from ? std::to_string(to - from) : "";
 }
 
@@ -84,7 +84,8 @@ std::map<std::string, std::string> run_results(const fs::path& run, std::vector<
   };
   values["wall_seconds"] = wall_seconds(run);
   if (const auto b = read_csv(run_file_path(run, RunFileId::breakdown)); b.size() >= 2) take(b.front(), b[1], "");
-  if (const auto s = read_csv(run_file_path(run, RunFileId::fracture_summary)); s.size() >= 2) take(s.front(), s.back(), "final_");
+  if (const auto s = read_csv(run_file_path(run, RunFileId::fracture_summary)); s.size() >= 2)
+    take(s.front(), s.back(), "final_");
   return values;
 }
 
@@ -106,7 +107,8 @@ namespace {
 bool runs_combination(const fs::path& combination, const fs::path& run, const std::string& command) {
   try {
     if (command == "fdm1d")
-      return fdm1d_case_to_toml(read_fdm1d_case(combination), "") == fdm1d_case_to_toml(read_fdm1d_case(run / "config.toml"), "");
+      return fdm1d_case_to_toml(read_fdm1d_case(combination), "") ==
+             fdm1d_case_to_toml(read_fdm1d_case(run / "config.toml"), "");
     return run_case_to_toml(read_run_case(combination), "") == run_case_to_toml(read_run_case(run / "config.toml"), "");
   } catch (const InputError&) {
     return false;
@@ -145,7 +147,8 @@ SweepCollectCounts collect_sweep(const fs::path& sweep_folder, const fs::path& r
   csv << '\n';
   for (std::size_t i = 1; i < index.size(); ++i) {
     csv << sweep_csv::field(index[i][0]);
-    for (std::size_t k = 2; k < header.size(); ++k) csv << ',' << sweep_csv::field(k < index[i].size() ? index[i][k] : "");
+    for (std::size_t k = 2; k < header.size(); ++k)
+      csv << ',' << sweep_csv::field(k < index[i].size() ? index[i][k] : "");
     csv << ',' << status[i - 1];
     for (const std::string& c : columns) {
       const auto it = results[i - 1].find(c);

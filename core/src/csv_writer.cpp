@@ -14,8 +14,7 @@ std::string csv_number(double v) {
   return buf;
 }
 
-CsvWriter::CsvWriter(std::ostream& out, const std::vector<std::string>& columns, NonFinite non_finite,
-                     CsvHeader header)
+CsvWriter::CsvWriter(std::ostream& out, const std::vector<std::string>& columns, NonFinite non_finite, CsvHeader header)
     : out_(out), columns_(columns), non_finite_(non_finite) {
   if (header == CsvHeader::already_written) return;
   for (std::size_t i = 0; i < columns.size(); ++i) out_ << (i ? "," : "") << columns[i];
@@ -27,8 +26,9 @@ void CsvWriter::row(const std::vector<double>& values) {
   if (non_finite_ == NonFinite::reject)
     for (std::size_t i = 0; i < values.size(); ++i)
       if (!std::isfinite(values[i]))
-        throw InputError(columns_[i] + " = " + csv_number(values[i]) + " at " + columns_[0] + " = " + csv_number(values[0]) +
-                         ": the inputs overflow double precision, allowed: inputs whose " + columns_[i] + " is finite");
+        throw InputError(columns_[i] + " = " + csv_number(values[i]) + " at " + columns_[0] + " = " +
+                         csv_number(values[0]) + ": the inputs overflow double precision, allowed: inputs whose " +
+                         columns_[i] + " is finite");
   for (std::size_t i = 0; i < values.size(); ++i) out_ << (i ? "," : "") << csv_number(values[i]);
   out_ << "\n";
 }

@@ -17,8 +17,8 @@ namespace {
 // errno of the failed write or close, read right after it; a stream that failed without a system
 // error (a formatting failure) still fails, with a generic reason.
 [[noreturn]] void throw_write_error(const fs::path& path, int error) {
-  throw std::runtime_error("cannot write '" + path.string() + "': " +
-                           (error != 0 ? std::string(std::strerror(error)) : std::string("write failed")));
+  throw std::runtime_error("cannot write '" + path.string() +
+                           "': " + (error != 0 ? std::string(std::strerror(error)) : std::string("write failed")));
 }
 
 }  // namespace
@@ -34,7 +34,8 @@ std::ofstream open_for_appending(const fs::path& path, std::uintmax_t size) {
   std::error_code ec;
   const std::uintmax_t now = fs::file_size(path, ec);
   if (ec || now < size)
-    throw InputError("'" + path.string() + "' holds " + (ec ? std::string("nothing readable") : std::to_string(now) + " bytes") +
+    throw InputError("'" + path.string() + "' holds " +
+                     (ec ? std::string("nothing readable") : std::to_string(now) + " bytes") +
                      ", allowed: at least the " + std::to_string(size) + " its run had written at the checkpoint");
   fs::resize_file(path, size, ec);  // drop what steps after the checkpoint wrote: they are computed again
   if (ec) throw std::runtime_error("cannot write '" + path.string() + "': " + ec.message());

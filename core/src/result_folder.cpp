@@ -1,7 +1,7 @@
 #include "hm/core/result_folder.hpp"
 
-#include <sys/stat.h>
 #include <signal.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -243,7 +243,8 @@ ResultTarget inspect_result_target(const fs::path& target, const std::string& op
                "allowed: a folder whose every file hmlattice wrote; remove it yourself, or choose another folder");
       if (const std::vector<std::string> foreign = files_not_written_by_toolkit(where); !foreign.empty()) {
         std::string names;
-        for (std::size_t k = 0; k < foreign.size() && k < 3; ++k) names += (k ? ", " : "") + quoted(fs::path(foreign[k]));
+        for (std::size_t k = 0; k < foreign.size() && k < 3; ++k)
+          names += (k ? ", " : "") + quoted(fs::path(foreign[k]));
         if (foreign.size() > 3) names += " and " + std::to_string(foreign.size() - 3) + " more";
         refuse(option, shown, "holds files hmlattice did not write (" + names + "), which --overwrite would remove",
                "allowed: move them out first, or choose another folder");
@@ -255,8 +256,7 @@ ResultTarget inspect_result_target(const fs::path& target, const std::string& op
   }
 }
 
-ResultFolder::ResultFolder(const fs::path& target, const std::string& option, bool overwrite,
-                           std::string command_line)
+ResultFolder::ResultFolder(const fs::path& target, const std::string& option, bool overwrite, std::string command_line)
     : shown_(without_trailing_separators(target)),
       option_(option),
       command_line_(std::move(command_line)),
@@ -328,8 +328,11 @@ std::string why_not_resumable(const fs::path& folder) {
 }  // namespace
 
 ResultFolder::ResultFolder(Resume, const fs::path& folder, const std::string& option, std::string command_line)
-    : shown_(without_trailing_separators(folder)), option_(option), command_line_(std::move(command_line)),
-      overwrite_(false), resumed_(true) {
+    : shown_(without_trailing_separators(folder)),
+      option_(option),
+      command_line_(std::move(command_line)),
+      overwrite_(false),
+      resumed_(true) {
   std::error_code ec;
   if (fs::symlink_status(shown_, ec).type() != fs::file_type::directory)
     refuse(option_, shown_, "is not a folder", "allowed: the folder of a run that stopped before t_end");
@@ -421,8 +424,9 @@ void write_stopped_status(const fs::path& path, const std::string& command, cons
                           double t_last, double t_end, const fs::path& folder, const StoppedCheckpoint& checkpoint) {
   write_file_atomically(path, [&](std::ostream& f) {
     f << "# This run stopped before t_end. Every file here holds the steps up to last_step, complete;\n"
-      << (checkpoint.step >= 0 ? "# nothing after it. `resume` continues it from its checkpoint (bitwise as if never stopped).\n"
-                               : "# nothing after it. No checkpoint: the run is repeated from its config.toml.\n")
+      << (checkpoint.step >= 0
+              ? "# nothing after it. `resume` continues it from its checkpoint (bitwise as if never stopped).\n"
+              : "# nothing after it. No checkpoint: the run is repeated from its config.toml.\n")
       << "complete = false\n"
       << "stopped = " << toml_string(why) << "\n"
       << "last_step = " << last_step << "\n"
@@ -432,8 +436,8 @@ void write_stopped_status(const fs::path& path, const std::string& command, cons
       f << "checkpoint_step = " << checkpoint.step << "\n"
         << "checkpoint_t = " << format_value(checkpoint.t) << "\n"
         << "resume = " << toml_string("hmlattice " + command + " --resume " + folder.string()) << "\n";
-    f << "rerun = " << toml_string("hmlattice " + command + " " + (folder / "config.toml").string() + " --out <new folder>")
-      << "\n";
+    f << "rerun = "
+      << toml_string("hmlattice " + command + " " + (folder / "config.toml").string() + " --out <new folder>") << "\n";
   });
 }
 

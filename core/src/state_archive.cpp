@@ -134,7 +134,8 @@ void check_compressed_pattern(const int* outer, const int* inner, std::int64_t n
   const auto fail = [&](const std::string& why) {
     throw InputError(source + ": at '" + std::string(tag) + "': " + why + " (damaged, or of another version)");
   };
-  if (outer[0] != 0 || static_cast<std::size_t>(outer[n_cols]) != n_inner) fail("column pointers do not span the entries");
+  if (outer[0] != 0 || static_cast<std::size_t>(outer[n_cols]) != n_inner)
+    fail("column pointers do not span the entries");
   for (std::int64_t j = 0; j < n_cols; ++j)
     if (outer[j + 1] < outer[j]) fail("column pointers decrease at column " + std::to_string(j));
   for (std::int64_t j = 0; j < n_cols; ++j)

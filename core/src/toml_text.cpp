@@ -16,13 +16,20 @@ std::size_t utf8_length(const std::string& s, std::size_t i) {
   if (lead < 0x80) return 1;
   std::size_t n = 0;
   unsigned char lo = 0x80, hi = 0xbf;  // the second byte's range; later bytes are 80..BF
-  if (lead >= 0xc2 && lead <= 0xdf) n = 2;
-  else if (lead == 0xe0) n = 3, lo = 0xa0;
-  else if (lead >= 0xe1 && lead <= 0xef) n = 3, hi = lead == 0xed ? 0x9f : 0xbf;
-  else if (lead == 0xf0) n = 4, lo = 0x90;
-  else if (lead >= 0xf1 && lead <= 0xf3) n = 4;
-  else if (lead == 0xf4) n = 4, hi = 0x8f;
-  else return 0;
+  if (lead >= 0xc2 && lead <= 0xdf)
+    n = 2;
+  else if (lead == 0xe0)
+    n = 3, lo = 0xa0;
+  else if (lead >= 0xe1 && lead <= 0xef)
+    n = 3, hi = lead == 0xed ? 0x9f : 0xbf;
+  else if (lead == 0xf0)
+    n = 4, lo = 0x90;
+  else if (lead >= 0xf1 && lead <= 0xf3)
+    n = 4;
+  else if (lead == 0xf4)
+    n = 4, hi = 0x8f;
+  else
+    return 0;
   if (i + n > s.size() || byte(i + 1) < lo || byte(i + 1) > hi) return 0;
   for (std::size_t k = 2; k < n; ++k)
     if (byte(i + k) < 0x80 || byte(i + k) > 0xbf) return 0;

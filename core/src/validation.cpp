@@ -35,16 +35,14 @@ void require_non_negative(double value, std::string_view name) {
   if (!(value >= 0.0) || !std::isfinite(value)) fail(name, format_value(value), "{} >= 0");
 }
 void require_open(double value, std::string_view name, double lo, double hi) {
-  if (!(value > lo && value < hi))
-    fail(name, format_value(value), format_value(lo) + " < {} < " + format_value(hi));
+  if (!(value > lo && value < hi)) fail(name, format_value(value), format_value(lo) + " < {} < " + format_value(hi));
 }
 void require_closed(double value, std::string_view name, double lo, double hi) {
   if (!(value >= lo && value <= hi))
     fail(name, format_value(value), format_value(lo) + " <= {} <= " + format_value(hi));
 }
 void require_half_open(double value, std::string_view name, double lo, double hi) {
-  if (!(value >= lo && value < hi))
-    fail(name, format_value(value), format_value(lo) + " <= {} < " + format_value(hi));
+  if (!(value >= lo && value < hi)) fail(name, format_value(value), format_value(lo) + " <= {} < " + format_value(hi));
 }
 void require_at_least(long long value, std::string_view name, long long minimum) {
   if (value < minimum) fail(name, std::to_string(value), "{} >= " + std::to_string(minimum));
@@ -63,8 +61,9 @@ void require_feasible_stepping(double dt_initial, double dt_growth, double dt_ma
   }
   if (steps > SteppingLimits::max_steps)
     fail("dt_initial", format_value(dt_initial),
-         "a stepping of at most 1e6 steps; with dt_growth = " + format_value(dt_growth) + ", dt_max = " +
-             format_value(dt_max) + " and t_end = " + format_value(t_end) + " it takes more (raise dt_growth or dt_max)");
+         "a stepping of at most 1e6 steps; with dt_growth = " + format_value(dt_growth) +
+             ", dt_max = " + format_value(dt_max) + " and t_end = " + format_value(t_end) +
+             " it takes more (raise dt_growth or dt_max)");
 }
 
 }  // namespace hm::core

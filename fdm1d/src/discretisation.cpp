@@ -124,9 +124,8 @@ double radial_strain(const Eigen::VectorXd& u, const RadialGrid& grid, int i) {
   return (u[i + 1] - u[i - 1]) / (2.0 * grid.h);
 }
 
-hm::analytic::RadialState node_state(const Eigen::VectorXd& u, const Eigen::VectorXd& p,
-                                     const RadialGrid& grid, int i, double nu,
-                                     const hm::analytic::LameCylinder* rest) {
+hm::analytic::RadialState node_state(const Eigen::VectorXd& u, const Eigen::VectorXd& p, const RadialGrid& grid, int i,
+                                     double nu, const hm::analytic::LameCylinder* rest) {
   hm::analytic::RadialState s;
   s.p = p[i];
   s.u_r = u[i];

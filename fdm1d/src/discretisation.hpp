@@ -47,11 +47,11 @@ struct RadialGrid {
 /// The operators of the semi-discrete system, each (n+1) x (n+1): rows are equations (node i),
 /// columns unknowns (u_j or p_j).
 struct Blocks {
-  SparseMatrix mech_u, mech_p;  ///< mechanics rows: mech_u u + mech_p p = 0
-  Eigen::VectorXd storage;      ///< (E/M) V_i, including the Dirichlet half ring i = n
-  SparseMatrix strain;          ///< f b E_i(u), rows 0..n
-  SparseMatrix flux;            ///< F_{i+1/2} - F_{i-1/2} for rows 0..n-1; row n empty
-  Eigen::VectorXd source;       ///< Q at row 0
+  SparseMatrix mech_u, mech_p;          ///< mechanics rows: mech_u u + mech_p p = 0
+  Eigen::VectorXd storage;              ///< (E/M) V_i, including the Dirichlet half ring i = n
+  SparseMatrix strain;                  ///< f b E_i(u), rows 0..n
+  SparseMatrix flux;                    ///< F_{i+1/2} - F_{i-1/2} for rows 0..n-1; row n empty
+  Eigen::VectorXd source;               ///< Q at row 0
   double outer_face_conductance = 0.0;  ///< 2 pi r_{n-1/2}/h: F_{n-1/2} = this (p_{n-1} - p_n)
 };
 
@@ -66,9 +66,8 @@ double radial_strain(const Eigen::VectorXd& u, const RadialGrid& grid, int i);
 
 /// Effective stresses at node i from u (plane strain), with p and u_r filled in; plus the rest
 /// state's u_r and stresses at r_i when `rest` is given (RestState).
-hm::analytic::RadialState node_state(const Eigen::VectorXd& u, const Eigen::VectorXd& p,
-                                     const RadialGrid& grid, int i, double nu,
-                                     const hm::analytic::LameCylinder* rest = nullptr);
+hm::analytic::RadialState node_state(const Eigen::VectorXd& u, const Eigen::VectorXd& p, const RadialGrid& grid, int i,
+                                     double nu, const hm::analytic::LameCylinder* rest = nullptr);
 
 /// sigma_CC of Eq. 11 with sigma_1, sigma_3 = max, min of the three effective stresses.
 double coulomb_of(const hm::analytic::RadialState& s, double friction);

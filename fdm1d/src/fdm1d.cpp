@@ -26,7 +26,8 @@ void Fdm1dNumerics::validate(double R_i) const {
                                     : std::string()));
   core::require_positive(dt_initial, "dt_initial");
   core::require_finite(dt_growth, "dt_growth");
-  if (!(dt_growth >= 1.0)) throw InputError("dt_growth = " + core::format_value(dt_growth) + ", allowed: dt_growth >= 1");
+  if (!(dt_growth >= 1.0))
+    throw InputError("dt_growth = " + core::format_value(dt_growth) + ", allowed: dt_growth >= 1");
   core::require_positive(dt_max, "dt_max");
   if (!(dt_max >= dt_initial))
     throw InputError("dt_max = " + core::format_value(dt_max) + ", allowed: dt_max >= dt_initial (" +
@@ -81,12 +82,14 @@ void RestState::validate() const {
 }
 
 Fdm1dResult run_fdm1d(const an::DimensionlessParameters& params, const Fdm1dNumerics& numerics,
-                      const ProgressCallback& progress, const StepObserver& observer, const StopPredicate& stop_request) {
+                      const ProgressCallback& progress, const StepObserver& observer,
+                      const StopPredicate& stop_request) {
   return run_fdm1d(params, numerics, RestState{}, progress, observer, stop_request);
 }
 
 Fdm1dResult run_fdm1d(const an::DimensionlessParameters& params, const Fdm1dNumerics& numerics, const RestState& rest,
-                      const ProgressCallback& progress, const StepObserver& observer, const StopPredicate& stop_request) {
+                      const ProgressCallback& progress, const StepObserver& observer,
+                      const StopPredicate& stop_request) {
   params.validate();
   rest.validate();
   if (!(params.R_i > 0.0))
@@ -158,7 +161,8 @@ Fdm1dResult run_fdm1d(const an::DimensionlessParameters& params, const Fdm1dNume
     ++res.summary.n_factorisations;
     if (slot.solver->info() != Eigen::Success) {
       res.summary.status = Fdm1dSummary::Status::singular_matrix;
-      res.summary.message = "sparse LU failed at dt = " + core::format_value(dt) + ": " + slot.solver->lastErrorMessage();
+      res.summary.message =
+          "sparse LU failed at dt = " + core::format_value(dt) + ": " + slot.solver->lastErrorMessage();
       return nullptr;
     }
     return slot.solver.get();
@@ -204,8 +208,9 @@ Fdm1dResult run_fdm1d(const an::DimensionlessParameters& params, const Fdm1dNume
       }
       if (!x.allFinite()) {
         res.summary.status = Fdm1dSummary::Status::non_finite;
-        res.summary.message = "the solution at t = " + core::format_value(t + dt) + " is not finite (Q = " +
-                              core::format_value(params.Q) + "): the inputs overflow double precision";
+        res.summary.message = "the solution at t = " + core::format_value(t + dt) +
+                              " is not finite (Q = " + core::format_value(params.Q) +
+                              "): the inputs overflow double precision";
         return stop();
       }
       VectorXd u_new(n + 1), p_new(n + 1);

@@ -70,8 +70,8 @@ Section32Diagnostics section32_diagnostics(const Fdm1dResult& result,
   }
 
   {
-    const auto wall = hm::analytic::SteadyBorehole(params.Q, params.material.b, params.material.nu, params.R_i)
-                          .state(params.R_i);
+    const auto wall =
+        hm::analytic::SteadyBorehole(params.Q, params.material.b, params.material.nu, params.R_i).state(params.R_i);
     BoreholeSample w;
     w.sigma_r = wall.sigma_r;
     w.sigma_theta = wall.sigma_theta;

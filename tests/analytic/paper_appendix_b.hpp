@@ -21,8 +21,7 @@ inline double p_B3(const Setting& s, double r) { return -s.Q / (2.0 * std::numbe
 
 /// B5 as printed: u = -lambda b p_h/(2(1-nu)) r ln r/ln R_i + C_1/r + C_2 r.
 inline double u_B5(const Setting& s, double r, double C_1, double C_2) {
-  return -s.lambda() * s.b * s.p_h() / (2.0 * (1.0 - s.nu)) * r * std::log(r) / std::log(s.R_i) + C_1 / r +
-         C_2 * r;
+  return -s.lambda() * s.b * s.p_h() / (2.0 * (1.0 - s.nu)) * r * std::log(r) / std::log(s.R_i) + C_1 / r + C_2 * r;
 }
 
 /// B6 as printed:
@@ -41,7 +40,8 @@ inline double u_B6(const Setting& s, double r) {
 inline double sigma_r_B7(const Setting& s, double r) {
   const double nu = s.nu, ph = s.p_h(), a = s.a();
   return s.b * ph / 2.0 *
-             (std::log(r) / ((1.0 - nu) * std::log(s.R_i)) + a * (1.0 - 2.0 * nu) / (1.0 - nu) * (1.0 / (r * r) - 1.0)) +
+             (std::log(r) / ((1.0 - nu) * std::log(s.R_i)) +
+              a * (1.0 - 2.0 * nu) / (1.0 - nu) * (1.0 / (r * r) - 1.0)) +
          ph * a * (1.0 - 1.0 / (r * r));
 }
 

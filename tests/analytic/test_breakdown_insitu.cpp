@@ -119,6 +119,9 @@ TEST_CASE("Breakdown input is refused with one line naming value and rule", "[an
   refused([&] { annulus_jacketed_breakdown(far, with([](auto& m) { m.nu = 0.5; }), 0.138); },
           "nu = 0.5, allowed: 0 < nu < 0.5");
   refused([&] { annulus_jacketed_breakdown(far, BreakdownParameters{}, 1.0); }, "R_i = 1, allowed: 0 < R_i < 1");
-  refused([] { hubbert_willis_breakdown({1.0, 2.0, 0.0}, BreakdownParameters{}); },
-          "S_h = 2, allowed: 0 <= S_h <= S_H (1)");
+  refused(
+      [] {
+        hubbert_willis_breakdown({1.0, 2.0, 0.0}, BreakdownParameters{});
+      },
+      "S_h = 2, allowed: 0 <= S_h <= S_H (1)");
 }

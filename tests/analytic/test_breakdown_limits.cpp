@@ -127,7 +127,8 @@ TEST_CASE("At each limit the wall fails in tension with the hoop stress as its l
     for (const RadialState& s : {slow_wall, fast_wall, jacketed_wall}) {
       const MajorMinor mm = major_minor({s.sigma_r, s.sigma_theta, s.sigma_z});
       CHECK(mm.sigma_1 == s.sigma_theta);
-      const FailureCheck c = check_failure(mm.sigma_1, mm.sigma_3, d.tensile_strength, d.compressive_strength, d.friction);
+      const FailureCheck c =
+          check_failure(mm.sigma_1, mm.sigma_3, d.tensile_strength, d.compressive_strength, d.friction);
       // Ratio 1 to round-off (so the mode may read none at 1 - 1e-16), reached by sigma_1/T_u.
       CHECK(c.ratio == Approx(1.0).epsilon(1e-12));
       CHECK(mm.sigma_1 / d.tensile_strength == Approx(c.ratio).epsilon(1e-15));

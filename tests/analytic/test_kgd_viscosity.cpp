@@ -44,7 +44,8 @@ TEST_CASE("KGD M-vertex: the inlet's opening and pressure as quoted, and the ver
   CHECK(w0 * p0 == Approx(0.62 * std::sqrt(mQE)).epsilon(0.01));
   CHECK(w0 * w0 == Approx(2.1 * std::sqrt(vertex.mu_prime * vertex.Q / vertex.E_prime) * l).epsilon(0.01));
   CHECK(l == Approx(0.616 * std::pow(vertex.E_prime * std::pow(vertex.Q, 3) / vertex.mu_prime, 1.0 / 6.0) *
-                    std::pow(t, 2.0 / 3.0)).epsilon(1e-14));
+                    std::pow(t, 2.0 / 3.0))
+                 .epsilon(1e-14));
   // Self-similar: l ~ t^(2/3), w0 ~ t^(1/3), p0 ~ t^(-1/3).
   CHECK(vertex.half_length(8 * t) == Approx(4 * l).epsilon(1e-14));
   CHECK(vertex.opening(0.0, 8 * t) == Approx(2 * w0).epsilon(1e-14));

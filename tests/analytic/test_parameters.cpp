@@ -8,9 +8,9 @@
 
 #include "approx.hpp"
 #include "hm/analytic/biot_modulus.hpp"
-#include "hm/core/input_error.hpp"
 #include "hm/analytic/physical_parameters.hpp"
 #include "hm/analytic/poroelastic_parameters.hpp"
+#include "hm/core/input_error.hpp"
 
 using namespace hm::analytic;
 using hm::test::roundoff;
@@ -29,7 +29,7 @@ TEST_CASE("Table 1 converts to the paper's dimensionless numbers", "[analytic]")
   CHECK(d.material.nu == 0.25);
   CHECK(d.material.vol_strain == VolStrain::plane_strain);
   CHECK(d.R_i == roundoff(0.138));
-  CHECK(d.tensile_strength == roundoff(2e-4));       // 2e6 / 1e10
+  CHECK(d.tensile_strength == roundoff(2e-4));         // 2e6 / 1e10
   CHECK(d.compressive_strength == roundoff(3.33e-3));  // 3.33e7 / 1e10
   CHECK(d.friction == 0.9);
 
@@ -125,7 +125,9 @@ TEST_CASE("Physical parameters: each rule rejects its bad value with field, valu
   check_rejected_physical([](P& p) { p.nu = 0.0; }, "nu = 0, allowed: 0 < nu < 0.5");
   check_rejected_physical([](P& p) { p.k_si = -1e-14; }, "k = -1e-14, allowed: k > 0");
   check_rejected_physical([](P& p) { p.k_f_si = 0.0; }, "k_f = 0, allowed: k_f > 0");
-  check_rejected_physical([](P& p) { p.k_f_si = 1e-16; }, "k_f = 1e-16, allowed: k_f >= k = 1e-14 (an open crack conducts at least as the rock it cuts)");
+  check_rejected_physical(
+      [](P& p) { p.k_f_si = 1e-16; },
+      "k_f = 1e-16, allowed: k_f >= k = 1e-14 (an open crack conducts at least as the rock it cuts)");
   check_rejected_physical([](P& p) { p.mu_si = 0.0; }, "mu = 0, allowed: mu > 0");
   check_rejected_physical([](P& p) { p.q_si = -1e-3; }, "q = -0.001, allowed: q >= 0");
   check_rejected_physical([](P& p) { p.R_si = 0.0; }, "R = 0, allowed: R > 0");
@@ -162,9 +164,10 @@ TEST_CASE("Dimensionless parameters: each rule rejects its bad value with field,
   check_rejected_dimensionless([](D& d) { d.tensile_strength = 0.0; },
                                "tensile_strength = 0, allowed: 0 < tensile_strength <= 1 (over E, a strain at failure; "
                                "a strength in Pa belongs in a case in SI units)");
-  check_rejected_dimensionless([](D& d) { d.compressive_strength = -1e-3; },
-                               "compressive_strength = -0.001, allowed: 0 < compressive_strength <= 1 (over E, a strain "
-                               "at failure; a strength in Pa belongs in a case in SI units)");
+  check_rejected_dimensionless(
+      [](D& d) { d.compressive_strength = -1e-3; },
+      "compressive_strength = -0.001, allowed: 0 < compressive_strength <= 1 (over E, a strain "
+      "at failure; a strength in Pa belongs in a case in SI units)");
   // A strength in Pa typed into the dimensionless table once ran silently without a break.
   check_rejected_dimensionless([](D& d) { d.tensile_strength = 2e6; },
                                "tensile_strength = 2e+06, allowed: 0 < tensile_strength <= 1 (over E, a strain at "
@@ -194,9 +197,9 @@ TEST_CASE("Eq. 22 and the textbook Biot modulus give the Table 1 numbers of docs
     double b, eq22, standard, S_eq22, S_standard;
   };
   // S = E/M + b^2 (1+nu)(1-2nu)/(1-nu) = E/M + b^2 * 0.833333 (plane strain).
-  for (const Row& row : {Row{0.2, 0.302747, 0.243345, 0.336080, 0.276679},
-                         Row{0.5, 0.752297, 0.378795, 0.960630, 0.587129},
-                         Row{0.8, 1.201847, 0.244245, 1.735180, 0.777579}}) {
+  for (const Row& row :
+       {Row{0.2, 0.302747, 0.243345, 0.336080, 0.276679}, Row{0.5, 0.752297, 0.378795, 0.960630, 0.587129},
+        Row{0.8, 1.201847, 0.244245, 1.735180, 0.777579}}) {
     CAPTURE(row.b);
     const double eq22 = E_over_M_eq22(row.b, nu, table1_porosity, table1_E_over_Kw);
     const double standard = E_over_M_standard(row.b, nu, table1_porosity, table1_E_over_Kw);

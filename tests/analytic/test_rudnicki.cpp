@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "approx.hpp"
-#include "hm/core/input_error.hpp"
 #include "hm/analytic/rudnicki.hpp"
+#include "hm/core/input_error.hpp"
 
 using hm::analytic::PoroelasticParameters;
 using hm::analytic::RadialState;
@@ -59,9 +59,7 @@ double eta_of(const PoroelasticParameters& m) {
 }
 double factor_of(VolStrain v) { return v == VolStrain::plane_strain ? 1.0 : 1.0 / 3.0; }
 /// S = E/M + f b eta: eliminating eps_r + eps_theta = eta p from the fluid equation.
-double storage_of(const PoroelasticParameters& m) {
-  return m.E_over_M + factor_of(m.vol_strain) * m.b * eta_of(m);
-}
+double storage_of(const PoroelasticParameters& m) { return m.E_over_M + factor_of(m.vol_strain) * m.b * eta_of(m); }
 /// r at which X = S r^2/(4t) takes the given value.
 double radius_at(double X, double t, double S) { return std::sqrt(4.0 * t * X / S); }
 
@@ -210,7 +208,8 @@ TEST_CASE("Rudnicki effective stresses follow Hooke's law with eps_r = du/dr and
           const double scale = std::abs(s.sigma_r) + std::abs(s.sigma_theta);
           const double hooke = std::max({std::abs(s.sigma_r - (lambda * trace + two_G * eps_r)),
                                          std::abs(s.sigma_theta - (lambda * trace + two_G * eps_theta)),
-                                         std::abs(s.sigma_z - lambda * trace)}) / scale;
+                                         std::abs(s.sigma_z - lambda * trace)}) /
+                               scale;
           INFO("t = " << t << ", X = " << X << ", Hooke deviation = " << hooke);
           // One first difference: noise 5e-12, truncation ~delta^4 = 3e-10 relative; 1e-7 is a margin
           // of 300 that still catches du/dr written as +u/r or eta p + u/r (O(1) errors).
@@ -278,7 +277,8 @@ TEST_CASE("Rudnicki fluid content E/M p + f b eps_v integrates to the injected v
         REQUIRE(inner.status == GSL_SUCCESS);
         REQUIRE(outer.status == GSL_SUCCESS);
         const double total = inner.value + outer.value, abserr = inner.abserr + outer.abserr;
-        INFO("t = " << t << ", total/(Q t) - 1 = " << total / injected - 1.0 << ", abserr/(Q t) = " << abserr / injected);
+        INFO("t = " << t << ", total/(Q t) - 1 = " << total / injected - 1.0
+                    << ", abserr/(Q t) = " << abserr / injected);
         CHECK(abserr <= 1e-9 * std::abs(injected));  // the quadrature itself is sharp enough to mean something
         // Quadrature's own error estimate, plus round-off of the summed integrand.
         CHECK(std::abs(total - injected) <= abserr + 1e-13 * std::abs(injected));
@@ -286,8 +286,8 @@ TEST_CASE("Rudnicki fluid content E/M p + f b eps_v integrates to the injected v
         // Divergence form, which weighs u_r itself: int_0^R eps_v 2 pi r dr = 2 pi R u_r(R), taken at
         // X(R) = 700 where the pressure beyond R is < e^-700.
         const double R = radius_at(700.0, t, S);
-        const Quadrature pressure = integrate([&](double r) { return r <= 0.0 ? 0.0 : src.pressure(r, t) * 2.0 * pi * r; },
-                                              0.0, R, 1e-11);
+        const Quadrature pressure =
+            integrate([&](double r) { return r <= 0.0 ? 0.0 : src.pressure(r, t) * 2.0 * pi * r; }, 0.0, R, 1e-11);
         REQUIRE(pressure.status == GSL_SUCCESS);
         const double by_divergence = E_over_M * pressure.value + f * b * 2.0 * pi * R * src.radial_displacement(R, t);
         INFO("divergence form: /(Q t) - 1 = " << by_divergence / injected - 1.0);
@@ -400,7 +400,8 @@ TEST_CASE("Rudnicki solution in Rudnicki's notation: c = 2 G kappa (1-nu)(nu_u-n
       const double nu = c.material.nu, b = c.material.b, M = 1.0 / c.material.E_over_M;
       const double G = 1.0 / (2.0 * (1.0 + nu)), lambda = 2.0 * G * nu / (1.0 - 2.0 * nu);
       const double lambda_u = lambda + b * b * M, nu_u = lambda_u / (2.0 * (lambda_u + G));
-      const double c_rc = 2.0 * G * (1.0 - nu) * (nu_u - nu) / (b * b * (1.0 - 2.0 * nu) * (1.0 - 2.0 * nu) * (1.0 - nu_u));
+      const double c_rc =
+          2.0 * G * (1.0 - nu) * (nu_u - nu) / (b * b * (1.0 - 2.0 * nu) * (1.0 - 2.0 * nu) * (1.0 - nu_u));
       if (c.material.vol_strain == VolStrain::plane_strain) {
         CHECK(1.0 / src.storage() == hm::test::roundoff(c_rc));
         // u_r = (nu_u - nu)/(b (1-2nu)(1-nu_u)) Q r/(8 pi c) [E1(X) + (1 - e^-X)/X]: X = r^2/(4 c t).
@@ -417,12 +418,13 @@ TEST_CASE("Rudnicki solution in Rudnicki's notation: c = 2 G kappa (1-nu)(nu_u-n
 }
 
 TEST_CASE("Rudnicki solution: sign, linearity in Q, zero before injection, rejected arguments", "[analytic]") {
-  const PoroelasticParameters m = material(0.5, 0.25, hm::analytic::E_over_M_table1(0.5, 0.25), VolStrain::plane_strain);
+  const PoroelasticParameters m =
+      material(0.5, 0.25, hm::analytic::E_over_M_table1(0.5, 0.25), VolStrain::plane_strain);
   const RudnickiLineSource inject(0.1, m), extract(-0.2, m);
   const RadialState s = inject.state(0.02, 3e-4), e = extract.state(0.02, 3e-4);
   CHECK(s.p > 0.0);
-  CHECK(s.u_r > 0.0);           // injection pushes the solid outward
-  CHECK(s.sigma_theta > 0.0);   // tension positive: hoop effective stress is tensile
+  CHECK(s.u_r > 0.0);          // injection pushes the solid outward
+  CHECK(s.sigma_theta > 0.0);  // tension positive: hoop effective stress is tensile
   CHECK(e.p == hm::test::roundoff(-2.0 * s.p));
   CHECK(e.u_r == hm::test::roundoff(-2.0 * s.u_r));
   CHECK(e.sigma_r == hm::test::roundoff(-2.0 * s.sigma_r));

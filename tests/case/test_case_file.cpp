@@ -4,13 +4,13 @@
 
 #include "approx.hpp"
 #include "hm/analytic/biot_modulus.hpp"
-#include "hm/core/input_error.hpp"
 #include "hm/case/case_file.hpp"
+#include "hm/core/input_error.hpp"
 #include "run_command.hpp"
 
-using hm::test::TempDir;
 using hm::cases::CaseFile;
 using hm::cases::read_physics;
+using hm::test::TempDir;
 
 namespace {
 
@@ -52,11 +52,13 @@ TEST_CASE("E/M follows the case's own b when not given", "[verification][config]
 TEST_CASE("Table 1 physical values give the same parameters as their dimensionless form", "[verification][config]") {
   TempDir dir("case-si");
   // Table 1 with k = 1e-14 m^2, q = 1e-3 m^2/s: Q = mu q/(k E) = 1e-6/1e-4 = 0.01, t_s = mu R^2/(k E) = 10 s.
-  const auto si = physics_of(dir, "[physics_si]\nE = 1e10\nnu = 0.25\nk = 1e-14\nk_f = 1e-11\nmu = 1e-3\n"
-                                  "q = 1e-3\nR = 1\nR_i = 0.138\nporosity = 1e-3\nK_w = 2.2e9\nb = 0.5\n"
-                                  "T_u = 2e6\nC_u = 3.33e7\nmu_i = 0.9\n");
-  const auto dimless = physics_of(dir, "[physics]\nQ = 0.01\niota = 1000\nb = 0.5\nnu = 0.25\nR_i = 0.138\n"
-                                       "tensile_strength = 2e-4\ncompressive_strength = 3.33e-3\nfriction = 0.9\n");
+  const auto si = physics_of(dir,
+                             "[physics_si]\nE = 1e10\nnu = 0.25\nk = 1e-14\nk_f = 1e-11\nmu = 1e-3\n"
+                             "q = 1e-3\nR = 1\nR_i = 0.138\nporosity = 1e-3\nK_w = 2.2e9\nb = 0.5\n"
+                             "T_u = 2e6\nC_u = 3.33e7\nmu_i = 0.9\n");
+  const auto dimless = physics_of(dir,
+                                  "[physics]\nQ = 0.01\niota = 1000\nb = 0.5\nnu = 0.25\nR_i = 0.138\n"
+                                  "tensile_strength = 2e-4\ncompressive_strength = 3.33e-3\nfriction = 0.9\n");
   const auto& a = si.parameters;
   const auto& b = dimless.parameters;
   CHECK(a.Q == hm::test::roundoff(b.Q));

@@ -30,8 +30,10 @@ struct ToyCase {
 CaseKeys<ToyCase> toy_keys() {
   CaseKeys<ToyCase> k;
   k.table("experiment")
-      .real("throwaway", [](auto& c) -> auto& { return c.throwaway; }, "> 0", "a key that exists only in this test")
-      .integer("count", [](auto& c) -> auto& { return c.count; }, 1, 9, "1 ... 9", "a bounded integer");
+      .real(
+          "throwaway", [](auto& c) -> auto& { return c.throwaway; }, "> 0", "a key that exists only in this test")
+      .integer(
+          "count", [](auto& c) -> auto& { return c.count; }, 1, 9, "1 ... 9", "a bounded integer");
   return k;
 }
 
@@ -56,16 +58,15 @@ std::string error_of(const TempDir& dir, const std::string& toml) {
 
 }  // namespace
 
-TEST_CASE("A key added as one table entry is read, written to config.toml and listed in the reference",
-          "[case]") {
+TEST_CASE("A key added as one table entry is read, written to config.toml and listed in the reference", "[case]") {
   TempDir dir("case-keys");
   // Read: the file's value, or the struct's default when absent.
   CHECK(read_toy(dir, "[experiment]\nthrowaway = 0.5\n").throwaway == 0.5);
   CHECK(read_toy(dir, "").throwaway == 0.25);
   CHECK(read_toy(dir, "[experiment]\ncount = 7\n").count == 7);
   // Rejected with file, table, key and rule: out of range, wrong type, misspelt.
-  CHECK(error_of(dir, "[experiment]\ncount = 12\n") == (dir.path / "toy.toml").string() +
-                                                           ": [experiment] count = 12, allowed: 1 ... 9");
+  CHECK(error_of(dir, "[experiment]\ncount = 12\n") ==
+        (dir.path / "toy.toml").string() + ": [experiment] count = 12, allowed: 1 ... 9");
   CHECK_THAT(error_of(dir, "[experiment]\nthrowaway = \"x\"\n"),
              Catch::Contains("[experiment] throwaway = \"x\", allowed: a finite number"));
   CHECK_THAT(error_of(dir, "[experiment]\nthrowaway_ = 1\n"),
@@ -81,11 +82,11 @@ TEST_CASE("A key added as one table entry is read, written to config.toml and li
              Catch::Contains("| `throwaway` | real | `0.25` | > 0 | a key that exists only in this test |"));
 }
 
-TEST_CASE("Every key of the 2D case tables is in the resolved config.toml and reads back to the same case",
-          "[case]") {
+TEST_CASE("Every key of the 2D case tables is in the resolved config.toml and reads back to the same case", "[case]") {
   TempDir dir("case-keys-run");
-  dir.write("case.toml", "model = \"lattice2d\"\n[physics]\nQ = 0.01\nb = 0.5\nR_i = 0\n[lattice]\nn_particles = 1000\n"
-                         "[coupling]\nsplit = \"drained\"\n[numerics]\nt_end = 2e-4\n");
+  dir.write("case.toml",
+            "model = \"lattice2d\"\n[physics]\nQ = 0.01\nb = 0.5\nR_i = 0\n[lattice]\nn_particles = 1000\n"
+            "[coupling]\nsplit = \"drained\"\n[numerics]\nt_end = 2e-4\n");
   const hm::cases::RunCase c = hm::cases::read_run_case(dir.path / "case.toml");
   const std::string config = hm::cases::run_case_to_toml(c, "");
   for (const auto& table : hm::cases::run_case_keys().tables())
@@ -117,7 +118,7 @@ int check_every_key_refused(const TempDir& dir, const std::string& base, const s
     std::istringstream row(line);
     for (std::string cell; std::getline(row, cell, '|');) cells.push_back(cell);
     REQUIRE(cells.size() >= 3);
-    const std::string key = cells[1].substr(2, cells[1].size() - 4);  // " `key` "
+    const std::string key = cells[1].substr(2, cells[1].size() - 4);   // " `key` "
     const std::string type = cells[2].substr(1, cells[2].size() - 2);  // " type "
     // A value of the wrong type is bad for every key, whatever its rule.
     const std::string bad = type == "string" ? "12345" : "\"not a value\"";
@@ -140,10 +141,14 @@ int check_every_key_refused(const TempDir& dir, const std::string& base, const s
 
 TEST_CASE("A bad value of every case key is refused in one message naming its table and key", "[case]") {
   TempDir dir("case-keys-bad");
-  const std::string lattice = "model = \"lattice2d\"\n[lattice]\nn_particles = 1000\n[coupling]\nsplit = \"drained\"\n"
-                              "[numerics]\nt_end = 2e-4\n";
-  const auto read_2d = [](const std::filesystem::path& f, const std::vector<std::string>& o) { hm::cases::read_run_case(f, o); };
-  const std::string run_reference = hm::cases::physics_reference_markdown() + hm::cases::run_case_keys().reference_markdown();
+  const std::string lattice =
+      "model = \"lattice2d\"\n[lattice]\nn_particles = 1000\n[coupling]\nsplit = \"drained\"\n"
+      "[numerics]\nt_end = 2e-4\n";
+  const auto read_2d = [](const std::filesystem::path& f, const std::vector<std::string>& o) {
+    hm::cases::read_run_case(f, o);
+  };
+  const std::string run_reference =
+      hm::cases::physics_reference_markdown() + hm::cases::run_case_keys().reference_markdown();
   std::vector<std::string> run_tables;
   for (const auto& table : hm::cases::run_case_keys().tables()) run_tables.push_back(table.name);
   const int n_2d = check_every_key_refused(dir, lattice + "[physics]\nQ = 0.01\nb = 0.5\nR_i = 0\n", run_reference,
@@ -157,7 +162,8 @@ TEST_CASE("A bad value of every case key is refused in one message naming its ta
                                 read_2d) >= 10);
   CHECK(check_every_key_refused(dir, lattice + "[physics_si]\nq = 1e-6\nb = 0.5\nR_i = 0\n", run_reference,
                                 {"physics_si"}, read_2d) >= 15);
-  const std::string fdm1d_reference = hm::cases::physics_reference_markdown() + hm::cases::fdm1d_case_keys().reference_markdown();
+  const std::string fdm1d_reference =
+      hm::cases::physics_reference_markdown() + hm::cases::fdm1d_case_keys().reference_markdown();
   std::vector<std::string> fdm1d_tables = {"physics"};
   for (const auto& table : hm::cases::fdm1d_case_keys().tables()) fdm1d_tables.push_back(table.name);
   CHECK(check_every_key_refused(dir, "model = \"fdm1d\"\n[physics]\nQ = 0.01\nb = 0.5\n[numerics]\nt_end = 0.01\n",

@@ -32,9 +32,10 @@ std::string without_keys(const std::string& text, const std::vector<std::string>
 
 }  // namespace
 
-TEST_CASE("A borehole case runs with any subset of its [flow] keys left out, borehole_deformation following "
-          "borehole_storage",
-          "[case]") {
+TEST_CASE(
+    "A borehole case runs with any subset of its [flow] keys left out, borehole_deformation following "
+    "borehole_storage",
+    "[case]") {
   // Fig. 12's quick case: flux-boundary borehole (storage none, deformation none), factor reuse on.
   const std::string fig12 = hm::test::slurp(std::string(HM_SOURCE_DIR) + "/cases/fig12_b0.2_quick.toml");
   const std::vector<std::string> keys = {"borehole_storage", "borehole_deformation", "reuse_factorisation"};
@@ -54,8 +55,8 @@ TEST_CASE("A borehole case runs with any subset of its [flow] keys left out, bor
     CHECK(c.flow.borehole_storage == (storage_given ? lt::BoreholeStorage::none : lt::BoreholeStorage::biot_modulus));
     // The documented rule: given, as given ("none" here); left out, "none" with storage "none" and
     // "biot" (Eq. 16 as printed) with storage "biot-modulus".
-    const lt::BoreholeDeformation expected = deformation_given || storage_given ? lt::BoreholeDeformation::none
-                                                                                : lt::BoreholeDeformation::biot;
+    const lt::BoreholeDeformation expected =
+        deformation_given || storage_given ? lt::BoreholeDeformation::none : lt::BoreholeDeformation::biot;
     CHECK(c.flow.borehole_deformation == expected);
     CHECK(c.flow.reuse_factorisation == ((mask & 4u) ? lt::FlowParameters{}.reuse_factorisation : true));
     // The resolved config states the value and reads back to the same case.

@@ -22,12 +22,17 @@ namespace {
 std::string fluid_crack_case(const std::string& stabiliser, const std::string& tolerances = "1e-8",
                              const std::string& balance_tolerance = "1e-3", const std::string& iota = "1e12") {
   return "model = \"lattice2d\"\n"
-         "[physics]\nQ = 1000.0\nb = 0.0\nR_i = 0.0\niota = " + iota + "\ntensile_strength = 0.5\ncompressive_strength = 1.0\n"
+         "[physics]\nQ = 1000.0\nb = 0.0\nR_i = 0.0\niota = " +
+         iota +
+         "\ntensile_strength = 0.5\ncompressive_strength = 1.0\n"
          "[lattice]\ndomain = \"disk\"\nn_particles = 1500\nseed = 3\n"
          "[flow]\ncrack_coupling = \"full\"\n"
-         "[coupling]\npressure_tolerance = " + tolerances + "\ndisplacement_tolerance = " + tolerances +
-         "\nbalance_tolerance = " + balance_tolerance + "\nmax_iterations = 60\n"
-         "crack_stabiliser = \"" + stabiliser + "\"\n"
+         "[coupling]\npressure_tolerance = " +
+         tolerances + "\ndisplacement_tolerance = " + tolerances + "\nbalance_tolerance = " + balance_tolerance +
+         "\nmax_iterations = 60\n"
+         "crack_stabiliser = \"" +
+         stabiliser +
+         "\"\n"
          "[numerics]\nt_end = 5e-10\ndt_initial = 1e-10\n"
          "[fracture]\nenabled = true\nnotch = [[-0.2, 0.0, 0.2, 0.0]]\n"
          "[output]\nvtk = false\n";
@@ -142,11 +147,12 @@ TEST_CASE("With the saw-tooth law a fluid-filled crack's process zone is crack i
   // The KGD case at N = 1500 to t = 1.2e-8 (a few seconds): the beams the
   // law has softened but not broken take fluid and its pressure with weight 1 - s (their damage).
   TempDir dir("wet-process-zone");
-  dir.write("kgd.toml", hm::test::edited(hm::test::slurp(std::filesystem::path(HM_SOURCE_DIR) / "cases/kgd_toughness_quick.toml"),
-                                          {{"n_particles = 3000", "n_particles = 1500"},
-                                           {"t_end = 8e-8", "t_end = 1.2e-8"},
-                                           {"times = [2e-8, 4e-8]", "times = [1.2e-8]"},
-                                           {"vtk = true", "vtk = false"}}));
+  dir.write("kgd.toml",
+            hm::test::edited(hm::test::slurp(std::filesystem::path(HM_SOURCE_DIR) / "cases/kgd_toughness_quick.toml"),
+                             {{"n_particles = 3000", "n_particles = 1500"},
+                              {"t_end = 8e-8", "t_end = 1.2e-8"},
+                              {"times = [2e-8, 4e-8]", "times = [1.2e-8]"},
+                              {"vtk = true", "vtk = false"}}));
   const hm::cases::RunCase c = hm::cases::read_run_case(dir.path / "kgd.toml");
   REQUIRE(c.coupling.events_per_check == 1);  // the saw-tooth law's default
   const auto model = hm::cases::make_coupled_model(c);
@@ -210,10 +216,12 @@ TEST_CASE("In the tight-rock limit the cubic law's crack grows as iota = 1e12's:
   // pressure is uniform as with iota = 1e12 and the same teeth give way at the same states. Measured at
   // N = 3000 to t = 8e-8: 594 teeth and 64 broken beams in both, p_h within 4e-5.
   TempDir dir("cubic-tight");
-  const std::string kgd = hm::test::edited(
-      hm::test::slurp(std::filesystem::path(HM_SOURCE_DIR) / "cases/kgd_toughness_quick.toml"),
-      {{"n_particles = 3000", "n_particles = 1500"}, {"t_end = 8e-8", "t_end = 1.2e-8"},
-       {"times = [2e-8, 4e-8]", "times = [1.2e-8]"}, {"vtk = true", "vtk = false"}});
+  const std::string kgd =
+      hm::test::edited(hm::test::slurp(std::filesystem::path(HM_SOURCE_DIR) / "cases/kgd_toughness_quick.toml"),
+                       {{"n_particles = 3000", "n_particles = 1500"},
+                        {"t_end = 8e-8", "t_end = 1.2e-8"},
+                        {"times = [2e-8, 4e-8]", "times = [1.2e-8]"},
+                        {"vtk = true", "vtk = false"}});
   dir.write("iota.toml", kgd);
   dir.write("cubic.toml", hm::test::edited(kgd, {{"iota = 1e12", "iota = 1.0"},
                                                  {"crack_coupling = \"full\"",
@@ -295,8 +303,8 @@ TEST_CASE("Fluid the crack stabiliser charges ahead of the opening is supplied a
   }
   const auto& totals = model->flow().totals();
   const double gap = totals.injected - totals.storage - totals.deformation - totals.outflow;
-  const double moved = std::abs(totals.injected) + std::abs(totals.storage) + std::abs(totals.deformation) +
-                       std::abs(totals.outflow);
+  const double moved =
+      std::abs(totals.injected) + std::abs(totals.storage) + std::abs(totals.deformation) + std::abs(totals.outflow);
   INFO("run's gap " << gap << ", last charged ahead " << previous_ahead << ", sum over the long steps " << sum_ahead);
   CHECK(std::abs(gap - previous_ahead) <= 1e-10 * moved);  // measured 3e-12 of the run's volumes
   // Meaningful only if the long steps charged fluid ahead that lost books would have summed: measured

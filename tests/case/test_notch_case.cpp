@@ -69,7 +69,8 @@ TEST_CASE("A notch's beams are broken at t = 0, logged as cut, and the run goes 
 TEST_CASE("A bad notch is one line of bad input naming [fracture] notch", "[case][fracture]") {
   TempDir dir("notch-bad");
   for (const auto& [fracture, message] : std::vector<std::pair<std::string, std::string>>{
-           {"notch = [[0.5, 0.0, 0.25]]\n", "[fracture] notch = [[0.5,0.0,0.25]], allowed: an array of arrays of 4 finite numbers"},
+           {"notch = [[0.5, 0.0, 0.25]]\n",
+            "[fracture] notch = [[0.5,0.0,0.25]], allowed: an array of arrays of 4 finite numbers"},
            {"notch = [[0.2, 0.0, 0.2, 0.0]]\n", "[fracture] notch = [0.2, 0, 0.2, 0], allowed: two distinct ends"},
            {"notch = [[0.2, 0.0, 1.5, 0.0]]\n", "[fracture] notch = [0.2, 0, 1.5, 0], allowed: ends inside the domain"},
            {"notch = [[0.2, 0.0, nan, 0.0]]\n", "allowed: an array of arrays of 4 finite numbers"}}) {
@@ -81,7 +82,8 @@ TEST_CASE("A bad notch is one line of bad input naming [fracture] notch", "[case
     CHECK_THAT(r.err, Catch::Contains(message));
     CHECK_FALSE(std::filesystem::exists(dir.path / "run"));
   }
-  dir.write("case.toml", edited(notched_case("notch = [[0.1, 0.0, 0.25, 0.0]]\n"), {{"enabled = true", "enabled = false"}}));
+  dir.write("case.toml",
+            edited(notched_case("notch = [[0.1, 0.0, 0.25, 0.0]]\n"), {{"enabled = true", "enabled = false"}}));
   const auto r = run_hmlattice("run case.toml --out run", dir.path);
   CHECK(r.exit_code == 2);
   CHECK_THAT(r.err, Catch::Contains("[fracture] notch given, allowed: only with enabled = true"));

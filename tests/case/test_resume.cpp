@@ -20,22 +20,22 @@ namespace {
 // 34 beams at step 1 and 443 by step 24, so the stops below fall in a pause of the fracturing, in its
 // middle and near its end, with contacts switching and the factor downdated in between.
 std::string fig12_to_first_snapshot() {
-  return hm::test::edited(slurp(std::filesystem::path(HM_SOURCE_DIR) / "cases/fig12_b0.2_quick.toml"),
-                          {{"t_end = 0.0272", "t_end = 0.0045"},
-                           {"times = [0.0045, 0.009, 0.0272]", "times = [0.002, 0.0045]"}});
+  return hm::test::edited(
+      slurp(std::filesystem::path(HM_SOURCE_DIR) / "cases/fig12_b0.2_quick.toml"),
+      {{"t_end = 0.0272", "t_end = 0.0045"}, {"times = [0.0045, 0.009, 0.0272]", "times = [0.002, 0.0045]"}});
 }
 
 // Every file a user compares: the step series, the break log, the radial profiles, the fracture tables,
 // the breakdown and the VTK snapshots.
-const std::vector<std::string> result_files = {"series.csv",         "breaks.csv",           "radial.csv",
-                                               "fractures.csv",      "fracture_summary.csv", "breakdown.csv",
-                                               "vtk/lattice.pvd",    "vtk/lattice_0000.vtu", "vtk/lattice_0001.vtu",
-                                               "vtk/lattice_0002.vtu"};
+const std::vector<std::string> result_files = {
+    "series.csv",    "breaks.csv",      "radial.csv",           "fractures.csv",        "fracture_summary.csv",
+    "breakdown.csv", "vtk/lattice.pvd", "vtk/lattice_0000.vtu", "vtk/lattice_0001.vtu", "vtk/lattice_0002.vtu"};
 
 // case.toml in `dir` run whole (into whole/, already there), then stopped after `first` and `second` steps
 // and resumed to its end in part/: every result file bitwise the same.
 void check_resumed_twice_as_whole(const TempDir& dir, int first, int second) {
-  REQUIRE(run_hmlattice("run case.toml --out part --stop-after-steps " + std::to_string(first), dir.path).exit_code == 0);
+  REQUIRE(run_hmlattice("run case.toml --out part --stop-after-steps " + std::to_string(first), dir.path).exit_code ==
+          0);
   REQUIRE(run_hmlattice("run --resume part --stop-after-steps " + std::to_string(second), dir.path).exit_code == 0);
   const auto r = run_hmlattice("run --resume part", dir.path);
   INFO(r.err);
@@ -116,9 +116,9 @@ TEST_CASE("A checkpoint is refused, the folder untouched, when its case was edit
   CHECK_THAT(r.err, Catch::Contains("checksum"));
   // A checkpoint.bin that is not a regular file: a pipe (no writer: reading would block forever), a
   // link to an endless device, a folder. Each is refused at once, naming the file.
-  for (const std::string& make : {std::string("mkfifo part/checkpoint.bin"),
-                                  std::string("ln -s /dev/zero part/checkpoint.bin"),
-                                  std::string("mkdir part/checkpoint.bin")}) {
+  for (const std::string& make :
+       {std::string("mkfifo part/checkpoint.bin"), std::string("ln -s /dev/zero part/checkpoint.bin"),
+        std::string("mkdir part/checkpoint.bin")}) {
     INFO(make);
     REQUIRE(std::system(("cd '" + dir.path.string() + "' && rm -rf part/checkpoint.bin && " + make).c_str()) == 0);
     r = run_hmlattice("run --resume part", dir.path);  // a pipe without a writer would block the read
@@ -140,8 +140,8 @@ TEST_CASE("A checkpoint is refused, the folder untouched, when its case was edit
   r = run_hmlattice("run --resume part", dir.path);
   CHECK(r.exit_code == 2);
   CHECK(count_lines(r.err) == 1);
-  CHECK_THAT(r.err, Catch::Contains("vtk/lattice_0000.vtu' has " + std::to_string(snapshot.size() / 2) + " bytes, not the " +
-                                    std::to_string(snapshot.size())));
+  CHECK_THAT(r.err, Catch::Contains("vtk/lattice_0000.vtu' has " + std::to_string(snapshot.size() / 2) +
+                                    " bytes, not the " + std::to_string(snapshot.size())));
   std::ofstream(folder / "vtk" / "lattice_0000.vtu", std::ios::binary) << snapshot;
   // Nothing was changed by the refused attempts.
   CHECK(slurp(folder / "series.csv") == series);
@@ -161,11 +161,12 @@ TEST_CASE("With the borehole's undrained spring a stopped and resumed run is bit
   // (its volume sets its pressure), Q = 0.04 so that the wall breaks before t* = 0.0045: none broken by
   // step 18, 35 by step 21, 179 at the end (step 27). Stops at 22 and 25, amid the breaks.
   TempDir dir("run-resume-borehole-spring");
-  dir.write("case.toml", hm::test::edited(fig12_to_first_snapshot(),
-                                          {{"\nQ = 0.01", "\nQ = 0.04"},
-                                           {"borehole_storage = \"none\"", "borehole_storage = \"fluid\""},
-                                           {"borehole_deformation = \"none\"", "borehole_deformation = \"full\""},
-                                           {"split = \"undrained\"", "split = \"undrained\"\nborehole_spring = \"undrained\""}}));
+  dir.write("case.toml",
+            hm::test::edited(fig12_to_first_snapshot(),
+                             {{"\nQ = 0.01", "\nQ = 0.04"},
+                              {"borehole_storage = \"none\"", "borehole_storage = \"fluid\""},
+                              {"borehole_deformation = \"none\"", "borehole_deformation = \"full\""},
+                              {"split = \"undrained\"", "split = \"undrained\"\nborehole_spring = \"undrained\""}}));
   REQUIRE(run_hmlattice("run case.toml --out whole", dir.path).exit_code == 0);
   const std::string breaks = slurp(dir.path / "whole/breaks.csv");
   CHECK(count_lines(breaks) > 100);
@@ -177,10 +178,11 @@ TEST_CASE("With the cubic law a stopped and resumed run is bitwise the uninterru
   // cubic cracks break 136 beams over steps 1-28 (against 442 with iota = 1), so both stops fall
   // between breaks with open, conducting cracks.
   TempDir dir("run-resume-cubic-law");
-  dir.write("case.toml", hm::test::edited(fig12_to_first_snapshot(),
-                                          {{"borehole_storage = \"none\"",
-                                            "borehole_storage = \"none\"\nfracture_flow = \"cubic\"\nrock_permeability = "
-                                            "1e-14\nresidual_aperture = 1e-6"}}));
+  dir.write("case.toml",
+            hm::test::edited(fig12_to_first_snapshot(),
+                             {{"borehole_storage = \"none\"",
+                               "borehole_storage = \"none\"\nfracture_flow = \"cubic\"\nrock_permeability = "
+                               "1e-14\nresidual_aperture = 1e-6"}}));
   REQUIRE(run_hmlattice("run case.toml --out whole", dir.path).exit_code == 0);
   const std::string breaks = slurp(dir.path / "whole/breaks.csv");
   CHECK(count_lines(breaks) > 50);

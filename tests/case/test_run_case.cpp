@@ -44,14 +44,17 @@ TEST_CASE("Bad 2D cases are rejected with one line naming table, key, value and 
   rejected("[physics]\nQ = 0.1\n", "case.toml: [physics] R_i = 0.138, allowed: 0 for [lattice] domain = \"disk\"");
   rejected("[physics]\nR_i = 0\n[lattice]\ndomain = \"annulus\"\n",
            "case.toml: [physics] R_i = 0, allowed: 0 < R_i < 1 for [lattice] domain = \"annulus\"");
-  rejected(physics + "[lattice]\ndomain = \"square\"\n", "case.toml: [lattice] domain = 'square', allowed: disk, annulus");
-  rejected(physics + "[lattice]\ndomain = \"rectangle\"\n", "case.toml: [lattice] domain = 'rectangle', allowed: disk, annulus");
+  rejected(physics + "[lattice]\ndomain = \"square\"\n",
+           "case.toml: [lattice] domain = 'square', allowed: disk, annulus");
+  rejected(physics + "[lattice]\ndomain = \"rectangle\"\n",
+           "case.toml: [lattice] domain = 'rectangle', allowed: disk, annulus");
   rejected(physics + "[lattice]\nn_particles = 10\n", "case.toml: [lattice] n_particles = 10, allowed: ");
   rejected(physics + "[lattice]\nseed = -3\n", "case.toml: [lattice] seed = -3, allowed: >= 0");
   rejected(physics + "[lattice]\nN = 1000\n", "case.toml: [lattice] unknown key 'N', allowed: ");
   rejected(physics + "[lattice]\nstiffness_scaling = \"facet\"\n",
            "case.toml: [lattice] stiffness_scaling = 'facet', allowed: voronoi_facet, uniform");
-  rejected(physics + "[lattice]\nboundary_spacing_factor = 2\n", "case.toml: [lattice] boundary_spacing_factor = 2, allowed: ");
+  rejected(physics + "[lattice]\nboundary_spacing_factor = 2\n",
+           "case.toml: [lattice] boundary_spacing_factor = 2, allowed: ");
   rejected(physics + "[flow]\nrefresh_after_refinements = -2\n",
            "case.toml: [flow] refresh_after_refinements = -2, allowed: 0 ... 1000000");
   rejected(physics + "[coupling]\nfracture_check = \"sometimes\"\n",
@@ -61,7 +64,8 @@ TEST_CASE("Bad 2D cases are rejected with one line naming table, key, value and 
   rejected(physics + "[output]\nfracture_link = \"beam\"\n",
            "case.toml: [output] fracture_link = 'beam', allowed: particle, triangle");
   rejected(physics + "[output]\narm_gap = 0\n", "case.toml: [output] arm_gap = 0, allowed: 0 < arm_gap <= 1");
-  rejected(physics + "[mechanics]\nouter = \"clamped\"\n", "case.toml: [mechanics] outer = 'clamped', allowed: free, fixed");
+  rejected(physics + "[mechanics]\nouter = \"clamped\"\n",
+           "case.toml: [mechanics] outer = 'clamped', allowed: free, fixed");
   rejected(physics + "[mechanics]\nsolver = \"lu\"\n", "case.toml: [mechanics] solver = 'lu', allowed: cholmod, pcg");
   rejected(physics + "[mechanics]\nS_H = 1e-4\nS_h = 2e-4\n",
            "case.toml: [mechanics] S_h = 2e-04, allowed: 0 <= S_h <= S_H (1e-04)");
@@ -77,7 +81,8 @@ TEST_CASE("Bad 2D cases are rejected with one line naming table, key, value and 
            "case.toml: [coupling] psi = 1.3, allowed: 0 for split = drained");
   rejected(physics + "[coupling]\nxi = 0\n", "case.toml: [coupling] xi = 0, allowed: ");
   rejected(physics + "[coupling]\npressure_tolerance = 2\n", "case.toml: [coupling] pressure_tolerance = 2, allowed: ");
-  rejected(physics + "[coupling]\nbalance_tolerance = 0\n", "case.toml: [coupling] balance_tolerance = 0, allowed: 1e-10 <= ");
+  rejected(physics + "[coupling]\nbalance_tolerance = 0\n",
+           "case.toml: [coupling] balance_tolerance = 0, allowed: 1e-10 <= ");
   rejected(physics + "[coupling]\nmax_iterations = 0\n", "case.toml: [coupling] max_iterations = 0, allowed: ");
   rejected(physics + "[flow]\nborehole_deformation = \"half\"\n",
            "case.toml: [flow] borehole_deformation = 'half', allowed: biot, none, full");
@@ -98,8 +103,10 @@ TEST_CASE("Bad 2D cases are rejected with one line naming table, key, value and 
            "case.toml: [flow] residual_aperture = nan, allowed: a finite number");
   rejected(physics + "[flow]\nresidual_aperture = 1e-4\n",
            "case.toml: [flow] residual_aperture = 1e-04, allowed: only with fracture_flow = \"cubic\"");
-  rejected("[physics_si]\nq = 1e-4\nb = 0.5\nk = 1e-15\nR = 10\nR_i = 0\n[flow]\nfracture_flow = \"cubic\"\nrock_permeability = 1e-14\n",
-           "case.toml: [flow] rock_permeability = 1e-14, allowed: k/R^2 of [physics_si] (1e-17)");
+  rejected(
+      "[physics_si]\nq = 1e-4\nb = 0.5\nk = 1e-15\nR = 10\nR_i = 0\n[flow]\nfracture_flow = "
+      "\"cubic\"\nrock_permeability = 1e-14\n",
+      "case.toml: [flow] rock_permeability = 1e-14, allowed: k/R^2 of [physics_si] (1e-17)");
   rejected("[physics]\nQ = 0.1\nR_i = 0\niota = 1000\n[flow]\nfracture_flow = \"cubic\"\nrock_permeability = 1e-14\n",
            "case.toml: [physics] iota = 1000, allowed: 1 with [flow] fracture_flow = \"cubic\" (the crack's "
            "conductance is its aperture's)");
@@ -107,39 +114,47 @@ TEST_CASE("Bad 2D cases are rejected with one line naming table, key, value and 
            "case.toml: [flow] crack_transmissivity = -1, allowed: 0 <= value <= 1e12");
   rejected(physics + "[flow]\ncrack_transmissivity = 5\n",
            "case.toml: [flow] crack_transmissivity = 5, allowed: only with fracture_flow = \"transmissivity\"");
-  rejected("[physics]\nQ = 0.1\nR_i = 0\niota = 1000\n[flow]\nfracture_flow = \"transmissivity\"\ncrack_transmissivity = 5\n",
-           "case.toml: [physics] iota = 1000, allowed: 1 with [flow] fracture_flow = \"transmissivity\"");
+  rejected(
+      "[physics]\nQ = 0.1\nR_i = 0\niota = 1000\n[flow]\nfracture_flow = \"transmissivity\"\ncrack_transmissivity = "
+      "5\n",
+      "case.toml: [physics] iota = 1000, allowed: 1 with [flow] fracture_flow = \"transmissivity\"");
   rejected(physics + "[coupling]\nbroken_beam_spring = \"soft\"\n",
            "case.toml: [coupling] broken_beam_spring = 'soft', allowed: keep, drop");
   rejected(physics + "[coupling]\nborehole_spring = \"soft\"\n",
            "case.toml: [coupling] borehole_spring = 'soft', allowed: none, undrained");
   rejected(physics + "[coupling]\nborehole_spring = \"undrained\"\n",
            "case.toml: [coupling] borehole_spring = \"undrained\", allowed: only with [lattice] domain = \"annulus\"");
-  rejected("[physics]\nQ = 0.1\n[lattice]\ndomain = \"annulus\"\n[flow]\nborehole_storage = \"none\"\n"
-           "[coupling]\nborehole_spring = \"undrained\"\n",
-           "case.toml: [coupling] borehole_spring = \"undrained\", allowed: only with [flow] borehole_storage and "
-           "borehole_deformation not \"none\"");
+  rejected(
+      "[physics]\nQ = 0.1\n[lattice]\ndomain = \"annulus\"\n[flow]\nborehole_storage = \"none\"\n"
+      "[coupling]\nborehole_spring = \"undrained\"\n",
+      "case.toml: [coupling] borehole_spring = \"undrained\", allowed: only with [flow] borehole_storage and "
+      "borehole_deformation not \"none\"");
   rejected(physics + "[flow]\nreuse_factorisation = 1\n", "case.toml: [flow] reuse_factorisation = ");
   rejected(physics + "[coupling]\nrelaxation = \"secant\"\n", "case.toml: [coupling] relaxation = 'secant', allowed: ");
   rejected(physics + "[coupling]\nanderson_depth = 0\n", "case.toml: [coupling] anderson_depth = 0, allowed: 1 ... 50");
-  rejected(physics + "[numerics]\nmax_step_halvings = -1\n", "case.toml: [numerics] max_step_halvings = -1, allowed: 0 ... 50");
+  rejected(physics + "[numerics]\nmax_step_halvings = -1\n",
+           "case.toml: [numerics] max_step_halvings = -1, allowed: 0 ... 50");
   rejected(physics + "[fracture]\nseed = -2\n", "case.toml: [fracture] seed = -2, allowed: >= 0");
   rejected(physics + "[fracture]\nwidth = 1.5\n", "case.toml: [fracture] width = 1.5, allowed: ");
-  rejected(physics + "[fracture]\ndistribution = \"normal\"\n", "case.toml: [fracture] distribution = 'normal', allowed: ");
+  rejected(physics + "[fracture]\ndistribution = \"normal\"\n",
+           "case.toml: [fracture] distribution = 'normal', allowed: ");
   rejected(physics + "[fracture]\ncrack_tip_length = 0\n", "case.toml: [fracture] crack_tip_length = 0, allowed: ");
   rejected(physics + "[fracture]\nstop_at_first_break = true\n",
            "case.toml: [fracture] stop_at_first_break = true, allowed: true only with enabled = true");
   rejected(physics + "[fracture]\nenabled = true\nstop_at_first_break = \"yes\"\n",
            "case.toml: [fracture] stop_at_first_break = ");
-  rejected(physics + "[fracture]\nenabled = true\nstop_at_first_break = 1\n", "case.toml: [fracture] stop_at_first_break = ");
-  rejected("[physics]\nQ = 0.1\nR_i = 0\ntensile_strength = -1\n", "case.toml: [physics] tensile_strength = -1, allowed: ");
+  rejected(physics + "[fracture]\nenabled = true\nstop_at_first_break = 1\n",
+           "case.toml: [fracture] stop_at_first_break = ");
+  rejected("[physics]\nQ = 0.1\nR_i = 0\ntensile_strength = -1\n",
+           "case.toml: [physics] tensile_strength = -1, allowed: ");
   rejected(physics + "[numerics]\ndt_initial = -1\n", "case.toml: [numerics] dt_initial = -1, allowed: ");
   rejected(physics + "[numerics]\ndt_growth = 0.9\n", "case.toml: [numerics] dt_growth = 0.9, allowed: >= 1");
   rejected(physics + "[numerics]\nt_end = 1e-4\ndt_initial = 1e-3\n",
            "case.toml: [numerics] dt_initial = 0.001, allowed: <= t_end = 1e-04");
   rejected(physics + "[output]\ntimes = [1.0]\n", "case.toml: [output] times[0] = 1, allowed: 0 < t <= t_end = 1e-04");
   rejected(physics + "[output]\nradial_bins = 0\n", "case.toml: [output] radial_bins = 0, allowed: 1 <= radial_bins");
-  rejected(physics + "[output]\nradial_max = 2\n", "case.toml: [output] radial_max = 2, allowed: R_i = 0 < radial_max <= 1");
+  rejected(physics + "[output]\nradial_max = 2\n",
+           "case.toml: [output] radial_max = 2, allowed: R_i = 0 < radial_max <= 1");
   rejected(physics + "[output]\nvtk = \"yes\"\n", "case.toml: [output] vtk = ");
   rejected(physics + "[numerics\n", "case.toml:4: malformed TOML: ");
 }
@@ -151,8 +166,8 @@ TEST_CASE("hmlattice run writes series, radial profiles, VTK and a resolved conf
   const auto first = run_hmlattice("run case.toml --out run1", dir.path);
   INFO("stderr: " << first.err);
   REQUIRE(first.exit_code == 0);
-  for (const char* f : {"series.csv", "radial.csv", "config.toml", "vtk/lattice.pvd", "vtk/lattice_0000.vtu",
-                        "vtk/lattice_0002.vtu"})
+  for (const char* f :
+       {"series.csv", "radial.csv", "config.toml", "vtk/lattice.pvd", "vtk/lattice_0000.vtu", "vtk/lattice_0002.vtu"})
     CHECK(std::filesystem::exists(dir.path / "run1" / f));
   // Header plus t = 0 plus two steps; three outputs (0, 5e-6, 1e-5) of five shells plus a header.
   CHECK(count_lines(hm::test::slurp(dir.path / "run1" / "series.csv")) == 4);
@@ -174,9 +189,10 @@ TEST_CASE("hmlattice run writes series, radial profiles, VTK and a resolved conf
   CHECK_THAT(config, Catch::Contains("stiffness_scaling = \"voronoi_facet\""));
   CHECK_THAT(config, Catch::Contains("boundary_spacing_factor = 1.3"));
   // ... and the paper's uniform lattice is a different, repeatable model.
-  const std::string uniform_case = "model = \"lattice2d\"\n[physics]\nQ = 0.1\nb = 0.5\nR_i = 0\n[lattice]\nn_particles = 600\n"
-                                   "stiffness_scaling = \"uniform\"\nboundary_spacing_factor = 1.0\n"
-                                   "[numerics]\ndt_initial = 5e-6\nt_end = 1e-5\n[output]\ntimes = [5e-6]\nradial_bins = 5\n";
+  const std::string uniform_case =
+      "model = \"lattice2d\"\n[physics]\nQ = 0.1\nb = 0.5\nR_i = 0\n[lattice]\nn_particles = 600\n"
+      "stiffness_scaling = \"uniform\"\nboundary_spacing_factor = 1.0\n"
+      "[numerics]\ndt_initial = 5e-6\nt_end = 1e-5\n[output]\ntimes = [5e-6]\nradial_bins = 5\n";
   dir.write("uniform.toml", uniform_case);
   REQUIRE(run_hmlattice("run uniform.toml --out run3", dir.path).exit_code == 0);
   REQUIRE(run_hmlattice("run run3/config.toml --out run4", dir.path).exit_code == 0);
@@ -199,9 +215,9 @@ TEST_CASE("A coupled run that does not converge exits 1 with the reason and keep
   CHECK_THAT(retried.err, Catch::Contains("coupling at t = 1.25e-06: not converged after 1 passes"));
   // The steps before the failure (here none: it is the first) are kept with the reason.
   CHECK(count_lines(r.err) == 1);
-  CHECK_THAT(hm::test::slurp(dir.path / "run" / "status.toml"),
-             Catch::Contains("complete = false") && Catch::Contains("not converged after 1 passes") &&
-                 Catch::Contains("last_step = 0\n"));
+  CHECK_THAT(hm::test::slurp(dir.path / "run" / "status.toml"), Catch::Contains("complete = false") &&
+                                                                    Catch::Contains("not converged after 1 passes") &&
+                                                                    Catch::Contains("last_step = 0\n"));
   CHECK(count_lines(hm::test::slurp(dir.path / "run" / "series.csv")) == 2);  // header and t = 0
 }
 
@@ -229,8 +245,9 @@ TEST_CASE("A fracturing borehole case of only the required keys runs to its end"
   // first step did not converge, its oscillating pressures broke the lattice apart and the mechanics
   // became singular after 68 passes.
   TempDir dir("cli-run-required-keys");
-  dir.write("case.toml", "model = \"lattice2d\"\n[physics]\nQ = 0.01\nb = 0.2\n[lattice]\ndomain = \"annulus\"\n"
-                         "n_particles = 1000\n[numerics]\nt_end = 0.0272\n[fracture]\nenabled = true\n");
+  dir.write("case.toml",
+            "model = \"lattice2d\"\n[physics]\nQ = 0.01\nb = 0.2\n[lattice]\ndomain = \"annulus\"\n"
+            "n_particles = 1000\n[numerics]\nt_end = 0.0272\n[fracture]\nenabled = true\n");
   const auto r = run_hmlattice("run case.toml --out run", dir.path);
   INFO("stderr: " << r.err);
   REQUIRE(r.exit_code == 0);
@@ -240,24 +257,30 @@ TEST_CASE("A fracturing borehole case of only the required keys runs to its end"
   CHECK(count_lines(hm::test::slurp(dir.path / "run" / "breaks.csv")) > 10);
 
   // The former defaults, stated: a numerical failure that says what to try.
-  dir.write("plain.toml", hm::test::slurp(dir.path / "case.toml") + "[coupling]\nrelaxation = \"none\"\nmax_iterations = 10\n");
+  dir.write("plain.toml",
+            hm::test::slurp(dir.path / "case.toml") + "[coupling]\nrelaxation = \"none\"\nmax_iterations = 10\n");
   const auto plain = run_hmlattice("run plain.toml --out plain", dir.path);
   CHECK(plain.exit_code == 1);
   CHECK(count_lines(plain.err) == 1);
-  CHECK_THAT(plain.err, Catch::Contains("numerical failure") &&
-                            Catch::Contains("to try: [coupling] relaxation = \"anderson\", a smaller [numerics] dt_initial"));
+  CHECK_THAT(plain.err,
+             Catch::Contains("numerical failure") &&
+                 Catch::Contains("to try: [coupling] relaxation = \"anderson\", a smaller [numerics] dt_initial"));
 }
 
-TEST_CASE("A spring feedback, force scale, tolerance, fracture permeability or in-situ stress beyond its plausibility bound is refused before the run",
-          "[verification][cli]") {
+TEST_CASE(
+    "A spring feedback, force scale, tolerance, fracture permeability or in-situ stress beyond its plausibility bound "
+    "is refused before the run",
+    "[verification][cli]") {
   // Psi = 2^63 - 1 once crashed the run (a failed factorisation's snapshot; the crash itself is tested
   // on the solver, test_spd_solver.cpp); psi or xi = 1e12 failed the first solve, and a tolerance of
   // 5e-324 ran 100 passes of the first step before failing. Now each is one line of bad input.
   TempDir dir("cli-run-bounds");
-  const std::string base = hm::test::edited(hm::test::slurp(std::filesystem::path(HM_SOURCE_DIR) / "cases/fig12_b0.2_quick.toml"),
-                                            {{"vtk = true", "vtk = false"}});
+  const std::string base =
+      hm::test::edited(hm::test::slurp(std::filesystem::path(HM_SOURCE_DIR) / "cases/fig12_b0.2_quick.toml"),
+                       {{"vtk = true", "vtk = false"}});
   for (const auto& [edit, message] : std::vector<std::pair<std::pair<std::string, std::string>, std::string>>{
-           {{"psi = 1.3", "psi = 9223372036854775807"}, "[coupling] psi = 9223372036854775808, allowed: 0 <= psi <= 1e+06"},
+           {{"psi = 1.3", "psi = 9223372036854775807"},
+            "[coupling] psi = 9223372036854775808, allowed: 0 <= psi <= 1e+06"},
            {{"psi = 1.3", "psi = 1.3\nxi = 1e12"}, "[coupling] xi = 1e+12, allowed: 0 < xi <= 1000"},
            {{"pressure_tolerance = 1e-4", "pressure_tolerance = 5e-324"},
             "[coupling] pressure_tolerance = 5e-324, allowed: 1e-10 <= pressure_tolerance < 1"},
@@ -278,19 +301,26 @@ TEST_CASE("A spring feedback, force scale, tolerance, fracture permeability or i
     CHECK_FALSE(std::filesystem::exists(dir.path / "run"));
   }
   // At the bounds the case runs (its first step).
-  dir.write("case.toml", hm::test::edited(base, {{"psi = 1.3", "psi = 1e6"}, {"iota = 1.0", "iota = 1e12"}, {"t_end = 0.0272", "t_end = 1e-5"},
+  dir.write("case.toml", hm::test::edited(base, {{"psi = 1.3", "psi = 1e6"},
+                                                 {"iota = 1.0", "iota = 1e12"},
+                                                 {"t_end = 0.0272", "t_end = 1e-5"},
                                                  {"times = [0.0045, 0.009, 0.0272]", "times = [1e-5]"}}));
   CHECK(run_hmlattice("run case.toml --out at_bound", dir.path).exit_code == 0);
 }
 
-TEST_CASE("A 2D case in SI units gives the same dimensionless results as its dimensionless twin", "[verification][cli]") {
+TEST_CASE("A 2D case in SI units gives the same dimensionless results as its dimensionless twin",
+          "[verification][cli]") {
   // PorePy's scaled-vs-unscaled check through `hmlattice run`: Table 1 with k = 1e-14 m^2 and
   // q = 1e-2 m^2/s is Q = mu q/(k E) = 0.1; E/M comes from Eq. 22 in both (b = 0.5, nu = 0.25).
   TempDir dir("cli-run-si");
-  const std::string rest = "[lattice]\nn_particles = 600\n[numerics]\ndt_initial = 5e-6\nt_end = 1e-5\n"
-                           "[output]\nradial_bins = 5\nvtk = false\n";
+  const std::string rest =
+      "[lattice]\nn_particles = 600\n[numerics]\ndt_initial = 5e-6\nt_end = 1e-5\n"
+      "[output]\nradial_bins = 5\nvtk = false\n";
   dir.write("dimensionless.toml", "model = \"lattice2d\"\n[physics]\nQ = 0.1\nb = 0.5\nnu = 0.25\nR_i = 0\n" + rest);
-  dir.write("si.toml", "model = \"lattice2d\"\n[physics_si]\nE = 1e10\nnu = 0.25\nk = 1e-14\nmu = 1e-3\nq = 1e-2\nR = 1\nR_i = 0\nb = 0.5\n" + rest);
+  dir.write("si.toml",
+            "model = \"lattice2d\"\n[physics_si]\nE = 1e10\nnu = 0.25\nk = 1e-14\nmu = 1e-3\nq = 1e-2\nR = 1\nR_i = "
+            "0\nb = 0.5\n" +
+                rest);
   REQUIRE(run_hmlattice("run dimensionless.toml --out a", dir.path).exit_code == 0);
   REQUIRE(run_hmlattice("run si.toml --out b", dir.path).exit_code == 0);
   auto numbers = [](const std::string& csv) {
@@ -323,8 +353,9 @@ TEST_CASE("A 2D case in SI units gives the same dimensionless results as its dim
   }
 }
 
-TEST_CASE("A fracturing borehole run writes the break log, breakdown and fracture statistics that agree with the series",
-          "[verification][cli]") {
+TEST_CASE(
+    "A fracturing borehole run writes the break log, breakdown and fracture statistics that agree with the series",
+    "[verification][cli]") {
   // Fig. 12's setting (b = 0.2, Eq. 16's borehole) at 3x the rate on a coarse annulus: breaks within ~1e-3.
   TempDir dir("cli-run-fracture");
   dir.write("case.toml",
@@ -357,7 +388,8 @@ TEST_CASE("A fracturing borehole run writes the break log, breakdown and fractur
   // At least one radial fracture from the borehole at the end (the tensile hoop stress peaks at the wall).
   CHECK_THAT(fractures, Catch::Contains(",radial,"));
   const auto config = hm::test::slurp(dir.path / "run" / "config.toml");
-  CHECK_THAT(config, Catch::Contains("[fracture]\nenabled = true\nstop_at_first_break = false\ndistribution = \"uniform\""));
+  CHECK_THAT(config,
+             Catch::Contains("[fracture]\nenabled = true\nstop_at_first_break = false\ndistribution = \"uniform\""));
   CHECK_THAT(config, Catch::Contains("fracture_link = \"particle\""));
 
   // hmlattice fractures recomputes the same statistics from config.toml and breaks.csv (the rule the
@@ -376,7 +408,9 @@ TEST_CASE("A fracturing borehole run writes the break log, breakdown and fractur
   CHECK(n_fractures(hm::test::slurp(dir.path / "run" / "fracture_summary.csv")) >= n_fractures(summary));
   const auto reconfigured = hm::test::slurp(dir.path / "run" / "config.toml");
   CHECK_THAT(reconfigured, Catch::Contains("fracture_link = \"triangle\""));
-  CHECK_THAT(reconfigured, Catch::Contains("# fracture statistics recomputed with fracture_link = \"triangle\", arm_gap = 0.03 by: "));
+  CHECK_THAT(
+      reconfigured,
+      Catch::Contains("# fracture statistics recomputed with fracture_link = \"triangle\", arm_gap = 0.03 by: "));
   CHECK_THAT(reconfigured, Catch::Contains("[provenance]"));
   // Bad input: one line naming what is wrong, nothing changed.
   r2 = run_hmlattice("fractures run --link beam", dir.path);
@@ -404,11 +438,13 @@ TEST_CASE("A fracturing borehole run writes the break log, breakdown and fractur
   CHECK_THAT(r2.err, Catch::Contains("--arm-gap = 0, allowed: 0 < arm_gap <= 1"));
 }
 
-TEST_CASE("A key changed with --set is as the file would have it, validated like it, and kept in config.toml", "[case][cli]") {
+TEST_CASE("A key changed with --set is as the file would have it, validated like it, and kept in config.toml",
+          "[case][cli]") {
   TempDir dir("cli-run-set");
   const std::string base = hm::test::short_fig12_case("2e-5");
   dir.write("case.toml", base);
-  dir.write("edited.toml", hm::test::edited(base, {{"\nQ = 0.01\n", "\nQ = 0.003\n"}, {"\niota = 1.0\n", "\niota = 1000\n"}}));
+  dir.write("edited.toml",
+            hm::test::edited(base, {{"\nQ = 0.01\n", "\nQ = 0.003\n"}, {"\niota = 1.0\n", "\niota = 1000\n"}}));
   // Given before the case file too: each --set takes one value.
   const auto set = run_hmlattice("run --set physics.Q=0.003 case.toml --set physics.iota=1e3 --out set", dir.path);
   INFO(set.err);
@@ -446,5 +482,6 @@ TEST_CASE("A key changed with --set is as the file would have it, validated like
                                    dir.path);
   INFO(fdm1d.err);
   REQUIRE(fdm1d.exit_code == 0);
-  CHECK_THAT(hm::test::slurp(dir.path / "f/config.toml"), Catch::Contains("\nn_r = 40\n") && Catch::Contains("t_end = 0.03\n"));
+  CHECK_THAT(hm::test::slurp(dir.path / "f/config.toml"),
+             Catch::Contains("\nn_r = 40\n") && Catch::Contains("t_end = 0.03\n"));
 }

@@ -104,7 +104,8 @@ TEST_CASE("stop_at_first_break ends the run, complete, with the step that breaks
   CHECK(cells_of(radial.back())[0] == t_first);
   std::vector<std::string> radial_times;
   for (std::size_t k = 1; k < radial.size(); ++k)
-    if (radial_times.empty() || radial_times.back() != cells_of(radial[k])[0]) radial_times.push_back(cells_of(radial[k])[0]);
+    if (radial_times.empty() || radial_times.back() != cells_of(radial[k])[0])
+      radial_times.push_back(cells_of(radial[k])[0]);
   const std::string pvd = slurp(dir.path / "stop/vtk/lattice.pvd");
   std::size_t n_snapshots = 0;
   for (auto at = pvd.find("<DataSet"); at != std::string::npos; at = pvd.find("<DataSet", at + 1)) ++n_snapshots;
@@ -121,7 +122,8 @@ TEST_CASE("stop_at_first_break ends the run, complete, with the step that breaks
   CHECK_THAT(resumed.err, Catch::Contains("holds a complete run"));
 
   // config.toml says so, and reruns to the same files.
-  CHECK_THAT(slurp(dir.path / "stop/config.toml"), Catch::Contains("[fracture]\nenabled = true\nstop_at_first_break = true\n"));
+  CHECK_THAT(slurp(dir.path / "stop/config.toml"),
+             Catch::Contains("[fracture]\nenabled = true\nstop_at_first_break = true\n"));
   CHECK_THAT(slurp(dir.path / "full/config.toml"), Catch::Contains("stop_at_first_break = false\n"));
 }
 
@@ -132,7 +134,8 @@ TEST_CASE("A stop_at_first_break run stopped before its first break and resumed 
   const auto whole_series = lines_of(slurp(dir.path / "whole/series.csv"));
   const int first_break_step = static_cast<int>(whole_series.size()) - 2;  // header and t = 0
   REQUIRE(first_break_step >= 2);
-  auto r = run_hmlattice("run stop.toml --out part --stop-after-steps " + std::to_string(first_break_step - 1), dir.path);
+  auto r =
+      run_hmlattice("run stop.toml --out part --stop-after-steps " + std::to_string(first_break_step - 1), dir.path);
   REQUIRE(r.exit_code == 0);
   CHECK_THAT(slurp(dir.path / "part/.hmlattice"), Catch::Contains("complete = false"));
   r = run_hmlattice("run --resume part", dir.path);
@@ -185,7 +188,8 @@ struct FirstBreak {
   std::string breaks;
 };
 
-FirstBreak first_break(const TempDir& dir, const std::string& name, const std::string& dt, const std::string& tolerance) {
+FirstBreak first_break(const TempDir& dir, const std::string& name, const std::string& dt,
+                       const std::string& tolerance) {
   dir.write(name + ".toml", first_break_case(dt, tolerance));
   const auto r = run_hmlattice("run " + name + ".toml --out " + name, dir.path);
   INFO(name << ": " << r.err);
@@ -229,9 +233,11 @@ TEST_CASE("With an overshoot tolerance the first break happens within it of the 
 
   // Checked on every pass, a first break overshoots through the unconverged iterate itself (14% at
   // dt -> 0 here), which no halving removes: the tolerance is refused there.
-  dir.write("every.toml", hm::test::edited(first_break_case("1e-4", "0.02"), {{"fracture_check = \"at_convergence\"\n", ""}}));
+  dir.write("every.toml",
+            hm::test::edited(first_break_case("1e-4", "0.02"), {{"fracture_check = \"at_convergence\"\n", ""}}));
   const auto r = run_hmlattice("run every.toml --out every", dir.path);
   CHECK(r.exit_code == 2);
   CHECK(count_lines(r.err) == 1);
-  CHECK_THAT(r.err, Catch::Contains("[numerics] overshoot_tolerance = 0.02, allowed: 0 unless [coupling] fracture_check"));
+  CHECK_THAT(r.err,
+             Catch::Contains("[numerics] overshoot_tolerance = 0.02, allowed: 0 unless [coupling] fracture_check"));
 }

@@ -27,7 +27,8 @@ std::string long_case() {
 // A 1D case of 1e5 constant steps on a fine grid (minutes): the signal arrives in the middle.
 const char* long_fdm1d_case =
     "model = \"fdm1d\"\n[physics]\nQ = 0.01\nb = 0.5\n"
-    "[numerics]\nn_r = 20000\ndt_initial = 1e-5\ndt_growth = 1.0\ndt_max = 1e-5\nt_end = 1.0\n[output]\ntimes = [1.0]\n";
+    "[numerics]\nn_r = 20000\ndt_initial = 1e-5\ndt_growth = 1.0\ndt_max = 1e-5\nt_end = 1.0\n[output]\ntimes = "
+    "[1.0]\n";
 
 // Starts `command` (run or fdm1d) in the background, sends `signal` once the staged `rows_file` has
 // `rows` rows (by default t = 0 and five steps, flushed as they finish), waits; returns the exit status.
@@ -37,13 +38,19 @@ int run_and_signal(const TempDir& dir, const std::string& signal, const std::str
   dir.write("case.toml", case_text);
   std::string script = "'";  // appended step by step: GCC 12 warns falsely (-Wrestrict) on "'" + string
   script += HMLATTICE_EXE;
-  script += "' " + command + " case.toml --out run > out.txt 2> err.txt & pid=$!\n"
+  script += "' " + command +
+            " case.toml --out run > out.txt 2> err.txt & pid=$!\n"
             "for i in $(seq 1200); do\n"
-            "  n=$(cat .hmlattice-staging-*/" + rows_file + " 2>/dev/null | wc -l)\n"
-            "  [ \"$n\" -ge " + std::to_string(rows + 1) + " ] && break\n"
+            "  n=$(cat .hmlattice-staging-*/" +
+            rows_file +
+            " 2>/dev/null | wc -l)\n"
+            "  [ \"$n\" -ge " +
+            std::to_string(rows + 1) +
+            " ] && break\n"
             "  sleep 0.05\n"
             "done\n"
-            "kill -" + signal + " $pid\nwait $pid\necho $? > rc.txt\n";
+            "kill -" +
+            signal + " $pid\nwait $pid\necho $? > rc.txt\n";
   dir.write("interrupt.sh", script);
   REQUIRE(std::system(("cd '" + dir.path.string() + "' && bash interrupt.sh").c_str()) == 0);
   return std::stoi(slurp(dir.path / "rc.txt"));
@@ -58,7 +65,8 @@ TEST_CASE("An interrupted run keeps its finished steps in --out, marked incomple
     const std::string err = slurp(dir.path / "err.txt");
     INFO(err);
     CHECK(count_lines(err) == 1);
-    CHECK_THAT(err, Catch::Contains(std::string("interrupted by SIG") + signal) && Catch::Contains("marked incomplete"));
+    CHECK_THAT(err,
+               Catch::Contains(std::string("interrupted by SIG") + signal) && Catch::Contains("marked incomplete"));
     const auto run = dir.path / "run";
     REQUIRE(std::filesystem::is_directory(run));
     // No staging folder is left beside it.
@@ -77,7 +85,8 @@ TEST_CASE("An interrupted run keeps its finished steps in --out, marked incomple
     // It continues from the checkpoint of its last step (here for two more steps).
     CHECK_THAT(status, Catch::Contains("checkpoint_step = " + std::to_string(rows - 2) + "\n") &&
                            Catch::Contains("resume = \"hmlattice run --resume run\""));
-    const auto resumed = hm::test::run_hmlattice("run --resume run --stop-after-steps " + std::to_string(rows), dir.path);
+    const auto resumed =
+        hm::test::run_hmlattice("run --resume run --stop-after-steps " + std::to_string(rows), dir.path);
     INFO(resumed.err);
     CHECK(resumed.exit_code == 0);
     CHECK(count_lines(slurp(run / "series.csv")) == rows + 2);
@@ -130,7 +139,9 @@ TEST_CASE("A killed run's staging folder is reported by the next run beside it, 
   for (const auto& entry : std::filesystem::directory_iterator(dir.path))
     if (entry.path().filename().string().rfind(".hmlattice-staging-", 0) == 0) staging = entry.path();
   REQUIRE_FALSE(staging.empty());
-  dir.write("small.toml", "model = \"fdm1d\"\n[physics]\nQ = 0.01\nb = 0.5\n[numerics]\nn_r = 40\nt_end = 0.01\n[output]\ntimes = [0.01]\n");
+  dir.write("small.toml",
+            "model = \"fdm1d\"\n[physics]\nQ = 0.01\nb = 0.5\n[numerics]\nn_r = 40\nt_end = 0.01\n[output]\ntimes = "
+            "[0.01]\n");
   const auto r = hm::test::run_hmlattice("fdm1d small.toml --out other", dir.path);
   CHECK(r.exit_code == 0);
   CHECK(count_lines(r.err) == 1);
@@ -145,18 +156,22 @@ TEST_CASE("A killed run's staging folder is reported by the next run beside it, 
   INFO(resumed.err);
   CHECK(resumed.exit_code == 0);
   CHECK(count_lines(slurp(staging / "series.csv")) == flushed + 4);
-  CHECK_THAT(slurp(staging / "status.toml"), Catch::Contains("last_step = " + std::to_string(flushed + 2) + "\n") &&
-                                                 Catch::Contains("resume = \"hmlattice run --resume " + staging.string()));
+  CHECK_THAT(slurp(staging / "status.toml"),
+             Catch::Contains("last_step = " + std::to_string(flushed + 2) + "\n") &&
+                 Catch::Contains("resume = \"hmlattice run --resume " + staging.string()));
 }
 
 TEST_CASE("A Ctrl-C inside a long step undoes that step at once, and the resumed run is bitwise the uninterrupted one",
           "[case][cli]") {
   // One step of the Fig. 12 quick case at N = 4000 straight to t* = 0.0045: ~45 coupling passes that
   // break ~1500 beams, several seconds. The signal comes as soon as the t = 0 row is written.
-  const std::string one_long_step = hm::test::edited(
-      long_case(), {{"n_particles = 3000", "n_particles = 4000"}, {"dt_initial = 1e-5", "dt_initial = 0.0045"},
-                    {"dt_max = 5e-4", "dt_max = 0.0045"}, {"t_end = 0.0272", "t_end = 0.0045"},
-                    {"times = [0.0045, 0.009, 0.0272]", "times = [0.0045]"}, {"vtk = true", "vtk = false"}});
+  const std::string one_long_step =
+      hm::test::edited(long_case(), {{"n_particles = 3000", "n_particles = 4000"},
+                                     {"dt_initial = 1e-5", "dt_initial = 0.0045"},
+                                     {"dt_max = 5e-4", "dt_max = 0.0045"},
+                                     {"t_end = 0.0272", "t_end = 0.0045"},
+                                     {"times = [0.0045, 0.009, 0.0272]", "times = [0.0045]"},
+                                     {"vtk = true", "vtk = false"}});
   TempDir dir("run-interrupt-in-step");
   CHECK(run_and_signal(dir, "INT", "run", one_long_step, "series.csv", 1) == 130);
   const std::string err = slurp(dir.path / "err.txt");

@@ -37,7 +37,8 @@ TEST_CASE("config.toml records the BLAS and OpenMP in effect, OpenBLAS on one th
   TempDir dir("provenance-blas");
   dir.write("case.toml", tiny_case);
   // A user's OPENBLAS_NUM_THREADS = 2 is overridden: two threads change the supernodal factor's bits.
-  const auto r = run_hmlattice("run case.toml --out run", dir.path, "export OPENBLAS_NUM_THREADS=2 OMP_NUM_THREADS=1; ");
+  const auto r =
+      run_hmlattice("run case.toml --out run", dir.path, "export OPENBLAS_NUM_THREADS=2 OMP_NUM_THREADS=1; ");
   INFO("stderr: " << r.err);
   REQUIRE(r.exit_code == 0);
   const toml::value config = toml::parse((dir.path / "run" / "config.toml").string());
@@ -61,9 +62,10 @@ TEST_CASE("config.toml records the BLAS and OpenMP in effect, OpenBLAS on one th
   CHECK(slurp(dir.path / "run" / "series.csv") == slurp(dir.path / "run2" / "series.csv"));
 }
 
-TEST_CASE("A case path and result folder holding a newline, quotes, a backslash and a non-UTF-8 byte give a "
-          "config.toml that reads back",
-          "[case][cli]") {
+TEST_CASE(
+    "A case path and result folder holding a newline, quotes, a backslash and a non-UTF-8 byte give a "
+    "config.toml that reads back",
+    "[case][cli]") {
   TempDir dir("provenance-path");
   // Passed to the shell inside single quotes, where every byte but ' is literal.
   const std::string name = std::string("odd\nname \"q\" back\\slash ") + "\xff" + "end";
@@ -78,7 +80,8 @@ TEST_CASE("A case path and result folder holding a newline, quotes, a backslash 
   const toml::value config = toml::parse((folder / "config.toml").string());
   const std::string command_line = toml::find<std::string>(config, "provenance", "command_line");
   // Newline, quotes and backslash come back as they were; the byte that is no UTF-8 as U+FFFD.
-  CHECK_THAT(command_line, Catch::Contains("odd\nname \"q\" back\\slash \xEF\xBF\xBD" "end.toml"));
+  CHECK_THAT(command_line, Catch::Contains("odd\nname \"q\" back\\slash \xEF\xBF\xBD"
+                                           "end.toml"));
   // The result marker holds the same command line and reads back too.
   CHECK_NOTHROW(toml::parse((folder / ".hmlattice").string()));
   // The folder reruns from its config.toml.

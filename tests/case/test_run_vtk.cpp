@@ -67,7 +67,7 @@ if (state == 2).any():
 )";
 
 std::map<std::string, std::vector<double>> read_snapshot(const std::filesystem::path& vtu, double SH, double Sh,
-                                                          double theta_H) {
+                                                         double theta_H) {
   const std::filesystem::path script = vtu.parent_path() / "read_snapshot.py";
   std::ofstream(script) << read_snapshot_script;
   const std::string cmd = std::string(HM_PYTHON) + " '" + script.string() + "' '" + vtu.string() + "' '" +
@@ -87,8 +87,9 @@ std::map<std::string, std::vector<double>> read_snapshot(const std::filesystem::
 
 }  // namespace
 
-TEST_CASE("hmlattice run writes the rest state under S_H and S_h as VTK stress, and each beam its failure ratio and opening",
-          "[case][vtk]") {
+TEST_CASE(
+    "hmlattice run writes the rest state under S_H and S_h as VTK stress, and each beam its failure ratio and opening",
+    "[case][vtk]") {
   if (std::string(HM_PYTHON).empty()) {
     WARN("HM_PYTHON is empty (no python3 found by CMake): meshio read-back skipped; run scripts/install-deps.sh");
     return;
@@ -96,9 +97,9 @@ TEST_CASE("hmlattice run writes the rest state under S_H and S_h as VTK stress, 
   // The anisotropic in-situ quick case (S_H = 3e-4, S_h = 1e-4 at 30 degrees, N = 3000) to the
   // first output time: snapshot 0 is the rest state at t = 0, snapshot 1 the fractured t* = 4.5e-3.
   TempDir dir("run-vtk");
-  dir.write("case.toml", edited(slurp(std::filesystem::path(HM_SOURCE_DIR) / "cases/insitu_anisotropic_quick.toml"),
-                                {{"t_end = 0.0272", "t_end = 0.0045"},
-                                 {"times = [0.0045, 0.009, 0.0272]", "times = [0.0045]"}}));
+  dir.write("case.toml",
+            edited(slurp(std::filesystem::path(HM_SOURCE_DIR) / "cases/insitu_anisotropic_quick.toml"),
+                   {{"t_end = 0.0272", "t_end = 0.0045"}, {"times = [0.0045, 0.009, 0.0272]", "times = [0.0045]"}}));
   const auto r = run_hmlattice("run case.toml --out out", dir.path);
   REQUIRE(r.exit_code == 0);
 

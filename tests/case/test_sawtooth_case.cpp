@@ -89,7 +89,8 @@ TEST_CASE("A bad saw-tooth setting is one line of bad input naming [fracture] an
             "[fracture] fracture_energy = 0, allowed: 0 < fracture_energy <= 1 with law = \"sawtooth\""},
            {"law = \"sawtooth\"\nfracture_energy = -1e-9\n", "[fracture] fracture_energy = -1e-09, allowed: 0 <"},
            // A G_f in J/m^2 typed into the dimensionless table.
-           {"law = \"sawtooth\"\nfracture_energy = 100\n", "[fracture] fracture_energy = 100, allowed: 0 < fracture_energy <= 1"},
+           {"law = \"sawtooth\"\nfracture_energy = 100\n",
+            "[fracture] fracture_energy = 100, allowed: 0 < fracture_energy <= 1"},
            {"fracture_energy = 1e-9\n", "[fracture] fracture_energy = 1e-09, allowed: 0 with law = \"brittle\""},
            {"law = \"cohesive\"\n", "[fracture] law = 'cohesive', allowed: brittle, sawtooth"},
            {"law = \"sawtooth\"\nfracture_energy = 1e-9\nsawtooth_reduction = 1.0\n",

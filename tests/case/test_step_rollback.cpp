@@ -43,10 +43,10 @@ TEST_CASE("A rejected coupled step leaves no trace: halvings break what the halv
 
   auto halved = hm::cases::make_coupled_model(c);
   std::vector<double> accepted_dt;
-  const auto run = halved->run(c.stepping, [&](const hm::lattice2d::CoupledModel&,
-                                               const hm::lattice2d::CoupledStepSummary& s, bool) {
-    if (s.dt > 0.0) accepted_dt.push_back(s.dt);
-  });
+  const auto run = halved->run(
+      c.stepping, [&](const hm::lattice2d::CoupledModel&, const hm::lattice2d::CoupledStepSummary& s, bool) {
+        if (s.dt > 0.0) accepted_dt.push_back(s.dt);
+      });
   REQUIRE(run.is_ok());
   // The setting must exercise the retry, with breaks in the rejected attempts.
   REQUIRE(run.n_step_halvings >= 2);

@@ -111,9 +111,7 @@ TEST_CASE("A swept string becomes a safe file name, and an fdm1d sweep is run by
 
 TEST_CASE("A bad sweep is one line naming the key, the value and the rule", "[case][sweep]") {
   TempDir dir("sweep-refusals");
-  SECTION("no [sweep]") {
-    CHECK_THAT(expand_error(dir, ""), Catch::Contains("[sweep] is missing, allowed: a table"));
-  }
+  SECTION("no [sweep]") { CHECK_THAT(expand_error(dir, ""), Catch::Contains("[sweep] is missing, allowed: a table")); }
   SECTION("an empty list") {
     CHECK_THAT(expand_error(dir, "[sweep]\n\"physics.Q\" = []\n"),
                Catch::EndsWith("s.toml: [sweep] physics.Q = [], allowed: a non-empty list of numbers, strings or "
@@ -141,11 +139,14 @@ TEST_CASE("A bad sweep is one line naming the key, the value and the rule", "[ca
   }
   SECTION("a value outside its rule, in the second combination") {
     CHECK_THAT(expand_error(dir, "[sweep]\n\"physics.b\" = [0.5, 1.5]\n"),
-               Catch::EndsWith("s.toml: [sweep] combination b=1.5 (physics.b = 1.5): [physics] b = 1.5, allowed: 0 <= b <= 1"));
+               Catch::EndsWith(
+                   "s.toml: [sweep] combination b=1.5 (physics.b = 1.5): [physics] b = 1.5, allowed: 0 <= b <= 1"));
   }
   SECTION("a value of the wrong type") {
-    CHECK_THAT(expand_error(dir, "[sweep]\n\"lattice.seed\" = [\"one\"]\n"),
-               Catch::Contains("[sweep] combination seed=one (lattice.seed = \"one\"): [lattice] seed = \"one\", allowed: an integer"));
+    CHECK_THAT(
+        expand_error(dir, "[sweep]\n\"lattice.seed\" = [\"one\"]\n"),
+        Catch::Contains(
+            "[sweep] combination seed=one (lattice.seed = \"one\"): [lattice] seed = \"one\", allowed: an integer"));
   }
   SECTION("two values with one name") {
     CHECK_THAT(expand_error(dir, "[sweep]\n\"physics.Q\" = [0.1, 0.1]\n"),
@@ -159,7 +160,8 @@ TEST_CASE("sweep expand refuses a bad sweep with exit 2 and writes nothing", "[c
   const auto before = hm::test::folder_snapshot(dir.path);
   const auto r = hm::test::run_hmlattice("sweep expand s.toml --out sub/cases", dir.path);
   CHECK(r.exit_code == 2);
-  CHECK(r.err == "hmlattice: s.toml: [sweep] combination Q=-1 (physics.Q = -1): [physics] Q = -1, allowed: 0 <= Q <= 1e+06\n");
+  CHECK(r.err ==
+        "hmlattice: s.toml: [sweep] combination Q=-1 (physics.Q = -1): [physics] Q = -1, allowed: 0 <= Q <= 1e+06\n");
   CHECK(hm::test::folder_snapshot(dir.path) == before);  // not even the parent folder "sub"
 
   SECTION("a good one appears whole, and is not replaced without --overwrite") {
@@ -235,8 +237,8 @@ TEST_CASE("A sweep's size is bounded, the case's own values of swept keys are ch
   CHECK_FALSE(fs::exists(dir.path / "big"));
 
   // The case's own b, which the sweep replaces, is still part of the file: `run` would refuse it.
-  dir.write("own.toml", hm::test::edited(lattice_case, {{"b = 0.5", "b = 1.0000001"}}) +
-                            "[sweep]\n\"physics.b\" = [0.2, 0.8]\n");
+  dir.write("own.toml",
+            hm::test::edited(lattice_case, {{"b = 0.5", "b = 1.0000001"}}) + "[sweep]\n\"physics.b\" = [0.2, 0.8]\n");
   const auto own = hm::test::run_hmlattice("sweep expand own.toml --out own", dir.path);
   CHECK(own.exit_code == 2);
   CHECK_THAT(own.err, Catch::Contains("[physics] b = 1.0000001, allowed: 0 <= b <= 1 (the case's own value of "
@@ -253,7 +255,8 @@ TEST_CASE("A sweep's size is bounded, the case's own values of swept keys are ch
   CHECK(hm::test::slurp(dir.path / "rc.txt") == "143\n");
   const std::string err = hm::test::slurp(dir.path / "err.txt");
   CHECK(hm::test::count_lines(err) == 1);
-  CHECK_THAT(err, Catch::Contains("interrupted by SIGTERM after") && Catch::Contains("of 10100 combinations; nothing written"));
+  CHECK_THAT(err, Catch::Contains("interrupted by SIGTERM after") &&
+                      Catch::Contains("of 10100 combinations; nothing written"));
   for (const auto& e : fs::directory_iterator(dir.path))
     CHECK(e.path().filename().string().rfind(".hmlattice-staging-", 0) != 0);
   CHECK_FALSE(fs::exists(dir.path / "big"));

@@ -92,8 +92,10 @@ TEST_CASE("A folder holding the user's files is refused and every file stays, by
   CHECK_THROWS_AS(ResultFolder(box.root / "victim", "--out", true, "x"), hm::InputError);
   CHECK(folder_snapshot(box.root) == before);  // nothing removed, nothing staged beside it
   const std::string why = refusal(box.root / "victim", true);
-  CHECK(why.find("--out = '" + (box.root / "victim").string() + "' is a folder with files that hmlattice did not write") == 0);
-  CHECK(why.find("allowed: a new or empty folder, or an earlier hmlattice result with --overwrite") != std::string::npos);
+  CHECK(why.find("--out = '" + (box.root / "victim").string() +
+                 "' is a folder with files that hmlattice did not write") == 0);
+  CHECK(why.find("allowed: a new or empty folder, or an earlier hmlattice result with --overwrite") !=
+        std::string::npos);
   CHECK(why.find('\n') == std::string::npos);
 }
 
@@ -105,14 +107,15 @@ TEST_CASE("An earlier result is refused without --overwrite and replaced with it
   box.write("res/figures/.hmlattice", "# hmlattice result folder: figures\nfiles = [\"figure.png\"]\n");
   box.write("res/figures/figure.png", "drawn later into the result folder");
   const auto before = folder_snapshot(box.root);
-  CHECK(refusal(target) == "--out = '" + target.string() +
-                               "' holds an earlier hmlattice result; add --overwrite to replace it, or choose another folder");
+  CHECK(refusal(target) ==
+        "--out = '" + target.string() +
+            "' holds an earlier hmlattice result; add --overwrite to replace it, or choose another folder");
   CHECK_THROWS_AS(ResultFolder(target, "--out", false, "x"), hm::InputError);
   CHECK(folder_snapshot(box.root) == before);
   write_result(target, "new", true);
   CHECK(read(target / "result.csv") == "new");
-  CHECK_FALSE(fs::exists(target / "figures"));           // the earlier result went as a whole
-  CHECK(folder_snapshot(box.root).size() == 3);          // res, marker, result: nothing set aside is left
+  CHECK_FALSE(fs::exists(target / "figures"));   // the earlier result went as a whole
+  CHECK(folder_snapshot(box.root).size() == 3);  // res, marker, result: nothing set aside is left
 }
 
 TEST_CASE("An earlier result holding a file the toolkit did not write is refused by --overwrite, naming it", "[core]") {
@@ -129,9 +132,10 @@ TEST_CASE("An earlier result holding a file the toolkit did not write is refused
         std::vector<std::string>{"figures/b_edited.png", "my_notes.txt"});
   const auto before = folder_snapshot(box.root);
   const std::string why = refusal(target, true);
-  CHECK(why == "--out = '" + target.string() + "' holds files hmlattice did not write ('figures/b_edited.png', "
-                                               "'my_notes.txt'), which --overwrite would remove; allowed: move them "
-                                               "out first, or choose another folder");
+  CHECK(why == "--out = '" + target.string() +
+                   "' holds files hmlattice did not write ('figures/b_edited.png', "
+                   "'my_notes.txt'), which --overwrite would remove; allowed: move them "
+                   "out first, or choose another folder");
   CHECK_THROWS_AS(write_result(target, "new", true), hm::InputError);
   CHECK(folder_snapshot(box.root) == before);  // nothing removed, nothing staged beside it
 
@@ -175,8 +179,9 @@ TEST_CASE("Files, links, devices, pipes, the working directory, folders above it
     // found only when the finished run was moved into place).
     CHECK(refusal(box.root / "new" / std::string(256, 'x'), overwrite).find("has a name of 256 characters") !=
           std::string::npos);
-    CHECK(refusal(box.root / std::string(256, 'y') / "run", overwrite).find("allowed: names of at most 255 characters") !=
-          std::string::npos);
+    CHECK(
+        refusal(box.root / std::string(256, 'y') / "run", overwrite).find("allowed: names of at most 255 characters") !=
+        std::string::npos);
   }
   CHECK(folder_snapshot(box.root) == before);
 
@@ -195,7 +200,10 @@ TEST_CASE("Files, links, devices, pipes, the working directory, folders above it
   const std::optional<std::string> saved = home ? std::optional<std::string>(home) : std::nullopt;
   ::setenv("HOME", (box.root / "res").c_str(), 1);
   const std::string why = refusal(box.root / "res", true);
-  if (saved) ::setenv("HOME", saved->c_str(), 1); else ::unsetenv("HOME");
+  if (saved)
+    ::setenv("HOME", saved->c_str(), 1);
+  else
+    ::unsetenv("HOME");
   CHECK(why.find("is the home directory") != std::string::npos);
 }
 

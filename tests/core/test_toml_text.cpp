@@ -18,11 +18,12 @@ TEST_CASE("toml_string escapes quotes, backslashes and control characters and ke
 }
 
 TEST_CASE("toml_string writes each byte that is not UTF-8 as U+FFFD", "[core]") {
-  CHECK(toml_string("a\xff" "b") == "\"a\\ufffdb\"");                     // never a UTF-8 byte
-  CHECK(toml_string("\x80") == "\"\\ufffd\"");                            // stray continuation byte
-  CHECK(toml_string("\xe2\x82") == "\"\\ufffd\\ufffd\"");                 // truncated sequence
-  CHECK(toml_string("\xc0\xaf") == "\"\\ufffd\\ufffd\"");                 // overlong '/'
-  CHECK(toml_string("\xed\xa0\x80") == "\"\\ufffd\\ufffd\\ufffd\"");      // surrogate U+D800
+  CHECK(toml_string("a\xff"
+                    "b") == "\"a\\ufffdb\"");                                    // never a UTF-8 byte
+  CHECK(toml_string("\x80") == "\"\\ufffd\"");                                   // stray continuation byte
+  CHECK(toml_string("\xe2\x82") == "\"\\ufffd\\ufffd\"");                        // truncated sequence
+  CHECK(toml_string("\xc0\xaf") == "\"\\ufffd\\ufffd\"");                        // overlong '/'
+  CHECK(toml_string("\xed\xa0\x80") == "\"\\ufffd\\ufffd\\ufffd\"");             // surrogate U+D800
   CHECK(toml_string("\xf4\x90\x80\x80") == "\"\\ufffd\\ufffd\\ufffd\\ufffd\"");  // beyond U+10FFFF
-  CHECK(toml_string("\xe2\x82\xac\xe2") == "\"\xe2\x82\xac\\ufffd\"");    // valid, then cut off
+  CHECK(toml_string("\xe2\x82\xac\xe2") == "\"\xe2\x82\xac\\ufffd\"");           // valid, then cut off
 }

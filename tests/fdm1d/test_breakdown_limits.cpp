@@ -66,8 +66,8 @@ TEST_CASE("The 1D wall hoop stress is the annulus formula of its own p_h and mea
     REQUIRE(res.summary.is_success());
     double worst = 0.0;
     for (const auto& s : res.snapshots) {
-      const double formula = hm::analytic::annulus_wall_hoop_stress(s.p.front(), mean_pressure(res.r, s.p), d.material.b,
-                                                                    d.material.nu, d.R_i);
+      const double formula = hm::analytic::annulus_wall_hoop_stress(s.p.front(), mean_pressure(res.r, s.p),
+                                                                    d.material.b, d.material.nu, d.R_i);
       CAPTURE(n_r, s.t, s.sigma_theta.front(), formula);
       worst = std::max(worst, std::abs(s.sigma_theta.front() / formula - 1.0));
     }

@@ -14,7 +14,7 @@ namespace {
 constexpr double kTensileStrength = 2e-4;  // T_u/E, Table 1
 
 struct WallHistory {
-  double t_at_strength = NAN;  // first time sigma_theta(R_i) reaches T_u/E (linear between steps)
+  double t_at_strength = NAN;   // first time sigma_theta(R_i) reaches T_u/E (linear between steps)
   double sigma_theta_at = NAN;  // sigma_theta(R_i) at t_probe (linear between steps)
 };
 

@@ -10,10 +10,10 @@
 #include <vector>
 
 #include "approx.hpp"
-#include "hm/core/input_error.hpp"
 #include "hm/analytic/lame.hpp"
-#include "hm/analytic/steady_borehole.hpp"
 #include "hm/analytic/physical_parameters.hpp"
+#include "hm/analytic/steady_borehole.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/fdm1d/fdm1d.hpp"
 
 namespace {
@@ -65,8 +65,8 @@ SteadyErrors steady_errors(const DimensionlessParameters& prm, int n_r) {
     ez.push_back(s.sigma_z[i] - e.sigma_z);
   }
   const double stress = max_abs(xt);
-  return {max_abs(ep) / max_abs(xp), max_abs(eu) / max_abs(xu), max_abs(er) / stress,
-          max_abs(et) / stress, max_abs(ez) / stress};
+  return {max_abs(ep) / max_abs(xp), max_abs(eu) / max_abs(xu), max_abs(er) / stress, max_abs(et) / stress,
+          max_abs(ez) / stress};
 }
 
 void require_second_order(double e_coarse, double e_mid, double e_fine) {
@@ -81,9 +81,7 @@ void require_second_order(double e_coarse, double e_mid, double e_fine) {
 
 }  // namespace
 
-TEST_CASE("Default 1D numerics are valid", "[fdm1d]") {
-  REQUIRE_NOTHROW(Fdm1dNumerics{}.validate(0.138));
-}
+TEST_CASE("Default 1D numerics are valid", "[fdm1d]") { REQUIRE_NOTHROW(Fdm1dNumerics{}.validate(0.138)); }
 
 TEST_CASE("Bad 1D numerics are rejected with the field's name", "[fdm1d]") {
   const auto rejects = [](auto mutate, const std::string& field) {
@@ -231,8 +229,9 @@ TEST_CASE("The steady state matches Appendix B at second order in dr", "[fdm1d]"
 TEST_CASE("The steady-state order in dr tends to 2 on fine grids", "[fdm1d][slow]") {
   const auto prm = hm::analytic::table1_borehole(0.5);
   const auto e4 = steady_errors(prm, 400), e8 = steady_errors(prm, 800), e16 = steady_errors(prm, 1600);
-  for (const auto& [coarse, mid, fine] : {std::array{e4.u, e8.u, e16.u}, std::array{e4.sigma_r, e8.sigma_r, e16.sigma_r},
-                                          std::array{e4.sigma_theta, e8.sigma_theta, e16.sigma_theta}}) {
+  for (const auto& [coarse, mid, fine] :
+       {std::array{e4.u, e8.u, e16.u}, std::array{e4.sigma_r, e8.sigma_r, e16.sigma_r},
+        std::array{e4.sigma_theta, e8.sigma_theta, e16.sigma_theta}}) {
     const double order = std::log2(mid / fine);
     CAPTURE(coarse, mid, fine, order);
     // Asymptotic range (dr/R_i <= 0.004): the band tightens to 0.1.
@@ -256,7 +255,8 @@ TEST_CASE("Pressure and displacement divided by Q do not depend on Q", "[fdm1d]"
     for (std::size_t s = 0; s < ref.snapshots.size(); ++s) {
       const auto& a = ref.snapshots[s];
       const auto& c = res.snapshots[s];
-      const double p_scale = max_abs(a.p) / 0.01, u_scale = max_abs(a.u_r) / 0.01, s_scale = max_abs(a.sigma_theta) / 0.01;
+      const double p_scale = max_abs(a.p) / 0.01, u_scale = max_abs(a.u_r) / 0.01,
+                   s_scale = max_abs(a.sigma_theta) / 0.01;
       for (std::size_t i = 0; i < a.p.size(); ++i) {
         CAPTURE(Q, s, i);
         // 1e-12 relative to the field's max norm: round-off of ~300 LU solves (each ~1e-15).

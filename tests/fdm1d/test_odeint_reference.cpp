@@ -6,8 +6,8 @@
 #include <cmath>
 #include <vector>
 
-#include "hm/core/input_error.hpp"
 #include "hm/analytic/physical_parameters.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/fdm1d/fdm1d.hpp"
 #include "hm/fdm1d/odeint_reference.hpp"
 
@@ -57,7 +57,8 @@ void require_first_order_in_time(const DimensionlessParameters& prm, int n_r, do
   for (const double dt : {dt0, dt0 / 2, dt0 / 4})
     errors.push_back(difference(hm::fdm1d::run_fdm1d(prm, fixed_steps(n_r, dt, 0.1, times)).snapshots, ref.snapshots));
   for (std::size_t k = 1; k < errors.size(); ++k) {
-    for (const auto& [coarse, fine] : {std::pair{errors[k - 1].p, errors[k].p}, std::pair{errors[k - 1].u, errors[k].u}}) {
+    for (const auto& [coarse, fine] :
+         {std::pair{errors[k - 1].p, errors[k].p}, std::pair{errors[k - 1].u, errors[k].u}}) {
       const double order = std::log2(coarse / fine);
       CAPTURE(n_r, dt0, k, coarse, fine, order);
       // Implicit Euler is first order; floor 0.9 and band 0.1 (observed 0.98..0.997). The reference's
@@ -75,7 +76,9 @@ TEST_CASE("Implicit Euler converges at first order in dt to the Odeint solution"
   // decays exponentially instead of scaling with dt.
   SECTION("b = 0.5, plane strain") { require_first_order_in_time(hm::analytic::table1_borehole(0.5), 40, 0.005); }
   SECTION("b = 1, plane strain") { require_first_order_in_time(hm::analytic::table1_borehole(1.0), 40, 0.005); }
-  SECTION("b = 0.5, appendix-a") { require_first_order_in_time(hm::analytic::table1_borehole(0.5, 0.01, VolStrain::appendix_a), 40, 0.005); }
+  SECTION("b = 0.5, appendix-a") {
+    require_first_order_in_time(hm::analytic::table1_borehole(0.5, 0.01, VolStrain::appendix_a), 40, 0.005);
+  }
 }
 
 TEST_CASE("Implicit Euler's first order in dt holds on a fine grid", "[fdm1d][slow]") {

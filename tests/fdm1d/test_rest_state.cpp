@@ -34,7 +34,7 @@ TEST_CASE("From rest under an isotropic in-situ stress the 1D model adds Lame's 
   for (std::size_t k = 0; k < plain.borehole.size(); k += 10) {
     const auto &a = plain.borehole[k], &r = rested.borehole[k];
     const auto wall = lame.state(params.R_i);
-    CHECK(r.p_h == a.p_h);  // the flow is the increment's: untouched
+    CHECK(r.p_h == a.p_h);                                                // the flow is the increment's: untouched
     CHECK(r.sigma_r - a.sigma_r == Approx(wall.sigma_r).epsilon(1e-12));  // one addition's round-off
     CHECK(r.sigma_theta - a.sigma_theta == Approx(wall.sigma_theta).epsilon(1e-12));
     CHECK(r.sigma_z - a.sigma_z == Approx(wall.sigma_z).epsilon(1e-12));
@@ -52,8 +52,10 @@ TEST_CASE("Zero rest state is the run without it bit for bit, and bad values are
   const Fdm1dResult a = run_fdm1d(params, short_run()), z = run_fdm1d(params, short_run(), RestState{});
   CHECK(a.borehole.back().sigma_theta == z.borehole.back().sigma_theta);
   CHECK(a.snapshots.back().u_r == z.snapshots.back().u_r);
-  REQUIRE_THROWS_WITH(run_fdm1d(params, short_run(), RestState{-1e-4, 0.0}), "S = -1e-04, allowed: >= 0 (compression positive)");
-  REQUIRE_THROWS_WITH(run_fdm1d(params, short_run(), RestState{0.0, -1e-4}), "p0 = -1e-04, allowed: >= 0 (compression positive)");
+  REQUIRE_THROWS_WITH(run_fdm1d(params, short_run(), RestState{-1e-4, 0.0}),
+                      "S = -1e-04, allowed: >= 0 (compression positive)");
+  REQUIRE_THROWS_WITH(run_fdm1d(params, short_run(), RestState{0.0, -1e-4}),
+                      "p0 = -1e-04, allowed: >= 0 (compression positive)");
 }
 
 TEST_CASE("Confinement raises the 1D breakdown pressure by the wall's rest hoop compression", "[fdm1d]") {

@@ -6,8 +6,8 @@
 
 #include "approx.hpp"
 #include "hm/analytic/failure_criteria.hpp"
-#include "hm/analytic/steady_borehole.hpp"
 #include "hm/analytic/physical_parameters.hpp"
+#include "hm/analytic/steady_borehole.hpp"
 #include "hm/fdm1d/section32.hpp"
 
 namespace {

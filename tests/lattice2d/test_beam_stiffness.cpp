@@ -8,8 +8,8 @@
 
 #include "approx.hpp"
 #include "hm/core/input_error.hpp"
-#include "hm/lattice2d/mechanics/beam_stiffness.hpp"
 #include "hm/lattice2d/geometry/lattice.hpp"
+#include "hm/lattice2d/mechanics/beam_stiffness.hpp"
 
 using namespace hm::lattice2d;
 

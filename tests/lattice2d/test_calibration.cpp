@@ -78,8 +78,8 @@ TEST_CASE("A random lattice is isotropic within its sampling error: C66 = (C11 -
   // shear_isotropy_error -2.2%, -0.7%, -3.4%; anisotropy <= 1.5%. The region mean carries a sampling
   // error of ~27%/sqrt(880) ~ 1% per entry, and the comparison combines three entries: 5%.
   for (std::uint64_t seed : {1, 2, 3}) {
-    const ElasticProperties p =
-        measure_elastic_properties(generate_lattice(calibration_rectangle(2500, 2.0, seed)), calibrated_beam_parameters());
+    const ElasticProperties p = measure_elastic_properties(generate_lattice(calibration_rectangle(2500, 2.0, seed)),
+                                                           calibrated_beam_parameters());
     CHECK(std::abs(p.shear_isotropy_error) < 0.05);
     CHECK(p.anisotropy < 0.05);
     // Interior (region) and boundary-reaction estimates agree: the boundary layer is thin.
@@ -154,9 +154,9 @@ TEST_CASE("Calibration inputs: defaults are valid and each bad value is rejected
                     Catch::Contains("lattice.spec.domain"));
   ElasticTestOptions tiny;
   tiny.region_fraction = 1e-6;
-  CHECK_THROWS_WITH(measure_elastic_properties(generate_lattice(calibration_rectangle(2000, 1.0, 1)),
-                                               BeamParameters{}, tiny),
-                    Catch::Contains("elastic_test.region_fraction"));
+  CHECK_THROWS_WITH(
+      measure_elastic_properties(generate_lattice(calibration_rectangle(2000, 1.0, 1)), BeamParameters{}, tiny),
+      Catch::Contains("elastic_test.region_fraction"));
 }
 
 TEST_CASE("The stored beam constants give E = 1 within 2% and the documented nu on the N = 1e4 lattice",
@@ -166,9 +166,12 @@ TEST_CASE("The stored beam constants give E = 1 within 2% and the documented nu 
   // (sd 0.0015); uniform E = 1.0000 (sd 0.0036), nu = 0.2236 (sd 0.0009). E: the calibration's 2%. nu:
   // the calibration's 0.02 from the target 0.25 for the default, and for both a regression band of three times
   // the seed scatter (0.005, 0.002). Uniform beams cannot reach 0.25 (central-force limit ~0.224).
-  struct Expected { StiffnessScaling scaling; double nu, band; };
-  for (const Expected x : {Expected{StiffnessScaling::voronoi_facet, 0.25, 0.005},
-                           Expected{StiffnessScaling::uniform, 0.2236, 0.002}}) {
+  struct Expected {
+    StiffnessScaling scaling;
+    double nu, band;
+  };
+  for (const Expected x :
+       {Expected{StiffnessScaling::voronoi_facet, 0.25, 0.005}, Expected{StiffnessScaling::uniform, 0.2236, 0.002}}) {
     INFO("stiffness_scaling = " << hm::core::name_of(x.scaling));
     double e = 0, nu = 0;
     for (std::uint64_t seed : {1, 2, 3}) {
@@ -207,7 +210,9 @@ TEST_CASE("E does not depend on the point density (N = 2.5e3 and 1e4, 3 seeds)",
     double e = 0;
     for (std::uint64_t seed : {1, 2, 3})
       e += measure_elastic_properties(generate_lattice(calibration_rectangle(n, 2.0, seed)),
-                                      calibrated_beam_parameters()).youngs_modulus / 3;
+                                      calibrated_beam_parameters())
+               .youngs_modulus /
+           3;
     return e;
   };
   CHECK(mean_e(2500) == Approx(mean_e(10000)).epsilon(0.015));

@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "hm/core/input_error.hpp"
-#include "hm/lattice2d/mechanics/calibration.hpp"
 #include "hm/lattice2d/coupled/coupled_model.hpp"
 #include "hm/lattice2d/fracture/strength.hpp"
+#include "hm/lattice2d/mechanics/calibration.hpp"
 #include "lattice2d/lattice_fixtures.hpp"
 
 using namespace hm::lattice2d;
@@ -144,7 +144,8 @@ TEST_CASE("Coupled fracture: the same seeds give the identical break sequence", 
   CoupledModel& c = *pc;
   run_steps(c, 8, 1e-4);
   bool differs = c.break_log().size() != a.break_log().size();
-  for (std::size_t k = 0; !differs && k < a.break_log().size(); ++k) differs = c.break_log()[k].beam != a.break_log()[k].beam;
+  for (std::size_t k = 0; !differs && k < a.break_log().size(); ++k)
+    differs = c.break_log()[k].beam != a.break_log()[k].beam;
   CHECK(differs);
 }
 
@@ -209,5 +210,6 @@ TEST_CASE("Coupled fracture: a step whose first break overshoots ends at that ch
   REQUIRE(again.is_ok());
   CHECK(again.iterations == taken.iterations);
   REQUIRE(retried->break_log().size() == whole->break_log().size());
-  for (std::size_t k = 0; k < whole->break_log().size(); ++k) CHECK(retried->break_log()[k].beam == whole->break_log()[k].beam);
+  for (std::size_t k = 0; k < whole->break_log().size(); ++k)
+    CHECK(retried->break_log()[k].beam == whole->break_log()[k].beam);
 }

@@ -14,7 +14,6 @@ using hm::test::make_lattice;
 
 namespace {
 
-
 // Section 3.1's point injection: Q = 0.1, b = 0.5, E/M of Table 1 at b = 0.5, free outer boundary.
 FlowParameters rudnicki_flow() {
   FlowParameters flow;
@@ -31,7 +30,8 @@ FlowParameters borehole_flow() {
   return flow;
 }
 
-CoupledModel make_model(const Lattice& lattice, CouplingOptions options, BoundarySupport outer = BoundarySupport::free) {
+CoupledModel make_model(const Lattice& lattice, CouplingOptions options,
+                        BoundarySupport outer = BoundarySupport::free) {
   BoundaryConditions bc;
   bc.outer = outer;
   return CoupledModel(lattice, BeamParameters{}, bc, MechanicsOptions{}, rudnicki_flow(), options);
@@ -63,11 +63,26 @@ TEST_CASE("Coupling options and time stepping: defaults are valid, bad values ar
   REQUIRE_NOTHROW(o.validate());
   TimeStepping t;
   REQUIRE_NOTHROW(t.validate());
-  SECTION("drained with Psi != 0") { o.split = CouplingSplit::drained; REQUIRE_THROWS_AS(o.validate(), hm::InputError); }
-  SECTION("tolerance") { o.pressure_tolerance = 0.0; REQUIRE_THROWS_AS(o.validate(), hm::InputError); }
-  SECTION("max_iterations") { o.max_iterations = 0; REQUIRE_THROWS_AS(o.validate(), hm::InputError); }
-  SECTION("dt_growth") { t.dt_growth = 0.5; REQUIRE_THROWS_AS(t.validate(), hm::InputError); }
-  SECTION("dt_initial > t_end") { t.dt_initial = 1.0; REQUIRE_THROWS_AS(t.validate(), hm::InputError); }
+  SECTION("drained with Psi != 0") {
+    o.split = CouplingSplit::drained;
+    REQUIRE_THROWS_AS(o.validate(), hm::InputError);
+  }
+  SECTION("tolerance") {
+    o.pressure_tolerance = 0.0;
+    REQUIRE_THROWS_AS(o.validate(), hm::InputError);
+  }
+  SECTION("max_iterations") {
+    o.max_iterations = 0;
+    REQUIRE_THROWS_AS(o.validate(), hm::InputError);
+  }
+  SECTION("dt_growth") {
+    t.dt_growth = 0.5;
+    REQUIRE_THROWS_AS(t.validate(), hm::InputError);
+  }
+  SECTION("dt_initial > t_end") {
+    t.dt_initial = 1.0;
+    REQUIRE_THROWS_AS(t.validate(), hm::InputError);
+  }
   SECTION("output times") {
     t.output_times = {2e-5, 1e-5};
     REQUIRE_THROWS_AS(t.validate(), hm::InputError);
@@ -106,8 +121,8 @@ TEST_CASE("The iterated undrained and drained splits converge to the same soluti
       const CoupledStepSummary sa = a.step(2e-5), sb = b.step(2e-5);
       REQUIRE(sa.status == CoupledStatus::converged);
       REQUIRE(sb.status == CoupledStatus::converged);
-      std::printf("%s boundary, step %d: iterations undrained (Psi = 1.3) %d, drained %d\n", hm::core::name_of(outer).c_str(), n + 1,
-                  sa.iterations, sb.iterations);
+      std::printf("%s boundary, step %d: iterations undrained (Psi = 1.3) %d, drained %d\n",
+                  hm::core::name_of(outer).c_str(), n + 1, sa.iterations, sb.iterations);
     }
     // Both stop at a relative change of 1e-10 per pass; the fixed points agree to a few times that
     // (the contraction factor of the slower, drained iteration amplifies the last change).
@@ -142,7 +157,7 @@ TEST_CASE("The fluid volume balance of every coupled step closes to 1e-8", "[lat
     CHECK(n_observed == run.n_steps + 1);
     CHECK(run.n_mechanics_solves == n_solves);
     CHECK(run.n_mechanics_solves >= run.total_iterations);  // one solve per pass at least
-    CHECK(run.flow_seconds == flow_seconds);                 // the same sums in the same order: exact
+    CHECK(run.flow_seconds == flow_seconds);                // the same sums in the same order: exact
     // The totals add up as well.
     const FlowTotals& t = model.flow().totals();
     CHECK(std::abs(t.injected - t.storage - t.deformation - t.outflow) <= 1e-8 * t.injected);
@@ -223,9 +238,10 @@ TEST_CASE("The pass observer sees every pass of a step, the last one being the a
   CHECK((last_p - model.pressure()).cwiseAbs().maxCoeff() == 0.0);
 }
 
-TEST_CASE("In a borehole the plain loop diverges and is reported: Aitken relaxation converges to the same kind of "
-          "fixed point as the plain loop on the disk",
-          "[lattice2d]") {
+TEST_CASE(
+    "In a borehole the plain loop diverges and is reported: Aitken relaxation converges to the same kind of "
+    "fixed point as the plain loop on the disk",
+    "[lattice2d]") {
   // The borehole node's feedback: the wall traction p_h moves the wall, b dV_h changes p_h by
   // ~ b dV_h / ((E/M) V_h), a loop gain ~2 at Table 1's E/M (measured residual ratio 1.93 per pass).
   FlowParameters flow = borehole_flow();
@@ -339,4 +355,3 @@ TEST_CASE("The linear predictor reaches the same states as the previous-state st
   CHECK(max_abs(u1 - u0) < 1e-7 * max_abs(u0));
   CHECK(linear_passes < previous_passes);
 }
-

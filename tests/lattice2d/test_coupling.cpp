@@ -8,18 +8,17 @@
 
 #include "approx.hpp"
 #include "hm/core/input_error.hpp"
-#include "hm/lattice2d/mechanics/beam_stiffness.hpp"
 #include "hm/lattice2d/coupled/coupling.hpp"
 #include "hm/lattice2d/flow/flow_network.hpp"
-#include "hm/lattice2d/mechanics/mechanics.hpp"
 #include "hm/lattice2d/linalg/spd_solver.hpp"
+#include "hm/lattice2d/mechanics/beam_stiffness.hpp"
+#include "hm/lattice2d/mechanics/mechanics.hpp"
 #include "lattice2d/lattice_fixtures.hpp"
 
 using namespace hm::lattice2d;
 using hm::test::make_lattice;
 
 namespace {
-
 
 // Net pressure force on particle i against the continuum body force -xi b V_i grad p.
 struct GradientError {
@@ -58,10 +57,22 @@ TEST_CASE("The default coupling parameters are valid and each bad value is rejec
   FlowParameters material;
   REQUIRE_NOTHROW(cp.validate());
   REQUIRE_NOTHROW(material.validate());
-  SECTION("b") { material.b = 1.5; REQUIRE_THROWS_AS(material.validate(), hm::InputError); }
-  SECTION("xi") { cp.xi = 0.0; REQUIRE_THROWS_AS(cp.validate(), hm::InputError); }
-  SECTION("psi") { cp.psi = -1.0; REQUIRE_THROWS_AS(cp.validate(), hm::InputError); }
-  SECTION("E_over_M") { material.E_over_M = 0.0; REQUIRE_THROWS_AS(material.validate(), hm::InputError); }
+  SECTION("b") {
+    material.b = 1.5;
+    REQUIRE_THROWS_AS(material.validate(), hm::InputError);
+  }
+  SECTION("xi") {
+    cp.xi = 0.0;
+    REQUIRE_THROWS_AS(cp.validate(), hm::InputError);
+  }
+  SECTION("psi") {
+    cp.psi = -1.0;
+    REQUIRE_THROWS_AS(cp.validate(), hm::InputError);
+  }
+  SECTION("E_over_M") {
+    material.E_over_M = 0.0;
+    REQUIRE_THROWS_AS(material.validate(), hm::InputError);
+  }
 }
 
 TEST_CASE("A linear pressure at the dual points gives the continuum body force -b V_i grad p on interior particles",
@@ -83,9 +94,10 @@ TEST_CASE("A linear pressure at the dual points gives the continuum body force -
   }
 }
 
-TEST_CASE("A linear pressure at the triangle centroids gives the body force on average, with a per-particle error "
-          "that does not vanish on a random lattice",
-          "[lattice2d]") {
+TEST_CASE(
+    "A linear pressure at the triangle centroids gives the body force on average, with a per-particle error "
+    "that does not vanish on a random lattice",
+    "[lattice2d]") {
   // Centroid sampling puts p_st at the mean of two centroids instead of the segment midpoint, an O(h)
   // offset, so each particle's force is off by O(h^2 |g|), the size of the force itself: O(1) relative
   // per particle, cancelling over many particles. Measured (seed 1, g = (1, 0)):
@@ -207,7 +219,9 @@ TEST_CASE("Springs relaxed at the drained solution leave it unchanged: (K + K_ps
     for (int e = 0; e < lattice.n_beams() && cut.size() < 5; ++e)
       if (lattice.beam_boundary[static_cast<std::size_t>(e)] == BoundaryTag::interior &&
           0.5 * (lattice.points.col(lattice.beams[static_cast<std::size_t>(e)][0]) +
-                 lattice.points.col(lattice.beams[static_cast<std::size_t>(e)][1])).norm() < 0.1)
+                 lattice.points.col(lattice.beams[static_cast<std::size_t>(e)][1]))
+                      .norm() <
+              0.1)
         cut.push_back(e);
     REQUIRE(cut.size() == 5);
     BeamMechanics dropping(lattice, BeamParameters{}, BoundaryConditions{});
@@ -259,11 +273,13 @@ TEST_CASE("Timing: the Eq. 20 springs by refactorisation against a rank-n_beams 
     const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
     const Eigen::Vector2d n = lattice.direction.col(e);
     const double s = std::sqrt(k[e]);
-    const std::array<std::pair<int, double>, 4> entries = {
-        std::pair{dof_index(i, 0), -s * n.x()}, {dof_index(i, 1), -s * n.y()}, {dof_index(j, 0), s * n.x()},
-        {dof_index(j, 1), s * n.y()}};
+    const std::array<std::pair<int, double>, 4> entries = {std::pair{dof_index(i, 0), -s * n.x()},
+                                                           {dof_index(i, 1), -s * n.y()},
+                                                           {dof_index(j, 0), s * n.x()},
+                                                           {dof_index(j, 1), s * n.y()}};
     for (const auto& [dof, value] : entries)
-      if (free_index[static_cast<std::size_t>(dof)] >= 0) w.emplace_back(free_index[static_cast<std::size_t>(dof)], e, value);
+      if (free_index[static_cast<std::size_t>(dof)] >= 0)
+        w.emplace_back(free_index[static_cast<std::size_t>(dof)], e, value);
   }
   SpdSolver::Matrix W(n_free, lattice.n_beams());
   W.setFromTriplets(w.begin(), w.end());
@@ -370,7 +386,8 @@ TEST_CASE("The borehole's volume gradient is the wall traction per unit pressure
   }
   for (const double eps : {1e-4, 1e-5}) {
     Eigen::Matrix2Xd x = lattice.points;
-    for (int i = 0; i < lattice.n_particles(); ++i) x.col(i) += eps * Eigen::Vector2d(du[dof_index(i, 0)], du[dof_index(i, 1)]);
+    for (int i = 0; i < lattice.n_particles(); ++i)
+      x.col(i) += eps * Eigen::Vector2d(du[dof_index(i, 0)], du[dof_index(i, 1)]);
     flow.update_geometry(build_dual_graph(lattice, x), x);
     const double dV = flow.borehole_volume() - V0;
     // The polygon's area is quadratic in the positions: the error is O(eps^2 |du|^2), here < 1e-3
@@ -396,8 +413,8 @@ TEST_CASE("The borehole's undrained spring is beta_h / s_h g g^T, and refused wh
   const RankOneStiffness spring = borehole_spring(lattice, 0.25, 0.5);
   CHECK(spring.stiffness() == 2.0);
   CHECK(spring.vector() == borehole_volume_gradient(lattice));
-  REQUIRE_THROWS_WITH(borehole_spring(lattice, 0.0, 1.0), Catch::Contains("coupling.borehole_spring") &&
-                                                              Catch::Contains("borehole_storage"));
+  REQUIRE_THROWS_WITH(borehole_spring(lattice, 0.0, 1.0),
+                      Catch::Contains("coupling.borehole_spring") && Catch::Contains("borehole_storage"));
   REQUIRE_THROWS_AS(borehole_spring(lattice, 1.0, 0.0), hm::InputError);
 }
 

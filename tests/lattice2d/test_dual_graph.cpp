@@ -73,7 +73,8 @@ TEST_CASE("Dual lengths and conductances are strictly positive and bounded", "[l
           if (lattice.is_boundary_beam(e)) {
             // d_su = L/2 cot(a), the opposite angle a bounded by the boundary spacing (lattice_fixtures.hpp):
             // 0.070 L at the default spacing factor 1.3; 0.9 of it leaves margin. The floor never acts.
-            CHECK(dual.dual_length[e] >= 0.9 * hm::test::min_boundary_dual_ratio(lattice.spec.boundary_spacing_factor) * length);
+            CHECK(dual.dual_length[e] >=
+                  0.9 * hm::test::min_boundary_dual_ratio(lattice.spec.boundary_spacing_factor) * length);
             CHECK_FALSE(dual.is_floored[static_cast<std::size_t>(e)]);
           }
         }
@@ -95,7 +96,8 @@ TEST_CASE("Voronoi cells of interior particles close: a uniform pressure gives z
   }
   double worst = 0.0;
   for (int i = 0; i < lattice.n_particles(); ++i)
-    if (lattice.boundary[static_cast<std::size_t>(i)] == BoundaryTag::interior) worst = std::max(worst, force.col(i).norm());
+    if (lattice.boundary[static_cast<std::size_t>(i)] == BoundaryTag::interior)
+      worst = std::max(worst, force.col(i).norm());
   // Round-off: a handful of O(1e-2) terms computed from O(1) coordinates, ~1e-16 each.
   CHECK(worst < 1e-14);
 }

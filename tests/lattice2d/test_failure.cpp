@@ -37,7 +37,6 @@ constexpr double T = 2e-4, C = 3.33e-3;  // Table 1 over E
 // Eq. 11 with mu_i = 0.9: K = [(1 + 0.81)^(1/2) + 0.9]^2 = 5.0417.
 const double K09 = std::pow(std::sqrt(1.81) + 0.9, 2);
 
-
 }  // namespace
 
 TEST_CASE("Break selection picks the beam most over its threshold, with its mode", "[lattice2d]") {
@@ -45,8 +44,8 @@ TEST_CASE("Break selection picks the beam most over its threshold, with its mode
   // Beam 2: sigma_1 = 0.5 T_u, sigma_3 = K sigma_1 - 1.3 C_u -> shear, ratio 1.3 (tensile 0.5).
   // Beam 3: confined, sigma_1 = -0.05 C_u, sigma_3 = -1.2 C_u: |sigma_3| > C_u but Eq. 11 gives
   //         sigma_CC = (1.2 - 0.05 K) C_u = 0.948 C_u, no failure (the confinement of Fig. 3).
-  const BeamStress s = stresses({{0.5 * T, 0.0}, {1.5 * T, 0.0}, {0.5 * T, K09 * 0.5 * T - 1.3 * C},
-                                 {-0.05 * C, -1.2 * C}});
+  const BeamStress s =
+      stresses({{0.5 * T, 0.0}, {1.5 * T, 0.0}, {0.5 * T, K09 * 0.5 * T - 1.3 * C}, {-0.05 * C, -1.2 * C}});
   const BeamStrengths strengths = constant_strengths(4, T, C);
   const FailureField field = evaluate_failure(s, strengths);
   CHECK(field.mode[0] == FailureMode::none);
@@ -91,8 +90,7 @@ TEST_CASE("Break selection picks the beam most over its threshold, with its mode
   }
 }
 
-TEST_CASE("Exactly at the threshold a beam fails, ties go to the lowest index, none when all are safe",
-          "[lattice2d]") {
+TEST_CASE("Exactly at the threshold a beam fails, ties go to the lowest index, none when all are safe", "[lattice2d]") {
   const BeamStrengths strengths = constant_strengths(5, T, C);
   // Uniaxial compression at C_u (ratio 1 exactly: sigma_CC = -sigma_3) and two equal tensile ratios 1.2.
   const BeamStress s = stresses({{0.0, -C}, {0.3 * T, 0.0}, {1.2 * T, 0.0}, {0.0, 0.0}, {1.2 * T, 0.0}});
@@ -100,11 +98,11 @@ TEST_CASE("Exactly at the threshold a beam fails, ties go to the lowest index, n
   CHECK(pick.beam == 2);
   CHECK(evaluate_failure(s, strengths).mode[0] == FailureMode::shear);
   CHECK(evaluate_failure(s, strengths).ratio[0] == hm::test::roundoff(1.0));
-  const BreakCandidate only_threshold = select_beam_to_break(stresses({{0.0, -C}, {0.1 * T, 0.0}}),
-                                                             constant_strengths(2, T, C));
+  const BreakCandidate only_threshold =
+      select_beam_to_break(stresses({{0.0, -C}, {0.1 * T, 0.0}}), constant_strengths(2, T, C));
   CHECK(only_threshold.beam == 0);
-  const BreakCandidate none = select_beam_to_break(stresses({{0.9 * T, 0.0}, {0.2 * T, -0.1 * C}}),
-                                                   constant_strengths(2, T, C));
+  const BreakCandidate none =
+      select_beam_to_break(stresses({{0.9 * T, 0.0}, {0.2 * T, -0.1 * C}}), constant_strengths(2, T, C));
   CHECK_FALSE(none.found());
   CHECK(none.beam == -1);
   CHECK(none.mode == FailureMode::none);
@@ -178,7 +176,8 @@ TEST_CASE("Break events are logged with position and written as CSV", "[lattice2
     std::ofstream(dir / "bad.csv") << "beam,mode\n";
     CHECK_THROWS_WITH(read_break_log(dir / "bad.csv"), Catch::Contains("bad.csv:1: header"));
     std::ofstream(dir / "bad.csv") << lines[0] << "\n" << lines[1].substr(0, lines[1].rfind(',')) << ",bent\n";
-    CHECK_THROWS_WITH(read_break_log(dir / "bad.csv"), Catch::Contains("bad.csv:2: mode = 'bent', allowed: tensile, shear"));
+    CHECK_THROWS_WITH(read_break_log(dir / "bad.csv"),
+                      Catch::Contains("bad.csv:2: mode = 'bent', allowed: tensile, shear"));
     CHECK_THROWS_WITH(read_break_log(dir / "none.csv"), Catch::Contains("none.csv"));
   }
 

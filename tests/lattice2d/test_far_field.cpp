@@ -94,8 +94,9 @@ TEST_CASE("Bad outer stresses are rejected naming the field", "[lattice2d]") {
   BoundaryConditions bc;
   SECTION("not symmetric") {
     bc.outer_stress << -1e-4, 1e-5, 0.0, -1e-4;
-    REQUIRE_THROWS_WITH(bc.validate(l), "boundary_conditions.outer_stress(0,1) = 1e-05, allowed: equal to "
-                                        "outer_stress(1,0) = 0");
+    REQUIRE_THROWS_WITH(bc.validate(l),
+                        "boundary_conditions.outer_stress(0,1) = 1e-05, allowed: equal to "
+                        "outer_stress(1,0) = 0");
   }
   SECTION("not finite") {
     bc.outer_stress(1, 1) = std::nan("");
@@ -104,8 +105,9 @@ TEST_CASE("Bad outer stresses are rejected naming the field", "[lattice2d]") {
   SECTION("on a held boundary") {
     bc.outer = BoundarySupport::fixed;
     bc.outer_stress(0, 0) = -1e-4;
-    REQUIRE_THROWS_WITH(bc.validate(l), "boundary_conditions.outer_stress = (-1e-04, 0, 0), allowed: 0 unless outer "
-                                        "= 'free' (a held boundary takes no traction)");
+    REQUIRE_THROWS_WITH(bc.validate(l),
+                        "boundary_conditions.outer_stress = (-1e-04, 0, 0), allowed: 0 unless outer "
+                        "= 'free' (a held boundary takes no traction)");
   }
   SECTION("far field: S_h > S_H, negative p0, b outside [0, 1]") {
     REQUIRE_THROWS_AS(add_far_field_loads({1e-4, 2e-4, 0.0}, 0.0, 0.5, DomainShape::annulus, bc), hm::InputError);

@@ -45,8 +45,9 @@ BeamForces element_matrix_forces(const Lattice& lattice, const BeamParameters& p
                                  const std::vector<BeamState>& states, const Eigen::VectorXd& u) {
   BeamForces out{Eigen::Matrix2Xd(2, lattice.n_beams()), Eigen::Matrix2Xd(2, lattice.n_beams())};
   for (int e = 0; e < lattice.n_beams(); ++e) {
-    const Matrix6d K = beam_element_stiffness(lattice.length[e], lattice.angle[e],
-                                              beam_parameters_for(lattice, parameters, e), states[static_cast<std::size_t>(e)]);
+    const Matrix6d K =
+        beam_element_stiffness(lattice.length[e], lattice.angle[e], beam_parameters_for(lattice, parameters, e),
+                               states[static_cast<std::size_t>(e)]);
     const Vector6d f = -K * element_displacements(lattice, e, u);
     out.force.col(e) = f.head<2>();
     out.moment.col(e) << f[2], f[5];
@@ -151,17 +152,20 @@ TEST_CASE("The break loop's failure scan equals the public stress and failure pa
     judged.sigma_3 *= scale;
     const BreakCandidate expected = select_beam_to_break(judged, strengths, m.states());
     const double stress_scale = particle.stress.cwiseAbs().maxCoeff();
-    stress_error = std::max(stress_error, (scan.particle_stress().stress - particle.stress).cwiseAbs().maxCoeff() / stress_scale);
+    stress_error =
+        std::max(stress_error, (scan.particle_stress().stress - particle.stress).cwiseAbs().maxCoeff() / stress_scale);
     // current_beam_stress is the same path as the scan.
     const BeamStress current = current_beam_stress(m, dual, crack_tip, scale);
-    stress_error = std::max(stress_error, (current.stress - judged.stress).cwiseAbs().maxCoeff() / (scale * stress_scale));
+    stress_error =
+        std::max(stress_error, (current.stress - judged.stress).cwiseAbs().maxCoeff() / (scale * stress_scale));
     CHECK((current.crack_tip_factor - judged.crack_tip_factor).cwiseAbs().maxCoeff() == 0.0);
     const double max_reference_ratio = select_beam_to_break(at_reference, strengths, m.states()).max_ratio;
     ratio_error = std::max({ratio_error, std::abs(fast.judged.max_ratio / expected.max_ratio - 1.0),
                             std::abs(fast.max_reference_ratio / max_reference_ratio - 1.0)});
     // The mechanics' reactions use the same internal force: K u - f with the assembled K of the states.
     const Eigen::VectorXd Ku = assemble_stiffness(lattice, parameters, m.states()) * m.displacement();
-    equilibrium_error = std::max(equilibrium_error, (m.reactions() + m.loads() - Ku).cwiseAbs().maxCoeff() / Ku.cwiseAbs().maxCoeff());
+    equilibrium_error =
+        std::max(equilibrium_error, (m.reactions() + m.loads() - Ku).cwiseAbs().maxCoeff() / Ku.cwiseAbs().maxCoeff());
 
     REQUIRE(fast.judged.beam == expected.beam);
     if (!expected.found()) break;

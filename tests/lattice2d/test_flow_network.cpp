@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "approx.hpp"
-#include "hm/core/input_error.hpp"
 #include "hm/analytic/rudnicki.hpp"
 #include "hm/analytic/steady_borehole.hpp"
+#include "hm/core/input_error.hpp"
 #include "hm/lattice2d/flow/flow_network.hpp"
 #include "hm/lattice2d/io/radial_average.hpp"
 #include "lattice2d/lattice_fixtures.hpp"
@@ -22,7 +22,6 @@ using hm::test::ring_area;
 namespace {
 
 constexpr double pi = std::numbers::pi;
-
 
 DualGraph dual_with_floor(const Lattice& lattice, double min_dual_ratio) {
   DualGraphOptions options;
@@ -193,10 +192,11 @@ TEST_CASE("The annulus has one unknown per triangle plus the borehole, whose pol
   // The wall particles are evenly spaced on r = R_i: the hole polygon is regular with n_wall sides.
   const auto n_wall = std::count(lattice.boundary.begin(), lattice.boundary.end(), BoundaryTag::inner);
   const double R_i = lattice.spec.inner_radius;
-  CHECK(network.borehole_volume() ==
-        hm::test::roundoff(0.5 * static_cast<double>(n_wall) * R_i * R_i * std::sin(2.0 * pi / static_cast<double>(n_wall))));
+  CHECK(network.borehole_volume() == hm::test::roundoff(0.5 * static_cast<double>(n_wall) * R_i * R_i *
+                                                        std::sin(2.0 * pi / static_cast<double>(n_wall))));
   // Triangles plus hole = outer polygon (round-off of a sum of ~5e3 terms).
-  CHECK(dual.triangle_area.sum() + network.borehole_volume() == hm::test::roundoff(ring_area(lattice, BoundaryTag::outer)));
+  CHECK(dual.triangle_area.sum() + network.borehole_volume() ==
+        hm::test::roundoff(ring_area(lattice, BoundaryTag::outer)));
 }
 
 TEST_CASE("The point source goes into the triangle that contains the source point", "[lattice2d]") {
@@ -232,7 +232,8 @@ TEST_CASE("A uniform pressure drives no flow between triangles, only out through
   std::vector<bool> touches_surface(static_cast<std::size_t>(network.n_unknowns()), false);
   double surface_conductance = 0.0;
   for (int e = 0; e < lattice.n_beams(); ++e) {
-    const bool outer = lattice.is_boundary_beam(e) && lattice.beam_boundary[static_cast<std::size_t>(e)] == BoundaryTag::outer;
+    const bool outer =
+        lattice.is_boundary_beam(e) && lattice.beam_boundary[static_cast<std::size_t>(e)] == BoundaryTag::outer;
     if (outer) {
       touches_surface[static_cast<std::size_t>(lattice.beam_triangles[static_cast<std::size_t>(e)][0])] = true;
       surface_conductance += dual.conductance[e];
@@ -270,8 +271,8 @@ TEST_CASE("Every step conserves fluid volume: injected = stored + deformation + 
     REQUIRE(summary.is_ok());
     worst = std::max(worst, summary.balance_error);
   }
-  INFO(hm::core::name_of(shape) << ", borehole storage " << hm::core::name_of(storage) << ", deformation " << hm::core::name_of(deformation)
-                       << ": worst balance " << worst);
+  INFO(hm::core::name_of(shape) << ", borehole storage " << hm::core::name_of(storage) << ", deformation "
+                                << hm::core::name_of(deformation) << ": worst balance " << worst);
   // Measured <= 1e-13: the scheme is conservative and the direct solve's residual is round-off.
   CHECK(worst <= 1e-10);
   const FlowTotals& totals = network.totals();
@@ -319,7 +320,8 @@ TEST_CASE("update_geometry follows a deformation: a dilation scales V_s and V_h,
   const FlowStepSummary summary = network.step(1e-4, dV);
   REQUIRE(summary.is_ok());
   CHECK(network.pressure().maxCoeff() < 0.0);
-  CHECK(summary.deformation == hm::test::roundoff(parameters.b * (stretch * stretch - 1.0) * (dual.triangle_area.sum() + V_h)));
+  CHECK(summary.deformation ==
+        hm::test::roundoff(parameters.b * (stretch * stretch - 1.0) * (dual.triangle_area.sum() + V_h)));
   CHECK(summary.balance_error <= 1e-10);  // round-off (measured below 1e-16)
   // A/d is scale-invariant: the same pressure difference drives the same flow rate.
   FlowNetwork undeformed(lattice, dual, parameters);
@@ -366,7 +368,7 @@ TEST_CASE("iota > 1 carries more flow along broken beams and lowers the borehole
     const double p_h = steady.pressure[network.borehole_index()];
     INFO("iota = " << iota << ": flow along the crack " << crack_flow << ", p_h " << p_h);
     CHECK(crack_flow > previous_flow);
-    CHECK(p_h < previous_p_h);  // Rayleigh monotonicity: more conductance, lower driving pressure
+    CHECK(p_h < previous_p_h);             // Rayleigh monotonicity: more conductance, lower driving pressure
     CHECK(steady.balance_error <= 1e-12);  // round-off
     previous_flow = crack_flow;
     previous_p_h = p_h;
@@ -439,8 +441,8 @@ TEST_CASE("Flow parameters refuse a transmissivity that is negative or not finit
 // --- fractures: the cubic law ------------------------------------------------------------------------
 
 // The through crack of crack_borehole_pressure with the cubic law, every crack beam opened by `opening`.
-FlowSteadyState cubic_crack_steady_state(const Lattice& lattice, const DualGraph& dual, double opening,
-                                         double residual, double permeability) {
+FlowSteadyState cubic_crack_steady_state(const Lattice& lattice, const DualGraph& dual, double opening, double residual,
+                                         double permeability) {
   FlowParameters parameters;
   parameters.fracture_flow = {FractureFlow::cubic, 0.0, permeability, residual};
   FlowNetwork network(lattice, dual, parameters);
@@ -582,8 +584,8 @@ TEST_CASE("The borehole's storage is E/M V_h (Eq. 16) or the water-filled hole's
     REQUIRE(network.step().is_ok());
     // In a step this short the injected Q dt stays in the hole: what leaves through the wall is about
     // dt G / s_h of it (G ~ 1e2, the wall's summed conductance; s_h ~ 0.05-0.3), < 1e-6.
-    const double s_h = (storage == BoreholeStorage::fluid ? parameters.E_over_Kw : parameters.E_over_M) *
-                       network.borehole_volume();
+    const double s_h =
+        (storage == BoreholeStorage::fluid ? parameters.E_over_Kw : parameters.E_over_M) * network.borehole_volume();
     CHECK(network.borehole_pressure() * s_h == Approx(parameters.Q * parameters.time_step).epsilon(1e-5));
   }
   // Table 1 at b = 0.5: the hole's water stores about 6 times what Eq. 16 gives it.
@@ -719,7 +721,8 @@ TEST_CASE("crack_coupling = full charges a crack's triangles with their whole ch
     const FlowStepSummary s = network.step(dV);
     REQUIRE(s.is_ok());
     // b dV everywhere; with full, the broken beam's two triangles take all of theirs.
-    const double expected = coupling == CrackCoupling::full ? delta * (parameters.b * (n_t - 2) + 2) : delta * parameters.b * n_t;
+    const double expected =
+        coupling == CrackCoupling::full ? delta * (parameters.b * (n_t - 2) + 2) : delta * parameters.b * n_t;
     CHECK(s.deformation == Approx(expected).epsilon(1e-12));  // a sum of n_t terms
     CHECK(s.balance_error < 1e-12);
   }

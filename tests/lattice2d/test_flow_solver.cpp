@@ -23,8 +23,8 @@ namespace {
 
 // The dense matrix of FlowNetwork's doc comment: (storage_scale E/M) V on the diagonal (the
 // borehole's only with biot-modulus storage), dt iota_e A/d per connection.
-Eigen::MatrixXd dense_flow_matrix(const Lattice& lattice, const DualGraph& dual, const FlowNetwork& network,
-                                  double dt, double storage_scale) {
+Eigen::MatrixXd dense_flow_matrix(const Lattice& lattice, const DualGraph& dual, const FlowNetwork& network, double dt,
+                                  double storage_scale) {
   const FlowParameters& parameters = network.parameters();
   const int n = network.n_unknowns(), h = network.borehole_index();
   Eigen::MatrixXd a = Eigen::MatrixXd::Zero(n, n);
@@ -75,7 +75,8 @@ void crack_and_deform(const Lattice& lattice, FlowNetwork& network, DualGraph& d
                       double amplitude) {
   Eigen::VectorXd weights = Eigen::VectorXd::Zero(lattice.n_beams());
   for (Eigen::Index e = 0; e < weights.size(); e += static_cast<Eigen::Index>(every)) weights[e] = 1.0;
-  for (Eigen::Index e = 1; e < weights.size(); e += static_cast<Eigen::Index>(3 * every)) weights[e] = 0.3 + 0.002 * (e % 300);
+  for (Eigen::Index e = 1; e < weights.size(); e += static_cast<Eigen::Index>(3 * every))
+    weights[e] = 0.3 + 0.002 * (e % 300);
   network.set_crack_weights(weights);
   std::mt19937_64 rng(3);
   std::uniform_real_distribution<double> shift(-amplitude, amplitude);
@@ -181,7 +182,7 @@ TEST_CASE("reuse_factorisation: a solve slower than refresh_after_refinements re
   const FlowStepSummary refined = network.step(dt);
   REQUIRE(refined.is_ok());
   CHECK_FALSE(refined.factorised);
-  REQUIRE(refined.refinements >= 1);  // > 0 = refresh_after_refinements
+  REQUIRE(refined.refinements >= 1);                   // > 0 = refresh_after_refinements
   crack_and_deform(lattice, network, dual, 50, 2e-5);  // the geometry moves again
   const Eigen::VectorXd reference = dense_step(lattice, dual, network, dt, Eigen::VectorXd::Zero(network.n_unknowns()));
   const FlowStepSummary refreshed = network.step(dt);

@@ -92,7 +92,8 @@ TEST_CASE("Load stepping breaks beams in load order and never heals one", "[latt
   for (const auto& ev : r.breaks) tip_seen = tip_seen || ev.crack_tip_factor > 1.0;
   CHECK(tip_seen);
   // Every logged beam is broken at the end.
-  for (const auto& ev : r.breaks) CHECK(run.states_per_step.back()[static_cast<std::size_t>(ev.beam)] != BeamState::intact);
+  for (const auto& ev : r.breaks)
+    CHECK(run.states_per_step.back()[static_cast<std::size_t>(ev.beam)] != BeamState::intact);
 }
 
 TEST_CASE("A pulled square fails completely: the crack crosses it and the load drops to zero", "[lattice2d]") {
@@ -108,14 +109,15 @@ TEST_CASE("A pulled square fails completely: the crack crosses it and the load d
   options.load_increment = 2e-5;
   options.max_load = 1e-2;
   double peak = 0, last = 0;
-  const LoadingResult r = run_load_stepping(mechanics, dual, strengths, options, [&](const LoadStep& s, const BeamMechanics& m) {
-    const Eigen::VectorXd reaction = m.reactions();
-    double force = 0;
-    for (int p : top) force += reaction[3 * p + 1];
-    last = s.load * force;
-    peak = std::max(peak, last);
-    return !(s.n_breaks_total > 0 && last < 1e-3 * peak);
-  });
+  const LoadingResult r =
+      run_load_stepping(mechanics, dual, strengths, options, [&](const LoadStep& s, const BeamMechanics& m) {
+        const Eigen::VectorXd reaction = m.reactions();
+        double force = 0;
+        for (int p : top) force += reaction[3 * p + 1];
+        last = s.load * force;
+        peak = std::max(peak, last);
+        return !(s.n_breaks_total > 0 && last < 1e-3 * peak);
+      });
   INFO(r.message);
   REQUIRE(r.status == LoadingStatus::stopped);  // by the observer, not a cap or a failed solve
   CHECK(peak > 0);
@@ -366,7 +368,9 @@ TEST_CASE("Fracture inputs are rejected with the field named", "[lattice2d]") {
     const BeamStrengths good = draw_beam_strengths({}, lattice.n_beams()), short_one = draw_beam_strengths({}, 3);
     CHECK(contains(message([&] { break_until_stable(m, dual, good, {}, 0.0, log, -1.0); }), "stress_scale = -1"));
     CHECK(contains(message([&] { break_until_stable(m, dual, short_one, {}, 0.0, log, 1.0); }), "strengths"));
-    CHECK(contains(message([&] { crack_face_forces(lattice, dual, {0, lattice.n_beams()}, 1.0); }),
+    CHECK(contains(message([&] {
+                     crack_face_forces(lattice, dual, {0, lattice.n_beams()}, 1.0);
+                   }),
                    "crack_beams[1] = " + std::to_string(lattice.n_beams())));
     CHECK(contains(message([&] { crack_face_forces(lattice, dual, {0}, INFINITY); }), "pressure = "));
     CHECK(contains(message([&] { crack_opening(lattice, m.displacement(), {-1}); }), "beams[0] = -1"));

@@ -31,7 +31,9 @@ const Lattice& annulus() {
 
 double mean_beam(const Lattice& lattice) { return lattice.length.mean(); }
 
-Eigen::Vector2d polar(double r, double deg) { return r * Eigen::Vector2d(std::cos(deg * pi / 180), std::sin(deg * pi / 180)); }
+Eigen::Vector2d polar(double r, double deg) {
+  return r * Eigen::Vector2d(std::cos(deg * pi / 180), std::sin(deg * pi / 180));
+}
 
 // Breaks the beams crossing the segment a-b. A segment through a particle would leave a gap in the
 // crack (beams_crossing_segment needs a proper crossing), so the ray must clear every particle.
@@ -75,7 +77,6 @@ std::vector<bool> four_cracks(const Lattice& lattice) {
   return broken;
 }
 
-
 }  // namespace
 
 TEST_CASE("Four radial cracks through the lattice are four radial fractures reaching the outer boundary",
@@ -104,7 +105,7 @@ TEST_CASE("Four radial cracks through the lattice are four radial fractures reac
     CHECK(f.kind == FractureKind::radial);
     CHECK(f.connected_to_borehole);
     CHECK(f.reaches_outer);
-    CHECK(f.r_min < R_i);      // the broken wall chord's midpoint lies inside the wall circle
+    CHECK(f.r_min < R_i);  // the broken wall chord's midpoint lies inside the wall circle
     CHECK(f.r_min > R_i - L);
     CHECK(f.r_max > 1.0 - L);  // the broken outer chord
     CHECK(f.r_max < 1.0);
@@ -230,7 +231,8 @@ TEST_CASE("Two cracks from one wall point are one fracture with two arms away fr
   CHECK(count_crossings(lattice, broken, 1.5, three_beams) == 0);  // outside the domain
 }
 
-TEST_CASE("The fixed gap counts arms by their distance in R, whatever the beam length", "[lattice2d][fracture_statistics]") {
+TEST_CASE("The fixed gap counts arms by their distance in R, whatever the beam length",
+          "[lattice2d][fracture_statistics]") {
   // Two straight radial cracks from r = 0.3 out to the surface, 6 degrees apart (off the
   // boundary particles' angles): 0.083 apart along
   // the arm circle r = 0.79.

@@ -15,7 +15,6 @@ using hm::test::spec_of;
 
 namespace {
 
-
 // The message of the hm::InputError thrown by `f`, or "" if none.
 template <class F>
 std::string input_error_of(F f) {
@@ -61,7 +60,8 @@ TEST_CASE("Bad lattice specs are rejected naming the field", "[lattice2d]") {
     LatticeSpec spec;
     spec.bridson_attempts = 1;
     CHECK_THAT(input_error_of([&] { spec.validate(); }), Catch::Contains("bridson_attempts = 1"));
-  }}
+  }
+}
 
 TEST_CASE("The same seed gives a bitwise identical lattice, another seed a different one", "[lattice2d]") {
   for (auto shape : {DomainShape::disk, DomainShape::annulus, DomainShape::rectangle}) {
@@ -145,9 +145,9 @@ TEST_CASE("The triangulation is Delaunay and every beam has one or two triangles
       const Eigen::Vector2d a = x.col(t[0]), u = x.col(t[1]) - a, v = x.col(t[2]) - a;
       const double cross = u.x() * v.y() - u.y() * v.x();
       REQUIRE(cross > 0.0);  // counter-clockwise, non-degenerate
-      const Eigen::Vector2d c =
-          a + Eigen::Vector2d(v.y() * u.squaredNorm() - u.y() * v.squaredNorm(),
-                              u.x() * v.squaredNorm() - v.x() * u.squaredNorm()) / (2.0 * cross);
+      const Eigen::Vector2d c = a + Eigen::Vector2d(v.y() * u.squaredNorm() - u.y() * v.squaredNorm(),
+                                                    u.x() * v.squaredNorm() - v.x() * u.squaredNorm()) /
+                                        (2.0 * cross);
       const double rr = (c - a).squaredNorm();
       for (int p = 0; p < lattice.n_particles(); ++p)
         // 1e-9 relative: round-off of the circumcentre (well conditioned, angles > 20 deg) with a wide

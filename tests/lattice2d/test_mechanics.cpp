@@ -63,7 +63,8 @@ TEST_CASE("Mechanics inputs: defaults valid, bad boundary conditions rejected na
   REQUIRE_NOTHROW(MechanicsOptions{}.validate());
   BoundaryConditions bc;
   bc.prescribed.push_back({l.n_particles(), 0, 0.0});
-  CHECK_THROWS_WITH(bc.validate(l), Catch::Contains("boundary_conditions.prescribed[0].particle = " + std::to_string(l.n_particles())));
+  CHECK_THROWS_WITH(bc.validate(l),
+                    Catch::Contains("boundary_conditions.prescribed[0].particle = " + std::to_string(l.n_particles())));
   bc.prescribed = {{0, 3, 0.0}};
   CHECK_THROWS_WITH(bc.validate(l), Catch::Contains("prescribed[0].component = 3"));
   bc.prescribed = {{0, 1, NAN}};
@@ -73,7 +74,8 @@ TEST_CASE("Mechanics inputs: defaults valid, bad boundary conditions rejected na
   CHECK_THROWS_WITH(bc.validate(l), Catch::Contains("boundary_conditions.inner_pressure = inf"));
   bc = BoundaryConditions{};
   bc.inner_pressure = 0.1;
-  CHECK_THROWS_WITH(bc.validate(rectangle(600)), Catch::Contains("inner_pressure = 0.1, allowed: 0 unless domain = annulus"));
+  CHECK_THROWS_WITH(bc.validate(rectangle(600)),
+                    Catch::Contains("inner_pressure = 0.1, allowed: 0 unless domain = annulus"));
   bc = BoundaryConditions{};
   bc.prescribe_boundary_strain = true;
   bc.outer = BoundarySupport::fixed;
@@ -98,7 +100,8 @@ TEST_CASE("Rigid-body motions carry no force", "[lattice2d]") {
   const std::vector<BeamState> intact(static_cast<std::size_t>(l.n_beams()), BeamState::intact);
   SECTION("forces of a rigid displacement field") {
     Eigen::VectorXd u(3 * l.n_particles());
-    for (int p = 0; p < l.n_particles(); ++p) u.segment<3>(3 * p) << 0.3 - 0.01 * l.points(1, p), -0.2 + 0.01 * l.points(0, p), 0.01;
+    for (int p = 0; p < l.n_particles(); ++p)
+      u.segment<3>(3 * p) << 0.3 - 0.01 * l.points(1, p), -0.2 + 0.01 * l.points(0, p), 0.01;
     // round-off: u = O(0.3), stiffness O(1); cancellation of O(1) terms
     CHECK(max_abs_force(connection_forces(l, BeamParameters{}, intact, u)) < 1e-14);
   }
@@ -113,7 +116,8 @@ TEST_CASE("Rigid-body motions carry no force", "[lattice2d]") {
     const MechanicsSummary s = m.solve();
     REQUIRE(s.is_converged());
     CHECK(max_abs_force(m.beam_forces()) < 1e-15);  // round-off of 1e-3 displacements
-    for (int p = 0; p < l.n_particles(); ++p) CHECK(m.displacement()[3 * p + 2] == Approx(2e-3).epsilon(1e-9));  // round-off x cond
+    for (int p = 0; p < l.n_particles(); ++p)
+      CHECK(m.displacement()[3 * p + 2] == Approx(2e-3).epsilon(1e-9));  // round-off x cond
   }
 }
 
@@ -173,7 +177,8 @@ TEST_CASE("Pressure on the borehole wall moves the wall radially outward", "[lat
   }
 }
 
-TEST_CASE("A broken beam pushed together is a compression-only contact: pulled apart it carries nothing", "[lattice2d]") {
+TEST_CASE("A broken beam pushed together is a compression-only contact: pulled apart it carries nothing",
+          "[lattice2d]") {
   const Lattice l = rectangle();
   BoundaryConditions bc;
   bc.outer_pressure = 1e-3;  // pure traction, compression (pinned automatically)
@@ -244,8 +249,8 @@ TEST_CASE("Fifty breaks with factor downdates agree with PCG on the same broken 
   REQUIRE(sb.is_converged());
   CHECK(a.states() == b.states());
   const double diff = (a.displacement() - b.displacement()).norm() / a.displacement().norm();
-  std::cout << "[mechanics] 50 breaks: |u_cholmod - u_pcg|/|u| = " << diff << ", detached "
-            << a.n_detached_particles() << ", factorisations " << a.solver().report().n_factorizations << "\n";
+  std::cout << "[mechanics] 50 breaks: |u_cholmod - u_pcg|/|u| = " << diff << ", detached " << a.n_detached_particles()
+            << ", factorisations " << a.solver().report().n_factorizations << "\n";
   // Error bound cond * PCG residual: cond ~ 2e4 at N = 2000 (measured in test_spd_solver), tolerance 1e-12.
   CHECK(diff < 1e-7);
 }
@@ -282,7 +287,8 @@ TEST_CASE("A particle or cluster that loses its anchoring is frozen rigidly, not
     int broken = 0;
     for (int e = 0; e < l.n_beams() && broken < 5; e += 97) {
       const auto [i, j] = l.beams[static_cast<std::size_t>(e)];
-      if (i == p || j == p || l.boundary[i] != BoundaryTag::interior || l.boundary[j] != BoundaryTag::interior) continue;
+      if (i == p || j == p || l.boundary[i] != BoundaryTag::interior || l.boundary[j] != BoundaryTag::interior)
+        continue;
       m.break_beam(e);
       ++broken;
       REQUIRE(m.solve().is_converged());  // the forward solution exists again before the next break
@@ -308,7 +314,9 @@ TEST_CASE("A particle or cluster that loses its anchoring is frozen rigidly, not
   SECTION("a cluster: the particle's neighbours with it, cut off by breaking the beams around them") {
     std::vector<char> in(static_cast<std::size_t>(l.n_particles()), 0);
     int q = -1;  // a neighbour of p
-    for (int e : ring) q = l.beams[static_cast<std::size_t>(e)][0] == p ? l.beams[static_cast<std::size_t>(e)][1] : l.beams[static_cast<std::size_t>(e)][0];
+    for (int e : ring)
+      q = l.beams[static_cast<std::size_t>(e)][0] == p ? l.beams[static_cast<std::size_t>(e)][1]
+                                                       : l.beams[static_cast<std::size_t>(e)][0];
     // Cluster {q and its neighbours except p}: break every beam leaving it.
     in[static_cast<std::size_t>(q)] = 1;
     for (int e = 0; e < l.n_beams(); ++e) {
@@ -331,7 +339,8 @@ TEST_CASE("A particle or cluster that loses its anchoring is frozen rigidly, not
     double f_cluster = 0.0;
     for (int e = 0; e < l.n_beams(); ++e) {
       const auto [i, j] = l.beams[static_cast<std::size_t>(e)];
-      if (in[static_cast<std::size_t>(i)] && in[static_cast<std::size_t>(j)]) f_cluster = std::max(f_cluster, forces[static_cast<std::size_t>(e)].force_on_i.norm());
+      if (in[static_cast<std::size_t>(i)] && in[static_cast<std::size_t>(j)])
+        f_cluster = std::max(f_cluster, forces[static_cast<std::size_t>(e)].force_on_i.norm());
     }
     CHECK(f_cluster < 1e-15);  // round-off of 1e-3-scale displacements
   }
@@ -377,7 +386,8 @@ TEST_CASE("Pure traction: a pinned particle that loses its last intact beam hand
   auto break_pin = [&](BeamMechanics& m) {
     const int pin = m.pinned_particle();
     for (int e = 0; e < l.n_beams(); ++e)
-      if (l.beams[static_cast<std::size_t>(e)][0] == pin || l.beams[static_cast<std::size_t>(e)][1] == pin) m.break_beam(e);
+      if (l.beams[static_cast<std::size_t>(e)][0] == pin || l.beams[static_cast<std::size_t>(e)][1] == pin)
+        m.break_beam(e);
     return pin;
   };
   auto check_new_pin = [&](const BeamMechanics& m, int old_pin) {

@@ -13,8 +13,7 @@
 using namespace hm::lattice2d;
 using hm::test::spec_of;
 
-namespace {
-}  // namespace
+namespace {}  // namespace
 
 TEST_CASE("The mesh-quality report is consistent with the lattice", "[lattice2d]") {
   const Lattice lattice = generate_lattice(spec_of(DomainShape::annulus, 2000, 6));
@@ -29,8 +28,9 @@ TEST_CASE("The mesh-quality report is consistent with the lattice", "[lattice2d]
   CHECK(q.beam_length.min == hm::test::roundoff(lattice.length.minCoeff()));
   CHECK(q.sum_particle_area == hm::test::roundoff(q.sum_triangle_area));
   CHECK(q.conductance.max <= 1.0 / dual.options.min_dual_ratio * (1.0 + 1e-12));
-  CHECK(q.dual_ratio.min > -1e-12);   // Delaunay, round-off
-  CHECK(q.surface_ratio.min > 0.9 * hm::test::min_boundary_dual_ratio(lattice.spec.boundary_spacing_factor));  // lattice_fixtures.hpp
+  CHECK(q.dual_ratio.min > -1e-12);  // Delaunay, round-off
+  CHECK(q.surface_ratio.min >
+        0.9 * hm::test::min_boundary_dual_ratio(lattice.spec.boundary_spacing_factor));  // lattice_fixtures.hpp
   std::ostringstream out;
   out << q;
   CHECK_THAT(out.str(), Catch::Contains("conductance A/d"));

@@ -9,9 +9,9 @@
 
 #include "approx.hpp"
 #include "hm/core/input_error.hpp"
-#include "hm/lattice2d/mechanics/beam_stiffness.hpp"
 #include "hm/lattice2d/geometry/dual_graph.hpp"
 #include "hm/lattice2d/geometry/lattice.hpp"
+#include "hm/lattice2d/mechanics/beam_stiffness.hpp"
 #include "hm/lattice2d/mechanics/particle_stress.hpp"
 
 using namespace hm::lattice2d;
@@ -95,9 +95,7 @@ TEST_CASE("A pair pulled apart is in tension (sign convention), a contact only p
     const ParticleStress s = compute_particle_stress(lattice, dual, pushed);
     CHECK(n.dot(tensor(s.stress.col(i)) * n) < 0.0);
   }
-  SECTION("open: no force") {
-    CHECK(compute_beam_forces(lattice, p, u, states).force.cwiseAbs().maxCoeff() == 0.0);
-  }
+  SECTION("open: no force") { CHECK(compute_beam_forces(lattice, p, u, states).force.cwiseAbs().maxCoeff() == 0.0); }
 }
 
 TEST_CASE("Beam forces and moments sum to minus the assembled K u on every particle", "[lattice2d]") {
@@ -154,8 +152,10 @@ TEST_CASE("At equilibrium every free particle carries zero net force and moment"
     for (Eigen::SparseMatrix<double>::InnerIterator it(K, col); it; ++it) {
       const int r = free_of[static_cast<std::size_t>(it.row())], c = free_of[static_cast<std::size_t>(it.col())];
       if (r < 0) continue;
-      if (c >= 0) t.emplace_back(r, c, it.value());
-      else rhs[r] -= it.value() * u_b[it.col()];
+      if (c >= 0)
+        t.emplace_back(r, c, it.value());
+      else
+        rhs[r] -= it.value() * u_b[it.col()];
     }
   Eigen::SparseMatrix<double> K_ff(n_free, n_free);
   K_ff.setFromTriplets(t.begin(), t.end());
@@ -212,8 +212,7 @@ TEST_CASE("Rigid-body motions give zero beam forces and zero stress", "[lattice2
   CHECK(compute_particle_stress(lattice, dual, forces).stress.cwiseAbs().maxCoeff() < 1e-10);
 }
 
-TEST_CASE("The area-weighted particle stress is the lattice virial of Eqs. 3-4 under an affine strain",
-          "[lattice2d]") {
+TEST_CASE("The area-weighted particle stress is the lattice virial of Eqs. 3-4 under an affine strain", "[lattice2d]") {
   // For u = eps x, omega = 0 each beam has stretch L n.eps.n and chord rotation phi = s.eps.n with end
   // deflections -phi, so it stores W = 1/2 k_n L^2 (n.eps.n)^2 + k_w L^2 phi^2 and exerts
   // F_ij = k_n L (n.eps.n) n + 2 k_w L phi s on i. sum_i V_i sigma_i = sum_beams sym(F_ij (x) L_ij).
@@ -222,7 +221,8 @@ TEST_CASE("The area-weighted particle stress is the lattice virial of Eqs. 3-4 u
   const BeamParameters p = test_parameters();
   Eigen::Matrix2d eps;
   eps << 2e-3, -7e-4, -7e-4, 1e-3;
-  const ParticleStress stress = compute_particle_stress(lattice, dual, compute_beam_forces(lattice, p, affine(lattice, eps)));
+  const ParticleStress stress =
+      compute_particle_stress(lattice, dual, compute_beam_forces(lattice, p, affine(lattice, eps)));
   Eigen::Matrix2d virial = Eigen::Matrix2d::Zero();
   for (int e = 0; e < lattice.n_beams(); ++e) {
     const Eigen::Vector2d n = lattice.direction.col(e), s(-n.y(), n.x());
@@ -244,21 +244,22 @@ TEST_CASE("The area-weighted particle stress is the lattice virial of Eqs. 3-4 u
   CHECK(skew2 > 0.0);
 }
 
-TEST_CASE("Crack-tip factor applies exactly to the intact beams of triangles with one broken beam",
-          "[lattice2d]") {
+TEST_CASE("Crack-tip factor applies exactly to the intact beams of triangles with one broken beam", "[lattice2d]") {
   const Lattice lattice = make_lattice(DomainShape::disk, 1000);
   const DualGraph dual = build_dual_graph(lattice);
   const BeamParameters p = test_parameters();
-  const ParticleStress stress =
-      compute_particle_stress(lattice, dual, compute_beam_forces(lattice, p, affine(lattice, 1e-3 * Eigen::Matrix2d::Identity())));
+  const ParticleStress stress = compute_particle_stress(
+      lattice, dual, compute_beam_forces(lattice, p, affine(lattice, 1e-3 * Eigen::Matrix2d::Identity())));
   CrackTipOptions tip;
   tip.material_length = 1.3e-2;
   std::vector<BeamState> states(static_cast<std::size_t>(lattice.n_beams()), BeamState::intact);
   // An interior beam and a boundary beam broken: 2 + 1 triangles, 4 + 2 intact crack-tip beams.
   int interior = -1, boundary = -1;
   for (int e = 0; e < lattice.n_beams() && (interior < 0 || boundary < 0); ++e) {
-    if (lattice.is_boundary_beam(e)) boundary = boundary < 0 ? e : boundary;
-    else if (e > lattice.n_beams() / 2) interior = interior < 0 ? e : interior;
+    if (lattice.is_boundary_beam(e))
+      boundary = boundary < 0 ? e : boundary;
+    else if (e > lattice.n_beams() / 2)
+      interior = interior < 0 ? e : interior;
   }
   states[static_cast<std::size_t>(interior)] = BeamState::open;
   states[static_cast<std::size_t>(boundary)] = BeamState::contact;
@@ -342,7 +343,8 @@ TEST_CASE("The affine stiffness is linear in the strain and matches the orientat
   const Eigen::Vector3d voigt(1e-3, -4e-4, 6e-4);  // (eps_xx, eps_yy, 2 eps_xy)
   Eigen::Matrix2d eps;
   eps << voigt[0], 0.5 * voigt[2], 0.5 * voigt[2], voigt[1];
-  const ParticleStress s = compute_particle_stress(lattice, dual, compute_beam_forces(lattice, p, affine(lattice, eps)));
+  const ParticleStress s =
+      compute_particle_stress(lattice, dual, compute_beam_forces(lattice, p, affine(lattice, eps)));
   Eigen::Vector3d weighted = Eigen::Vector3d::Zero();
   double area = 0.0;
   for (int i = 0; i < lattice.n_particles(); ++i)
@@ -362,9 +364,9 @@ TEST_CASE("The affine stiffness is linear in the strain and matches the orientat
   for (int i = 0; i < lattice.n_particles(); ++i) interior_area += dual.particle_area[i];
   const double rho = sum_l2 / interior_area, k_n = p.normal_stiffness, k_w = p.rotational_stiffness();
   const double c11 = rho * (3.0 / 8.0 * k_n + 0.25 * k_w), c12 = rho * (k_n / 8.0 - 0.25 * k_w);
-  INFO("C =\n" << a.stiffness << "\norientation average C11 = " << c11 << ", C12 = " << c12
-               << "; anisotropy " << a.anisotropy << ", relative scatter of C11 "
-               << a.scatter(0, 0) / a.stiffness(0, 0) << ", particles " << a.n_particles_used);
+  INFO("C =\n"
+       << a.stiffness << "\norientation average C11 = " << c11 << ", C12 = " << c12 << "; anisotropy " << a.anisotropy
+       << ", relative scatter of C11 " << a.scatter(0, 0) / a.stiffness(0, 0) << ", particles " << a.n_particles_used);
   // Sampling: the region holds ~1400 particles whose stresses scatter by ~29% (measured), so a region
   // mean has a standard error of ~0.29/sqrt(1400) = 0.8%; 4% is 5 standard errors. (Measured: C11 and
   // C12 within 0.3% and 1.1%, anisotropy 1.0%.) The exact statement is the virial test above.
@@ -373,18 +375,18 @@ TEST_CASE("The affine stiffness is linear in the strain and matches the orientat
   CHECK(a.anisotropy < 0.04);
 }
 
-TEST_CASE("Affine effective stiffness at N = 1e4: isotropic within the lattice scatter",
-          "[lattice2d][slow]") {
+TEST_CASE("Affine effective stiffness at N = 1e4: isotropic within the lattice scatter", "[lattice2d][slow]") {
   for (std::uint64_t seed : {1ULL, 2ULL, 3ULL}) {
     const Lattice lattice = make_lattice(DomainShape::disk, 10000, seed);
     const AffineStiffness a = affine_effective_stiffness(lattice, BeamParameters{});
     Eigen::Vector3d relative_scatter;
     for (int k = 0; k < 3; ++k) relative_scatter[k] = a.scatter(k, k) / a.stiffness(k, k);
-    WARN("seed " << seed << ", N = " << lattice.n_particles() << ", default BeamParameters (k_n = 1, a = 1, nu0 = 0.25), "
-                 << a.n_particles_used << " particles in r <= 0.5:\nC (Voigt, engineering shear) =\n"
+    WARN("seed " << seed << ", N = " << lattice.n_particles()
+                 << ", default BeamParameters (k_n = 1, a = 1, nu0 = 0.25), " << a.n_particles_used
+                 << " particles in r <= 0.5:\nC (Voigt, engineering shear) =\n"
                  << a.stiffness << "\naffine E = " << a.youngs_modulus << ", nu = " << a.poisson_ratio
-                 << ", anisotropy = " << a.anisotropy << ", relative particle scatter (xx, yy, xy) = "
-                 << relative_scatter.transpose());
+                 << ", anisotropy = " << a.anisotropy
+                 << ", relative particle scatter (xx, yy, xy) = " << relative_scatter.transpose());
     // Isotropy: the standard error of a region mean is ~ scatter / sqrt(n_used) = 0.29 / sqrt(2400) = 0.6%
     // of C11 per entry; 3% is 5 standard errors (measured: 0.6-1.0% over seeds 1-3).
     CHECK(a.anisotropy < 0.03);
@@ -410,7 +412,8 @@ TEST_CASE("Stress options and regions are validated, naming the field", "[lattic
   CHECK_THROWS_AS(tip.validate(), hm::InputError);
   CHECK_THROWS_WITH(tip.validate(), Catch::Contains("material_length = 0"));
   const Lattice lattice = make_lattice(DomainShape::rectangle, 600);
-  const ParticleStress none{Eigen::Matrix3Xd::Zero(3, lattice.n_particles()), Eigen::VectorXd::Zero(lattice.n_particles())};
+  const ParticleStress none{Eigen::Matrix3Xd::Zero(3, lattice.n_particles()),
+                            Eigen::VectorXd::Zero(lattice.n_particles())};
   CHECK_THROWS_WITH(compute_beam_stress(lattice, none, {}, tip), Catch::Contains("material_length"));
   AveragingRegion region;
   region.radius = -1.0;

@@ -28,7 +28,8 @@ TEST_CASE("Uniform shell edges run exactly from r_min to r_max", "[lattice2d]") 
   REQUIRE(edges.size() == 8);
   CHECK(edges.front() == 0.138);
   CHECK(edges.back() == 1.0);
-  for (std::size_t k = 0; k + 1 < edges.size(); ++k) CHECK(edges[k + 1] - edges[k] == hm::test::roundoff((1.0 - 0.138) / 7));
+  for (std::size_t k = 0; k + 1 < edges.size(); ++k)
+    CHECK(edges[k + 1] - edges[k] == hm::test::roundoff((1.0 - 0.138) / 7));
 }
 
 TEST_CASE("The shells partition the triangles and their area", "[lattice2d]") {
@@ -81,7 +82,8 @@ TEST_CASE("A field constant on each shell is reproduced exactly", "[lattice2d]")
   for (int s = 0; s < lattice.n_triangles(); ++s)
     values[s] = std::pow(2.0, std::floor(dual.centroid.col(s).norm() * 8.0));  // 2^k in shell k
   const RadialProfile profile = radial_average(dual, values, edges);
-  for (std::size_t k = 0; k < profile.shells.size(); ++k) CHECK(profile.shells[k].mean == hm::test::roundoff(std::pow(2.0, k)));
+  for (std::size_t k = 0; k < profile.shells.size(); ++k)
+    CHECK(profile.shells[k].mean == hm::test::roundoff(std::pow(2.0, k)));
 }
 
 TEST_CASE("Shells are half-open with the last one closed, and an empty shell reports NaN", "[lattice2d]") {

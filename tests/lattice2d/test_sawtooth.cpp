@@ -76,7 +76,8 @@ TEST_CASE("A saw-tooth beam dissipates G_f per unit facet at every length", "[la
 TEST_CASE("The saw-tooth refuses a bad spec or beam by name", "[lattice2d][fracture]") {
   CHECK_THROWS_WITH(sawtooth_teeth(e_n, f_t, g_f, 0.01, SawtoothSpec{1.0, 10}),
                     "sawtooth.reduction = 1, allowed: > 1, finite");
-  CHECK_THROWS_WITH(sawtooth_teeth(e_n, f_t, g_f, 0.01, SawtoothSpec{2.0, 0}), "sawtooth.n_teeth = 0, allowed: 1 ... 100");
+  CHECK_THROWS_WITH(sawtooth_teeth(e_n, f_t, g_f, 0.01, SawtoothSpec{2.0, 0}),
+                    "sawtooth.n_teeth = 0, allowed: 1 ... 100");
   CHECK_THROWS_AS(sawtooth_teeth(e_n, f_t, -1.0, 0.01), hm::InputError);
   CHECK_THROWS_AS(sawtooth_teeth(e_n, f_t, g_f, NAN), hm::InputError);
   CHECK_THROWS_AS(sawtooth_teeth(INFINITY, f_t, g_f, 0.01), hm::InputError);

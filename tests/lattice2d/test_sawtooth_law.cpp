@@ -33,7 +33,8 @@ int central_beam(const Lattice& lattice) {
 
 }  // namespace
 
-TEST_CASE("A softened beam's rank-3 downdate leaves the factor equal to the assembled stiffness", "[lattice2d][fracture]") {
+TEST_CASE("A softened beam's rank-3 downdate leaves the factor equal to the assembled stiffness",
+          "[lattice2d][fracture]") {
   const Lattice lattice = square();
   BoundaryConditions bc;
   bc.outer_pressure = -1e-4;  // all-round tension, pure traction
@@ -79,13 +80,13 @@ TEST_CASE("A softened beam's rank-3 downdate leaves the factor equal to the asse
   CHECK(closed.equilibrium_residual < 1e-10);
   for (int f : soft) CHECK(squeezed.is_closed(f));
   squeezed.soften_beam(e, 0.125);  // a closed beam softens in bending only
-  squeezed.break_beam(soft[1]);     // a closed beam breaks into a contact
+  squeezed.break_beam(soft[1]);    // a closed beam breaks into a contact
   const MechanicsSummary after = squeezed.solve();
   REQUIRE(after.is_converged());
   CHECK(after.equilibrium_residual < 1e-10);
 
-  CHECK_THROWS_AS(mechanics.soften_beam(e, 0.25), hm::InputError);      // would stiffen it
-  CHECK_THROWS_AS(mechanics.soften_beam(e, 0.0), hm::InputError);       // zero is a break
+  CHECK_THROWS_AS(mechanics.soften_beam(e, 0.25), hm::InputError);       // would stiffen it
+  CHECK_THROWS_AS(mechanics.soften_beam(e, 0.0), hm::InputError);        // zero is a break
   CHECK_THROWS_AS(mechanics.soften_beam(soft[1], 0.1), hm::InputError);  // broken
   CHECK_THROWS_AS(mechanics.soften_beam(-1, 0.1), hm::InputError);
 }
@@ -104,8 +105,7 @@ TEST_CASE("One beam pulled through its teeth does the work G_f d that the law di
   const double delta = 1e-3;
   BoundaryConditions bc;
   for (int p = 0; p < lattice.n_particles(); ++p)
-    for (int c = 0; c < 2; ++c)
-      bc.prescribed.push_back({p, c, p == j ? delta * lattice.direction(c, e) : 0.0});
+    for (int c = 0; c < 2; ++c) bc.prescribed.push_back({p, c, p == j ? delta * lattice.direction(c, e) : 0.0});
   BeamStrengths strengths;
   strengths.tensile = Eigen::VectorXd::Constant(lattice.n_beams(), 1e3);  // only beam e can fail
   strengths.compressive = Eigen::VectorXd::Constant(lattice.n_beams(), 1e3);
@@ -114,7 +114,7 @@ TEST_CASE("One beam pulled through its teeth does the work G_f d that the law di
 
   const double length = lattice.length[e];
   const double e_n = std::sqrt(3.0) * parameters.normal_stiffness;  // voronoi_facet: every beam's modulus
-  const double critical = 2.0 * e_n / (f_t * f_t);                   // critical length per unit G_f
+  const double critical = 2.0 * e_n / (f_t * f_t);                  // critical length per unit G_f
   // Ten times shorter than its critical length (ten teeth), and twice as long (one reduced tooth).
   for (const double g_f : {0.1 * length / critical, 2.0 * length / critical}) {
     INFO("G_f = " << g_f << ", critical length " << g_f * critical << ", L = " << length);
@@ -222,7 +222,8 @@ TEST_CASE("A softened beam that is shortened closes: its normal stiffness is uns
   }
 }
 
-TEST_CASE("The saw-tooth law refuses a fracture energy or strength factor that is not positive", "[lattice2d][fracture]") {
+TEST_CASE("The saw-tooth law refuses a fracture energy or strength factor that is not positive",
+          "[lattice2d][fracture]") {
   SawtoothLawOptions options;
   for (double bad : {0.0, -1e-9, std::nan("")}) {
     options.fracture_energy = bad;

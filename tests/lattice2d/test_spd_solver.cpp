@@ -10,9 +10,9 @@
 #include <omp.h>
 
 #include "hm/core/input_error.hpp"
-#include "hm/lattice2d/mechanics/beam_stiffness.hpp"
 #include "hm/lattice2d/geometry/lattice.hpp"
 #include "hm/lattice2d/linalg/spd_solver.hpp"
+#include "hm/lattice2d/mechanics/beam_stiffness.hpp"
 #include "linalg/subtree_solve.hpp"
 
 using namespace hm::lattice2d;
@@ -78,7 +78,9 @@ std::vector<int> spread_beams(const TestSystem& s, int count) {
   std::vector<char> used(static_cast<std::size_t>(s.lattice.n_particles()), 0);
   for (int e = 0; e < s.lattice.n_beams() && static_cast<int>(beams.size()) < count; e += 37) {
     const auto [i, j] = s.lattice.beams[static_cast<std::size_t>(e)];
-    if (used[i] || used[j] || s.lattice.boundary[i] != BoundaryTag::interior || s.lattice.boundary[j] != BoundaryTag::interior) continue;
+    if (used[i] || used[j] || s.lattice.boundary[i] != BoundaryTag::interior ||
+        s.lattice.boundary[j] != BoundaryTag::interior)
+      continue;
     used[i] = used[j] = 1;
     beams.push_back(e);
   }
@@ -158,7 +160,7 @@ TEST_CASE("A rank-3 downdate then solve equals a fresh factorisation of the modi
 
   SECTION("one break, fifty breaks, and across periodic refactorisations") {
     SpdSolverOptions options;
-    options.max_modifications = GENERATE(2000, 20);  // 20: refactorised after breaks 20 and 40
+    options.max_modifications = GENERATE(2000, 20);       // 20: refactorised after breaks 20 and 40
     options.reuse_forward_solve = GENERATE(true, false);  // forward solution carried by cholmod_updown_solve, or not
     options.parallel_triangular_solve = GENERATE(true, false);  // SubtreeSolve or CHOLMOD's own solves
     CholmodSolver solver(options);
@@ -180,14 +182,14 @@ TEST_CASE("A rank-3 downdate then solve equals a fresh factorisation of the modi
         kappa = condition_estimate(A, fresh);
         worst = std::max(worst, rel_diff(x, y));
         // The modified factor solves the modified matrix: residual checked against the stored A.
-        CHECK((A * x - s.b).norm() / s.b.norm() < 1e-12);  // round-off growth over 50 modifications
+        CHECK((A * x - s.b).norm() / s.b.norm() < 1e-12);        // round-off growth over 50 modifications
         CHECK((solver.matrix() - A).norm() < 1e-12 * A.norm());  // stored copy follows the modifications
       }
     }
     std::cout << "[spd_solver] 50 downdates (max_modifications " << options.max_modifications
               << ", reuse_forward_solve " << options.reuse_forward_solve << ", parallel "
-              << options.parallel_triangular_solve << "): |x - x_fresh|/|x| = " << worst << ", cond ~ " << kappa << ", factorisations "
-              << solver.report().n_factorizations << "\n";
+              << options.parallel_triangular_solve << "): |x - x_fresh|/|x| = " << worst << ", cond ~ " << kappa
+              << ", factorisations " << solver.report().n_factorizations << "\n";
     CHECK(worst < 10.0 * kappa * 2.2e-16);  // round-off: both are backward stable, error ~ cond * eps
     CHECK(solver.report().n_factorizations == (options.max_modifications == 20 ? 3 : 1));
   }
@@ -253,7 +255,8 @@ TEST_CASE("PCG agrees with CHOLMOD to its tolerance, and a warm start saves iter
     const Eigen::VectorXd y = pcg.solve(s.b);
     REQUIRE(pcg.info() == Eigen::Success);
     const int cold = pcg.report().iterations;
-    CHECK(pcg.report().relative_residual < 1e-10 * 1.01);  // CG's own stopping rule (1% for the true vs recursive residual)
+    CHECK(pcg.report().relative_residual <
+          1e-10 * 1.01);  // CG's own stopping rule (1% for the true vs recursive residual)
     // Error bound of a residual r: |dx|/|x| <= cond * |r|/|b|.
     CHECK(rel_diff(y, x) < kappa * 1e-10);
     // Warm start after one break: starts from the previous solution.
@@ -265,9 +268,9 @@ TEST_CASE("PCG agrees with CHOLMOD to its tolerance, and a warm start saves iter
     CHECK(rel_diff(y2, cholmod.solve(s.b)) < kappa * 1e-10);
     pcg.clear_warm_start();
     pcg.solve(s.b);
-    std::cout << "[spd_solver] PCG (" << (pre == PcgPreconditioner::jacobi ? "jacobi" : "ichol") << "): cold "
-              << cold << " iterations, warm after a break " << warm << ", cold after a break "
-              << pcg.report().iterations << "; |x_pcg - x_cholmod|/|x| = " << rel_diff(y, x) << "\n";
+    std::cout << "[spd_solver] PCG (" << (pre == PcgPreconditioner::jacobi ? "jacobi" : "ichol") << "): cold " << cold
+              << " iterations, warm after a break " << warm << ", cold after a break " << pcg.report().iterations
+              << "; |x_pcg - x_cholmod|/|x| = " << rel_diff(y, x) << "\n";
     CHECK(warm < pcg.report().iterations);
     cholmod.modify(W, +1);
   }
@@ -287,7 +290,7 @@ TEST_CASE("Triangular solves on two threads: CHOLMOD's answer, bitwise the same 
     std::vector<Eigen::VectorXd> x{solver.solve(s.b)};
     for (int e : beams) solver.modify(beam_columns(s, e), -1);
     x.push_back(solver.solve(s.b));
-    x.push_back(solver.solve(-2.0 * s.b));  // a new right-hand side: a fresh forward solve
+    x.push_back(solver.solve(-2.0 * s.b));             // a new right-hand side: a fresh forward solve
     CHECK(solver.report().relative_residual < 1e-11);  // round-off: CHOLMOD's own solve of this system 1.0e-12
     omp_set_num_threads(threads);
     return x;
@@ -297,7 +300,7 @@ TEST_CASE("Triangular solves on two threads: CHOLMOD's answer, bitwise the same 
   reference.compute(s.A);
   const double kappa = condition_estimate(s.A, reference);
   for (std::size_t k = 0; k < one.size(); ++k) {
-    CHECK((one[k].array() == two[k].array()).all());  // same partition, same arithmetic, any thread count
+    CHECK((one[k].array() == two[k].array()).all());               // same partition, same arithmetic, any thread count
     CHECK(rel_diff(two[k], cholmod[k]) < 10.0 * kappa * 2.2e-16);  // round-off, both backward stable
   }
 }
@@ -322,7 +325,7 @@ TEST_CASE("The elimination tree splits into two even groups below a small top", 
   std::cout << "[spd_solver] N = 20000: top " << subtree.top_share() << " of L, imbalance " << subtree.imbalance()
             << ", |x - x_cholmod|/|x| = " << rel_diff(x, y) << ", residual " << residual(x) << " (CHOLMOD's "
             << residual(y) << ")\n";
-  CHECK(subtree.top_share() < 0.08);  // measured 0.015 here: the top separators
+  CHECK(subtree.top_share() < 0.08);       // measured 0.015 here: the top separators
   CHECK(two_thread_time(subtree) < 0.55);  // measured 0.517: at least 1.8x on two threads
   CHECK(residual(x) < 2.0 * residual(y));  // round-off of the same factor: CHOLMOD's own solve's, give or take
 }
@@ -456,4 +459,3 @@ TEST_CASE("Factorisations in concurrent threads give the bits of one alone (METI
   }
   CHECK(differing == 0);
 }
-

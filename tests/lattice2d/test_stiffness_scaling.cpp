@@ -13,11 +13,11 @@
 
 #include "approx.hpp"
 #include "hm/core/input_error.hpp"
-#include "hm/lattice2d/mechanics/beam_stiffness.hpp"
 #include "hm/lattice2d/geometry/dual_graph.hpp"
 #include "hm/lattice2d/geometry/lattice.hpp"
-#include "hm/lattice2d/mechanics/mechanics.hpp"
 #include "hm/lattice2d/geometry/mesh_quality.hpp"
+#include "hm/lattice2d/mechanics/beam_stiffness.hpp"
+#include "hm/lattice2d/mechanics/mechanics.hpp"
 #include "hm/lattice2d/mechanics/particle_stress.hpp"
 
 using namespace hm::lattice2d;
@@ -115,7 +115,7 @@ TEST_CASE("voronoi_facet: affine field of central springs is isotropic with nu =
     const Eigen::Matrix2d s = affine_mean_stress(l, p, unit[k]);
     C.col(k) << s(0, 0), s(1, 1), 0.5 * (s(0, 1) + s(1, 0));
   }
-  CHECK(C(0, 0) == hm::test::roundoff(C(1, 1)) );
+  CHECK(C(0, 0) == hm::test::roundoff(C(1, 1)));
   CHECK(std::abs(C(2, 0) + C(2, 1)) < 1e-12);
   const double c11 = C(0, 0), c12 = 0.5 * (C(0, 1) + C(1, 0));
   const double nu = c12 / (c11 + c12);
@@ -179,7 +179,8 @@ TEST_CASE("boundary_spacing_factor keeps the lattice's invariants", "[lattice2d]
 }
 
 TEST_CASE("boundary_spacing_factor: same seed gives the identical lattice", "[lattice2d]") {
-  const Lattice a = make_lattice(DomainShape::annulus, 2000, 9, 1.3), b = make_lattice(DomainShape::annulus, 2000, 9, 1.3);
+  const Lattice a = make_lattice(DomainShape::annulus, 2000, 9, 1.3),
+                b = make_lattice(DomainShape::annulus, 2000, 9, 1.3);
   CHECK(a.points == b.points);
   CHECK(a.beams == b.beams);
   const Lattice c = make_lattice(DomainShape::annulus, 2000, 9, 1.0);
@@ -206,4 +207,3 @@ TEST_CASE("bad stiffness-scaling and boundary-spacing values are rejected", "[la
   const Lattice l = make_lattice(DomainShape::disk, 600, 1);
   CHECK_THROWS_AS(assemble_stiffness(l, p), hm::InputError);
 }
-

@@ -73,8 +73,7 @@ TEST_CASE("Strengths are a stored regression snapshot of the default spec", "[la
   CHECK(s.tensile[2] == hm::test::roundoff(0.00019902429807689079));
 }
 
-TEST_CASE("'none' gives exactly T_u and C_u, 'uniform' is bounded with the documented mean and width",
-          "[lattice2d]") {
+TEST_CASE("'none' gives exactly T_u and C_u, 'uniform' is bounded with the documented mean and width", "[lattice2d]") {
   const int n = 100000;
   SECTION("none") {
     const BeamStrengths s = draw_beam_strengths(spec_of(StrengthDistribution::none), 100);

@@ -114,7 +114,8 @@ TEST_CASE("A snapshot written as .vtu reads back with meshio: the .pvd lists the
   snap.displacement.resize(3 * n);
   snap.particle_stress.resize(3, n);
   for (int i = 0; i < n; ++i) {
-    snap.displacement.segment<3>(3 * i) << 0.1 * lattice.points(0, i), -0.05 * lattice.points(1, i) + 1.0 / 3.0, 1e-3 * i;
+    snap.displacement.segment<3>(3 * i) << 0.1 * lattice.points(0, i), -0.05 * lattice.points(1, i) + 1.0 / 3.0,
+        1e-3 * i;
     snap.particle_stress.col(i) << 1e-4 * i, -2e-4, std::sqrt(2.0) * 1e-5;
   }
   snap.beam_states.assign(static_cast<std::size_t>(lattice.n_beams()), BeamState::intact);
@@ -144,15 +145,16 @@ TEST_CASE("A snapshot written as .vtu reads back with meshio: the .pvd lists the
   std::ofstream(folder.path / "read_pvd.py") << read_pvd_script;
 
   const int p = 7, t = 4, b = 12;
-  const auto vtu = run_python(folder.path / "read_vtu.py",
-                              second.string() + " " + std::to_string(p) + " " + std::to_string(t) + " " + std::to_string(b));
+  const auto vtu = run_python(folder.path / "read_vtu.py", second.string() + " " + std::to_string(p) + " " +
+                                                               std::to_string(t) + " " + std::to_string(b));
   // Counts and cell order: all triangles, then all beams.
   CHECK(vtu.at("blocks") == "triangle line");
   CHECK(std::stoi(vtu.at("n_points")) == n);
   CHECK(std::stoi(vtu.at("n_triangle")) == lattice.n_triangles());
   CHECK(std::stoi(vtu.at("n_line")) == lattice.n_beams());
   const auto tv = numbers(vtu.at("triangle_vertices")), bv = numbers(vtu.at("beam_vertices"));
-  for (int k = 0; k < 3; ++k) CHECK(tv[static_cast<std::size_t>(k)] == lattice.triangles[t][static_cast<std::size_t>(k)]);
+  for (int k = 0; k < 3; ++k)
+    CHECK(tv[static_cast<std::size_t>(k)] == lattice.triangles[t][static_cast<std::size_t>(k)]);
   CHECK(bv[0] == lattice.beams[b][0]);
   CHECK(bv[1] == lattice.beams[b][1]);
   // Values: raw bytes (binary) or shortest round-trip text (ascii), so doubles come back bitwise.

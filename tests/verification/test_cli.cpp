@@ -1,7 +1,7 @@
 // The command line as a user meets it: bad input gives one line naming the parameter, the value
 // and what is allowed, exit code 2, and writes nothing.
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <sstream>
 #include <vector>
@@ -37,7 +37,8 @@ TEST_CASE("An unknown subcommand is rejected with the list of allowed ones", "[v
 TEST_CASE("Out-of-range analytic parameters name the parameter, the value and the range", "[verification][cli]") {
   TempDir dir("cli-analytic");
   SECTION("Biot coefficient above 1") {
-    require_clean_rejection(run_hmlattice("analytic rudnicki --b 1.5 --r 0.01", dir.path), "b = 1.5, allowed: 0 <= b <= 1");
+    require_clean_rejection(run_hmlattice("analytic rudnicki --b 1.5 --r 0.01", dir.path),
+                            "b = 1.5, allowed: 0 <= b <= 1");
   }
   SECTION("Poisson ratio at 0.5") {
     require_clean_rejection(run_hmlattice("analytic borehole-steady --nu 0.5 --r 0.5", dir.path),
@@ -66,17 +67,21 @@ TEST_CASE("Out-of-range analytic parameters name the parameter, the value and th
 
 TEST_CASE("A bad verification tier writes no report", "[verification][cli]") {
   TempDir dir("cli-verify");
-  require_clean_rejection(run_hmlattice("verify --tier full --out report", dir.path), "--tier = 'full', allowed: quick, paper");
+  require_clean_rejection(run_hmlattice("verify --tier full --out report", dir.path),
+                          "--tier = 'full', allowed: quick, paper");
   CHECK(dir.is_empty());
 }
 
 TEST_CASE("verify --list prints each benchmark of the tier with what it checks, and runs and writes nothing",
           "[verification][cli]") {
   TempDir dir("cli-verify-list");
-  for (const auto& [tier, filter] : std::vector<std::pair<hm::verification::Tier, std::string>>{
-           {hm::verification::Tier::quick, ""}, {hm::verification::Tier::paper, ""}, {hm::verification::Tier::paper, "fig1"}}) {
+  for (const auto& [tier, filter] :
+       std::vector<std::pair<hm::verification::Tier, std::string>>{{hm::verification::Tier::quick, ""},
+                                                                   {hm::verification::Tier::paper, ""},
+                                                                   {hm::verification::Tier::paper, "fig1"}}) {
     const std::string tier_name = hm::core::name_of(tier);
-    const auto r = run_hmlattice("verify --list --tier " + tier_name + (filter.empty() ? "" : " --filter " + filter), dir.path);
+    const auto r =
+        run_hmlattice("verify --list --tier " + tier_name + (filter.empty() ? "" : " --filter " + filter), dir.path);
     INFO("stderr: " << r.err);
     REQUIRE(r.exit_code == 0);
     const auto selected = hm::verification::select_benchmarks(hm::verification::all_benchmarks(), tier, filter);
@@ -89,7 +94,8 @@ TEST_CASE("verify --list prints each benchmark of the tier with what it checks, 
     }
     CHECK_THAT(r.out, Catch::Contains(std::to_string(selected.size()) + " benchmarks in the " + tier_name + " tier"));
   }
-  CHECK_THAT(run_hmlattice("verify --list --tier paper --filter fig12", dir.path).out, Catch::Contains("the paper's Fig. 12"));
+  CHECK_THAT(run_hmlattice("verify --list --tier paper --filter fig12", dir.path).out,
+             Catch::Contains("the paper's Fig. 12"));
   CHECK(dir.is_empty());
   require_clean_rejection(run_hmlattice("verify --list --out report", dir.path), "--out excludes --list");
   CHECK(dir.is_empty());
@@ -104,9 +110,10 @@ TEST_CASE("hmlattice analytic prints a CSV header and one row per radius", "[ver
   // B = A R_o^2 = 3.3333e-4; at r = 1: sigma_r = A - B = 0, sigma_theta = 2A = 6.6667e-4, sigma_z = 2 nu A.
   // u_r(1) = (1+nu)((1-2nu) A + B) = 1.25 * 1.5 * 3.3333e-4 = 6.25e-4; at r = 0.5: sigma_r = A - 4B = -1e-3,
   // sigma_theta = A + 4B, u_r = 1.25 (0.5 A 0.5 + 2B) = 9.375e-4.
-  CHECK(r.out == "r,u_r,sigma_r,sigma_theta,sigma_z\n"
-                 "0.5,0.0009375,-0.001,0.001666666667,0.0001666666667\n"
-                 "1,0.000625,0,0.0006666666667,0.0001666666667\n");
+  CHECK(r.out ==
+        "r,u_r,sigma_r,sigma_theta,sigma_z\n"
+        "0.5,0.0009375,-0.001,0.001666666667,0.0001666666667\n"
+        "1,0.000625,0,0.0006666666667,0.0001666666667\n");
 }
 
 TEST_CASE("Bad 1D cases are rejected before anything is written", "[verification][cli]") {
@@ -137,8 +144,9 @@ TEST_CASE("Bad 1D cases are rejected before anything is written", "[verification
 
 TEST_CASE("hmlattice fdm1d writes its CSV files and a resolved config that reruns identically", "[verification][cli]") {
   TempDir dir("cli-fdm1d-run");
-  dir.write("case.toml", "model = \"fdm1d\"\n[physics]\nQ = 0.01\nb = 0.5\n[numerics]\nn_r = 40\nt_end = 0.05\n"
-                         "[output]\ntimes = [0.01, 0.05]\n");
+  dir.write("case.toml",
+            "model = \"fdm1d\"\n[physics]\nQ = 0.01\nb = 0.5\n[numerics]\nn_r = 40\nt_end = 0.05\n"
+            "[output]\ntimes = [0.01, 0.05]\n");
   const auto first = run_hmlattice("fdm1d case.toml --out run1", dir.path);
   REQUIRE(first.exit_code == 0);
   for (const char* f : {"borehole.csv", "profiles.csv", "probes.csv", "steady_state.csv", "config.toml"})
@@ -158,7 +166,8 @@ TEST_CASE("A 1D case of only t_end = 0.5 keeps the default output times it reach
   REQUIRE(r.exit_code == 0);
   CHECK_THAT(hm::test::slurp(dir.path / "run" / "config.toml"), Catch::Contains("times = [0.025, 0.05, 0.1, 0.25]"));
   // Times the file gives are still checked as given.
-  dir.write("late.toml", "model = \"fdm1d\"\n[physics]\nQ = 0.01\nb = 0.5\n[numerics]\nt_end = 0.5\n[output]\ntimes = [1]\n");
+  dir.write("late.toml",
+            "model = \"fdm1d\"\n[physics]\nQ = 0.01\nb = 0.5\n[numerics]\nt_end = 0.5\n[output]\ntimes = [1]\n");
   CHECK(run_hmlattice("fdm1d late.toml --out late", dir.path).exit_code == 2);
 }
 

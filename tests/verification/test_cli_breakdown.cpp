@@ -18,8 +18,8 @@ namespace {
 
 std::string row_of(double b, const hm::analytic::DimensionlessParameters& d) {
   const auto l = hm::analytic::breakdown_limits(d);
-  return csv_number(b) + "," + csv_number(l.q_min) + "," + csv_number(l.p_b_slow) + "," + csv_number(l.p_b_fast) +
-         "," + csv_number(l.p_b_jacketed) + "\n";
+  return csv_number(b) + "," + csv_number(l.q_min) + "," + csv_number(l.p_b_slow) + "," + csv_number(l.p_b_fast) + "," +
+         csv_number(l.p_b_jacketed) + "\n";
 }
 
 }  // namespace

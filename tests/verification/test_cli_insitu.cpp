@@ -37,8 +37,10 @@ TEST_CASE("hmlattice analytic breakdown --SH --Sh prints one row per b and formu
   std::string expected = "formula,b,p_b,theta_deg\n";
   for (double b : {1.0, 0.5}) {
     m.b = b;
-    expected += "hubbert_willis," + csv_number(b) + ",0.0032,0\n"
-                "haimson_fairhurst," + csv_number(b) + "," + csv_number(hm::analytic::haimson_fairhurst_breakdown(far, m).p_w) +
+    expected += "hubbert_willis," + csv_number(b) +
+                ",0.0032,0\n"
+                "haimson_fairhurst," +
+                csv_number(b) + "," + csv_number(hm::analytic::haimson_fairhurst_breakdown(far, m).p_w) +
                 ",0\nannulus_jacketed," + csv_number(b) + "," +
                 csv_number(hm::analytic::annulus_jacketed_breakdown(far, m, 0.138).p_w) + ",0\n";
   }

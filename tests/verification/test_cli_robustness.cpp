@@ -37,7 +37,8 @@ TEST_CASE("Empty, comment-only and truncated cases say what is missing instead o
   rejected("   \n\t\n", "model is missing");
   rejected("# only a comment\n", "model is missing");
   rejected("model = \"fdm1d\"\n", "neither [physics] nor [physics_si] given");
-  rejected("model = \"fdm1d\"\n[physics]\nQ = 0.01\n", "case.toml: [physics] b is missing, allowed: 0 <= b <= 1 (required)");
+  rejected("model = \"fdm1d\"\n[physics]\nQ = 0.01\n",
+           "case.toml: [physics] b is missing, allowed: 0 <= b <= 1 (required)");
   // Cut before its [numerics]: the run's length is never implied.
   rejected(fdm1d_head, "case.toml: [numerics] t_end is missing");
   dir.write("run2d.toml", "model = \"lattice2d\"\n[physics]\nQ = 0.1\nb = 0.5\nR_i = 0\n[numerics]\nt_end = 1e-5\n");
@@ -60,8 +61,9 @@ TEST_CASE("Numbers that would wrap, exhaust memory or never finish are refused w
   rejected("dt_initial = 5e-324\nt_end = 1\n", "dt_initial = 5e-324, allowed: dt_initial >= 1e-12 t_end");
   rejected("t_end = 1e308\n", "t_end = 1e+308, allowed: t_end <= 1e6");
   rejected("dt_initial = 1e-9\ndt_growth = 1\nt_end = 1\n", "allowed: a stepping of at most 1e6 steps");
-  dir.write("run2d.toml", "model = \"lattice2d\"\n[physics]\nQ = 0.1\nb = 0.5\nR_i = 0\n[lattice]\nn_particles = 600\n"
-                          "[numerics]\ndt_initial = 5e-324\nt_end = 1e-5\n");
+  dir.write("run2d.toml",
+            "model = \"lattice2d\"\n[physics]\nQ = 0.1\nb = 0.5\nR_i = 0\n[lattice]\nn_particles = 600\n"
+            "[numerics]\ndt_initial = 5e-324\nt_end = 1e-5\n");
   require_one_line_exit_2(run_hmlattice("run run2d.toml --out run", dir.path), "[numerics] dt_initial = 5e-324");
 }
 
@@ -71,8 +73,9 @@ TEST_CASE("Results that overflow double precision are refused, not printed as in
   require_one_line_exit_2(r, "p = inf at r = 0.1: the inputs overflow double precision");
   CHECK(r.out.empty());
   require_one_line_exit_2(run_hmlattice("analytic lame --Ro 1e308 --r 0.5", dir.path), "u_r = -nan at r = 0.5");
-  dir.write("case.toml", "model = \"fdm1d\"\n[physics]\nQ = 1e308\nb = 0.2\n[numerics]\nn_r = 40\nt_end = 0.1\n"
-                         "[output]\ntimes = [0.1]\n");
+  dir.write("case.toml",
+            "model = \"fdm1d\"\n[physics]\nQ = 1e308\nb = 0.2\n[numerics]\nn_r = 40\nt_end = 0.1\n"
+            "[output]\ntimes = [0.1]\n");
   // Q itself is bounded (pressures scale with it): 1e308 is refused before anything runs.
   const auto f = run_hmlattice("fdm1d case.toml --out run", dir.path);
   require_one_line_exit_2(f, "case.toml: [physics] Q = 1e+308, allowed: 0 <= Q <= 1e+06");
@@ -91,11 +94,13 @@ TEST_CASE("Command-line values: empty numbers, a negative E/M, no jobs and a fil
                           "E_over_M = -5, allowed: E_over_M > 0");
   require_one_line_exit_2(run_hmlattice("verify --filter typo --out report", dir.path),
                           "--filter = 'typo' matches no benchmark id of the quick tier");
-  require_one_line_exit_2(run_hmlattice("verify --jobs 0 --out report", dir.path), "--jobs = 0, allowed: an integer >= 1");
+  require_one_line_exit_2(run_hmlattice("verify --jobs 0 --out report", dir.path),
+                          "--jobs = 0, allowed: an integer >= 1");
   CHECK_FALSE(std::filesystem::exists(dir.path / "report"));
 }
 
-TEST_CASE("Messages stay one line: inline tables, arrays of tables and very long values are cut", "[verification][cli]") {
+TEST_CASE("Messages stay one line: inline tables, arrays of tables and very long values are cut",
+          "[verification][cli]") {
   TempDir dir("cli-one-line");
   const auto rejected = [&](const std::string& value, const std::string& must_mention) {
     dir.write("case.toml", fdm1d_head + value + "[numerics]\nt_end = 1\n");
@@ -112,10 +117,12 @@ TEST_CASE("A case file behind a link loop and a damaged run folder are bad input
   TempDir dir("cli-links");
   std::filesystem::create_symlink("loop_b", dir.path / "loop_a");
   std::filesystem::create_symlink("loop_a", dir.path / "loop_b");
-  require_one_line_exit_2(run_hmlattice("run loop_a", dir.path), "loop_a: cannot read: Too many levels of symbolic links");
+  require_one_line_exit_2(run_hmlattice("run loop_a", dir.path),
+                          "loop_a: cannot read: Too many levels of symbolic links");
   // A run folder whose breaks.csv was damaged: the reader names the file and the line.
-  dir.write("run2d.toml", "model = \"lattice2d\"\n[physics]\nQ = 0.1\nb = 0.5\nR_i = 0\n[lattice]\nn_particles = 600\n"
-                          "[numerics]\ndt_initial = 5e-6\nt_end = 1e-5\n[fracture]\nenabled = true\n");
+  dir.write("run2d.toml",
+            "model = \"lattice2d\"\n[physics]\nQ = 0.1\nb = 0.5\nR_i = 0\n[lattice]\nn_particles = 600\n"
+            "[numerics]\ndt_initial = 5e-6\nt_end = 1e-5\n[fracture]\nenabled = true\n");
   REQUIRE(run_hmlattice("run run2d.toml --out run", dir.path).exit_code == 0);
   const std::string breaks = hm::test::slurp(dir.path / "run" / "breaks.csv");
   dir.write("run/breaks.csv", "garbage\n");
@@ -127,8 +134,9 @@ TEST_CASE("A case file behind a link loop and a damaged run folder are bad input
 
   // A run that stopped before t_end is refused, its files untouched: rewriting its config.toml made
   // `run --resume` refuse the checkpoint as another case's.
-  dir.write("long.toml", "model = \"lattice2d\"\n[physics]\nQ = 0.1\nb = 0.5\nR_i = 0\n[lattice]\nn_particles = 600\n"
-                         "[numerics]\ndt_initial = 5e-6\nt_end = 2e-5\n[fracture]\nenabled = true\n");
+  dir.write("long.toml",
+            "model = \"lattice2d\"\n[physics]\nQ = 0.1\nb = 0.5\nR_i = 0\n[lattice]\nn_particles = 600\n"
+            "[numerics]\ndt_initial = 5e-6\nt_end = 2e-5\n[fracture]\nenabled = true\n");
   REQUIRE(run_hmlattice("run long.toml --out part --stop-after-steps 1", dir.path).exit_code == 0);
   const std::string config = hm::test::slurp(dir.path / "part" / "config.toml");
   require_one_line_exit_2(run_hmlattice("fractures part", dir.path), "holds a run that has not finished");

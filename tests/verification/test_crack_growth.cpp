@@ -47,6 +47,6 @@ TEST_CASE("Both softening paths start the growth at the same load, and the conti
   // The crack's broken beams each booked G_f d in full, and softened beams beside it some: the booked
   // energy exceeds G_f times the broken facets' count times the shortest facet (a loose floor, 0.002 R
   // at N = 2000), which a path that booked nothing for its breaks would miss.
-  CHECK(continuous.points.back().booked > small_growth(SofteningPath::continuous).fracture_energy *
-                                              continuous.points.back().n_broken * 0.002);
+  CHECK(continuous.points.back().booked >
+        small_growth(SofteningPath::continuous).fracture_energy * continuous.points.back().n_broken * 0.002);
 }

@@ -94,14 +94,15 @@ TEST_CASE("A figure spec with a mistake is refused, naming file, table, key, val
   CHECK(refusal(dir, kReading) == bad + ": figure is missing or not a string, allowed: a string (required)");
   CHECK(refusal(dir, "figure = \"Fig. 9\"\n") == bad + ": no [[reading]], allowed: one or more readings of the paper");
   CHECK(refusal(dir, "figure = \"Fig. 9\"\n" + kReading + "secondary = \"sometimes\"\n") ==
-        bad + ": [reading[0]] secondary = \"sometimes\", allowed: one of \"none\", \"at_outer_boundary\", "
-              "\"between_primaries\"");
+        bad +
+            ": [reading[0]] secondary = \"sometimes\", allowed: one of \"none\", \"at_outer_boundary\", "
+            "\"between_primaries\"");
   CHECK(refusal(dir, "figure = \"Fig. 9\"\n" + kReading + "reaching_outer = \"most\"\n") ==
         bad + ": [reading[0]] reaching_outer = \"most\", allowed: a count >= 0 or \"all\" (absent: not stated)");
-  CHECK(refusal(dir, "figure = \"Fig. 9\"\n" + kReading + "fracturs = 3\n").find(
-            ": [reading[0]] unknown key 'fracturs', allowed: ") != std::string::npos);
-  CHECK(refusal(dir, "figure = \"Fig. 9\"\n[u_r_vs_1d]\nunbroken_until = 1e-3\n" + kReading).find(
-            "without u_r_once_fractured") != std::string::npos);
+  CHECK(refusal(dir, "figure = \"Fig. 9\"\n" + kReading + "fracturs = 3\n")
+            .find(": [reading[0]] unknown key 'fracturs', allowed: ") != std::string::npos);
+  CHECK(refusal(dir, "figure = \"Fig. 9\"\n[u_r_vs_1d]\nunbroken_until = 1e-3\n" + kReading)
+            .find("without u_r_once_fractured") != std::string::npos);
   CHECK(refusal(dir, "figure = \"Fig. 9\"\n" + kReading + "[benchmark]\nrunner = \"borehole_pair\"\n") ==
         bad + ": [benchmark] paper_figures is missing or empty, allowed: the paper's figure numbers");
 }

@@ -26,10 +26,29 @@ const std::string lattice_case =
     "[output]\nvtk = false\nradial_bins = 4\n";
 
 // Values that once slipped through somewhere (wrapping, overflow, empty, wrong type), and plain ones.
-const std::vector<std::string> values = {
-    "-1", "0", "0.5", "2", "1e308", "-1e308", "nan", "inf", "-inf", "4294967696", "9223372036854775807",
-    "9223372036854775808", "-9223372036854775809", "99999999999999999999",
-    "1e-320", "\"\"", "\"x\"", "[1, 2]", "{ a = 1 }", "true", "\"" + std::string(3000, 'y') + "\"", "0x10", "1_000"};
+const std::vector<std::string> values = {"-1",
+                                         "0",
+                                         "0.5",
+                                         "2",
+                                         "1e308",
+                                         "-1e308",
+                                         "nan",
+                                         "inf",
+                                         "-inf",
+                                         "4294967696",
+                                         "9223372036854775807",
+                                         "9223372036854775808",
+                                         "-9223372036854775809",
+                                         "99999999999999999999",
+                                         "1e-320",
+                                         "\"\"",
+                                         "\"x\"",
+                                         "[1, 2]",
+                                         "{ a = 1 }",
+                                         "true",
+                                         "\"" + std::string(3000, 'y') + "\"",
+                                         "0x10",
+                                         "1_000"};
 
 std::string mutate(const std::string& text, std::mt19937& rng) {
   std::vector<std::string> lines;
@@ -40,9 +59,9 @@ std::string mutate(const std::string& text, std::mt19937& rng) {
   const auto pick = [&](std::size_t n) { return std::uniform_int_distribution<std::size_t>(0, n - 1)(rng); };
   const std::size_t k = pick(lines.size());
   switch (pick(6)) {
-    case 0: lines.erase(lines.begin() + static_cast<std::ptrdiff_t>(k)); break;  // a key or table left out
+    case 0: lines.erase(lines.begin() + static_cast<std::ptrdiff_t>(k)); break;             // a key or table left out
     case 1: lines.insert(lines.begin() + static_cast<std::ptrdiff_t>(k), lines[k]); break;  // given twice
-    case 2: {  // a value replaced
+    case 2: {                                                                               // a value replaced
       const auto eq = lines[k].find(" = ");
       if (eq != std::string::npos) lines[k] = lines[k].substr(0, eq + 3) + values[pick(values.size())];
       break;
@@ -53,7 +72,7 @@ std::string mutate(const std::string& text, std::mt19937& rng) {
       return joined.substr(0, pick(joined.size() + 1));
     }
     case 4: lines[k].insert(pick(lines[k].size() + 1), 1, "=[]{}\"#\\\n\t\x01\xff"[pick(12)]); break;  // a stray byte
-    default: lines[k] = lines[k].empty() ? "x" : lines[k].substr(0, lines[k].size() / 2);  // a line cut
+    default: lines[k] = lines[k].empty() ? "x" : lines[k].substr(0, lines[k].size() / 2);              // a line cut
   }
   std::string out;
   for (const auto& l : lines) out += l + "\n";
@@ -67,7 +86,8 @@ bool has_leftovers(const fs::path& dir) {
   return false;
 }
 
-void check_outcome(const hm::test::CommandResult& r, const fs::path& dir, const fs::path& out, const std::string& input) {
+void check_outcome(const hm::test::CommandResult& r, const fs::path& dir, const fs::path& out,
+                   const std::string& input) {
   INFO("input:\n" << input << "\nexit " << r.exit_code << ", stderr: " << r.err);
   const bool valid_run = r.exit_code == 0 && fs::exists(out / "config.toml");
   const bool bad_input = r.exit_code == 2 && count_lines(r.err) == 1 && !fs::exists(out);
@@ -101,10 +121,11 @@ TEST_CASE("Fuzzed command lines end as a valid result or as one line of bad inpu
   std::mt19937 rng(7);
   const std::vector<std::string> commands = {"analytic rudnicki --r 0.1,0.2", "analytic borehole-steady --r 0.2,0.5",
                                              "analytic sneddon --x 0,0.05", "analytic lame --r 0.5,1"};
-  const std::vector<std::string> options = {"--Q", "--b", "--nu", "--t", "--E_over_M", "--Ri", "--Ro", "--pi",
-                                            "--po", "--p", "--c", "--vol_strain", "--r", "--x", "--bogus"};
-  const std::vector<std::string> cli_values = {"''", "-1", "0", "0.3", "1e308", "nan", "inf", "x", "1,2",
-                                               "0.1,,0.2", "plane-strain", "appendix-a", "1e-320"};
+  const std::vector<std::string> options = {"--Q",  "--b",          "--nu", "--t",  "--E_over_M",
+                                            "--Ri", "--Ro",         "--pi", "--po", "--p",
+                                            "--c",  "--vol_strain", "--r",  "--x",  "--bogus"};
+  const std::vector<std::string> cli_values = {"''", "-1",  "0",        "0.3",          "1e308",      "nan",   "inf",
+                                               "x",  "1,2", "0.1,,0.2", "plane-strain", "appendix-a", "1e-320"};
   const auto pick = [&](std::size_t n) { return std::uniform_int_distribution<std::size_t>(0, n - 1)(rng); };
   for (int i = 0; i < 200; ++i) {
     std::string line = commands[pick(commands.size())];
@@ -124,8 +145,9 @@ TEST_CASE("Fuzzed sweep tables end as the expanded cases or as one line of bad i
   std::mt19937 rng(5);
   // One swept key of each kind: a real, a bounded real, an integer and a choice; the case's own
   // values of the swept keys are mutated too (line 3 of the base is b's).
-  const std::string base = fdm1d_case + "[sweep]\n\"physics.Q\" = [0.001, 0.01]\n\"physics.b\" = [0.2, 0.8]\n"
-                                        "\"numerics.n_r\" = [40, 80]\n";
+  const std::string base = fdm1d_case +
+                           "[sweep]\n\"physics.Q\" = [0.001, 0.01]\n\"physics.b\" = [0.2, 0.8]\n"
+                           "\"numerics.n_r\" = [40, 80]\n";
   const std::string huge_list = [] {  // 1000 values: two such keys give 1e6 combinations, over the default cap
     std::string list = "[";
     for (int k = 1; k <= 1000; ++k) list += std::to_string(k) + (k < 1000 ? ", " : "]");
@@ -137,8 +159,8 @@ TEST_CASE("Fuzzed sweep tables end as the expanded cases or as one line of bad i
       input += "\"numerics.n_r\" = " + huge_list + "\n\"numerics.dt_growth\" = " + huge_list + "\n";
     dir.write("case.toml", input);
     const fs::path out = dir.path / ("sweep" + std::to_string(i));
-    const auto r = hm::test::run_hmlattice("sweep expand case.toml --out " + out.filename().string(), dir.path,
-                                           "ulimit -t 60; ");
+    const auto r =
+        hm::test::run_hmlattice("sweep expand case.toml --out " + out.filename().string(), dir.path, "ulimit -t 60; ");
     INFO("input:\n" << input << "\nexit " << r.exit_code << ", stderr: " << r.err);
     const bool expanded = r.exit_code == 0 && fs::exists(out / "index.csv");
     const bool bad_input = r.exit_code == 2 && count_lines(r.err) == 1 && !fs::exists(out);
@@ -188,8 +210,9 @@ TEST_CASE("Fuzzed result folders: no hang, no crash, and a file the user put the
         const std::string original = hm::test::slurp(dir.path / "pristine" / name);
         fs::remove_all(file);
         if (make == "empty" || make == "half" || make == "noise")
-          std::ofstream(file, std::ios::binary) << (make == "half" ? original.substr(0, original.size() / 2)
-                                                    : make == "noise" ? std::string("\001\377x") : std::string());
+          std::ofstream(file, std::ios::binary) << (make == "half"    ? original.substr(0, original.size() / 2)
+                                                    : make == "noise" ? std::string("\001\377x")
+                                                                      : std::string());
         else
           REQUIRE(std::system((make + " '" + file.string() + "'").c_str()) == 0);
         what += make + " " + name.string() + "; ";

@@ -104,7 +104,7 @@ Record mutated(Record r, std::mt19937& rng, std::string& what) {
   // bounded, computation (a pressure load of 7 E R breaks beams for minutes before failing), so reals get
   // the absurd values and integers all five.
   const int value = static_cast<int>(change) - 2;  // 0 .. 4 (0 .. 3 for reals)
-  what = "element " + std::to_string(k);  // one append at a time: GCC 12's -Wrestrict misfires on a + chain
+  what = "element " + std::to_string(k);           // one append at a time: GCC 12's -Wrestrict misfires on a + chain
   what += ", change ";
   what += std::to_string(value);
   if (r.kind == 'd') {
@@ -180,5 +180,6 @@ TEST_CASE("A saw-tooth run's damaged checkpoint (tooth counters and log) is resu
           "[verification][cli][fuzz]") {
   const std::string sawtooth_case = hm::test::edited(
       brittle_case, {{"enabled = true\n", "enabled = true\nlaw = \"sawtooth\"\nfracture_energy = 2e-9\n"}});
-  fuzz_checkpoint("fuzz-checkpoint-sawtooth", sawtooth_case, 30, {"sawtooth.", "teeth.", "mechanics.softening", "mechanics.closed"}, 5, 7);
+  fuzz_checkpoint("fuzz-checkpoint-sawtooth", sawtooth_case, 30,
+                  {"sawtooth.", "teeth.", "mechanics.softening", "mechanics.closed"}, 5, 7);
 }

@@ -46,7 +46,8 @@ TEST_CASE("Metrics pass or fail exactly at their tolerance", "[verification][har
   CHECK_FALSE(metric(std::nan(""), 0.0, 1.0, Comparison::at_most).passes());
 }
 
-TEST_CASE("The harness writes report and metrics, and a failing gating metric fails the run", "[verification][harness]") {
+TEST_CASE("The harness writes report and metrics, and a failing gating metric fails the run",
+          "[verification][harness]") {
   TempDir dir("harness");
   std::vector<Benchmark> benchmarks = {
       {"demo.good", "Good", "passes", Tier::quick,

@@ -5,8 +5,8 @@
 #include <string>
 
 #include "folder_snapshot.hpp"
-#include "small_disk.hpp"
 #include "run_command.hpp"
+#include "small_disk.hpp"
 
 namespace fs = std::filesystem;
 using hm::test::count_lines;
@@ -43,8 +43,8 @@ TEST_CASE("An --out naming a folder of the user's files is refused and every fil
   fs::copy_file(HM_SOURCE_DIR "/cases/fig10_fdm1d_b0.5.toml", dir.path / "case.toml");
   dir.write("run.toml", small_run_case);
   const auto before = folder_snapshot(dir.path);
-  for (const std::string& command : {"fdm1d " + fdm1d_case, std::string("run run.toml"),
-                                     std::string("verify --filter steady_borehole")}) {
+  for (const std::string& command :
+       {"fdm1d " + fdm1d_case, std::string("run run.toml"), std::string("verify --filter steady_borehole")}) {
     require_refusal(run_hmlattice(command + " --out victim", dir.path),
                     "--out = 'victim' is a folder with files that hmlattice did not write; " + allowed);
     require_refusal(run_hmlattice(command + " --out victim --overwrite", dir.path), "did not write");
@@ -90,7 +90,7 @@ TEST_CASE("An earlier result is refused without --overwrite and replaced with it
   REQUIRE(r.exit_code == 0);
   CHECK(slurp(dir.path / "res" / ".hmlattice").find("--out res --overwrite") != std::string::npos);
   CHECK(slurp(dir.path / "res" / "profiles.csv") == before.at("res/profiles.csv"));  // same case, same numbers
-  CHECK(folder_snapshot(dir.path).size() == before.size());  // nothing set aside is left over
+  CHECK(folder_snapshot(dir.path).size() == before.size());                          // nothing set aside is left over
 }
 
 TEST_CASE("An earlier result holding a file the user put there is refused by --overwrite, and nothing is removed",
@@ -124,7 +124,8 @@ TEST_CASE("An --out with a trailing slash or a 250-character name keeps the fini
   REQUIRE(r.exit_code == 0);
   CHECK(fs::file_size(dir.path / "report" / "report.md") > 0);
   CHECK(fs::exists(dir.path / "report" / ".hmlattice"));
-  require_refusal(run_hmlattice("verify --filter steady_borehole --out report", dir.path), "holds an earlier hmlattice result");
+  require_refusal(run_hmlattice("verify --filter steady_borehole --out report", dir.path),
+                  "holds an earlier hmlattice result");
 }
 
 TEST_CASE("On a full disk every command fails with the file named, and leaves no folder that looks complete",
@@ -149,7 +150,9 @@ TEST_CASE("A run that fails while replacing an earlier result leaves that result
   TempDir dir("out-failed-replace");
   hm::test::SmallDisk disk(dir.path / "disk", 64);
   // A result that fits: the 1D model's coarse grid with few outputs.
-  dir.write("small.toml", "model = \"fdm1d\"\n[physics]\nQ = 0.01\nb = 0.5\n[numerics]\nn_r = 40\nt_end = 0.01\n[output]\ntimes = [0.01]\n");
+  dir.write("small.toml",
+            "model = \"fdm1d\"\n[physics]\nQ = 0.01\nb = 0.5\n[numerics]\nn_r = 40\nt_end = 0.01\n[output]\ntimes = "
+            "[0.01]\n");
   const auto first = run_hmlattice("fdm1d small.toml --out disk/res", dir.path, disk.shell_prefix());
   INFO("stderr: " << first.err);
   REQUIRE(first.exit_code == 0);

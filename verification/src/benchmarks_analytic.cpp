@@ -16,9 +16,9 @@
 #include "hm/analytic/rudnicki.hpp"
 #include "hm/analytic/sneddon.hpp"
 #include "hm/analytic/steady_borehole.hpp"
+#include "hm/core/csv_writer.hpp"
 #include "hm/core/file_output.hpp"
 #include "hm/verification/benchmark.hpp"
-#include "hm/core/csv_writer.hpp"
 
 namespace hm::verification {
 
@@ -72,8 +72,8 @@ BenchmarkResult steady_borehole(const BenchmarkContext& ctx) {
       RadialState expected;
       set_plane_strain_stresses(expected, nu, d1(u, r, h), u(r) / r);
       const RadialState got = sol.state(r);
-      hooke = std::max({hooke, std::abs(got.sigma_r - expected.sigma_r), std::abs(got.sigma_theta - expected.sigma_theta),
-                        std::abs(got.sigma_z - expected.sigma_z)});
+      hooke = std::max({hooke, std::abs(got.sigma_r - expected.sigma_r),
+                        std::abs(got.sigma_theta - expected.sigma_theta), std::abs(got.sigma_z - expected.sigma_z)});
     }
     worst_b2 = std::max(worst_b2, b2 / scale);
     worst_hooke = std::max(worst_hooke, hooke / p_h);
@@ -82,19 +82,37 @@ BenchmarkResult steady_borehole(const BenchmarkContext& ctx) {
     for (double r : {R_i, 0.5, 1.0})
       worst_flux = std::max(worst_flux, std::abs(-2 * pi * r * d1(p, r, 1e-4 * r) - Q) / Q);
     res.metrics.push_back({.name = "Eq. 23: p_h, b = " + std::to_string(b).substr(0, 3),
-                           .value = p_h, .reference = -Q / (2 * pi) * std::log(R_i), .tolerance = 1e-12,
-                           .comparison = Comparison::rel_error, .justification = "round-off"});
+                           .value = p_h,
+                           .reference = -Q / (2 * pi) * std::log(R_i),
+                           .tolerance = 1e-12,
+                           .comparison = Comparison::rel_error,
+                           .justification = "round-off"});
   }
-  res.metrics.push_back({.name = "B2 residual (max over r and b = 0..1), relative to max |u''|", .value = worst_b2,
-                         .tolerance = 1e-7, .comparison = Comparison::at_most, .justification = fd_reason});
-  res.metrics.push_back({.name = "inner BC: |sigma_mr(R_i) + (1-b) p_h| / p_h", .value = worst_inner,
-                         .tolerance = 1e-12, .comparison = Comparison::at_most, .justification = "round-off"});
-  res.metrics.push_back({.name = "outer BC: |sigma_mr(1)| / p_h", .value = worst_outer, .tolerance = 1e-12,
-                         .comparison = Comparison::at_most, .justification = "round-off"});
-  res.metrics.push_back({.name = "stresses = plane-strain Hooke of u (max error / p_h)", .value = worst_hooke,
-                         .tolerance = 1e-7, .comparison = Comparison::at_most, .justification = fd_reason});
-  res.metrics.push_back({.name = "flux -2 pi r dp/dr = Q at R_i, 0.5, 1 (rel.)", .value = worst_flux,
-                         .tolerance = 1e-8, .comparison = Comparison::at_most, .justification = fd_reason});
+  res.metrics.push_back({.name = "B2 residual (max over r and b = 0..1), relative to max |u''|",
+                         .value = worst_b2,
+                         .tolerance = 1e-7,
+                         .comparison = Comparison::at_most,
+                         .justification = fd_reason});
+  res.metrics.push_back({.name = "inner BC: |sigma_mr(R_i) + (1-b) p_h| / p_h",
+                         .value = worst_inner,
+                         .tolerance = 1e-12,
+                         .comparison = Comparison::at_most,
+                         .justification = "round-off"});
+  res.metrics.push_back({.name = "outer BC: |sigma_mr(1)| / p_h",
+                         .value = worst_outer,
+                         .tolerance = 1e-12,
+                         .comparison = Comparison::at_most,
+                         .justification = "round-off"});
+  res.metrics.push_back({.name = "stresses = plane-strain Hooke of u (max error / p_h)",
+                         .value = worst_hooke,
+                         .tolerance = 1e-7,
+                         .comparison = Comparison::at_most,
+                         .justification = fd_reason});
+  res.metrics.push_back({.name = "flux -2 pi r dp/dr = Q at R_i, 0.5, 1 (rel.)",
+                         .value = worst_flux,
+                         .tolerance = 1e-8,
+                         .comparison = Comparison::at_most,
+                         .justification = fd_reason});
 
   const std::filesystem::path csv_path = ctx.data_dir / "analytic_steady_borehole.csv";
   std::ofstream csv = core::open_for_writing(csv_path);
@@ -109,8 +127,9 @@ BenchmarkResult steady_borehole(const BenchmarkContext& ctx) {
   res.figures.push_back({"verify_steady_borehole.py", "verify_steady_borehole.png",
                          "Steady borehole (corrected Appendix B), Q = 0.01, nu = 0.25, R_i = 0.138: p, u_r and "
                          "effective stresses for b = 0.2, 0.5, 0.8."});
-  res.notes.push_back("The printed B5-B9 contain misprints; the implemented forms are re-derived and listed in "
-                      "`docs/errata.md`. This benchmark checks the implemented forms against B2 itself.");
+  res.notes.push_back(
+      "The printed B5-B9 contain misprints; the implemented forms are re-derived and listed in "
+      "`docs/errata.md`. This benchmark checks the implemented forms against B2 itself.");
   core::close_checked(csv, csv_path);
   return res;
 }
@@ -146,16 +165,22 @@ BenchmarkResult rudnicki(const BenchmarkContext& ctx) {
       mech_scale = std::max(mech_scale, std::abs(eta * d1(p_r, r, h)));
     }
     res.metrics.push_back({.name = "diffusion residual S p_t - lap p (max / max |lap p|)" + tag,
-                           .value = diffusion / diffusion_scale, .tolerance = 1e-6,
-                           .comparison = Comparison::at_most, .justification = fd_reason});
+                           .value = diffusion / diffusion_scale,
+                           .tolerance = 1e-6,
+                           .comparison = Comparison::at_most,
+                           .justification = fd_reason});
     res.metrics.push_back({.name = "mechanics residual of Eq. A3 (max / max |eta p'|)" + tag,
-                           .value = mech / mech_scale, .tolerance = 1e-6, .comparison = Comparison::at_most,
+                           .value = mech / mech_scale,
+                           .tolerance = 1e-6,
+                           .comparison = Comparison::at_most,
                            .justification = fd_reason});
     // Near the source the flux through a circle of radius r is Q exp(-S r^2/4t) -> Q.
     const double r0 = 1e-5 * std::sqrt(t / S);
     auto p_r = [&](double x) { return sol.pressure(x, t); };
     res.metrics.push_back({.name = "near-source flux -2 pi r p_r at r = 1e-5 sqrt(t/S)" + tag,
-                           .value = -2 * pi * r0 * d1(p_r, r0, 1e-3 * r0), .reference = Q, .tolerance = 1e-6,
+                           .value = -2 * pi * r0 * d1(p_r, r0, 1e-3 * r0),
+                           .reference = Q,
+                           .tolerance = 1e-6,
                            .comparison = Comparison::rel_error,
                            .justification = "exact flux is Q exp(-S r^2/4t) = Q (1 - 2.5e-11) here; FD error ~1e-10"});
     // Fluid content: E/M p + f b eps_v integrated over the plane equals the injected volume Q t.
@@ -166,8 +191,11 @@ BenchmarkResult rudnicki(const BenchmarkContext& ctx) {
       return (m.E_over_M * sol.pressure(r, t) + f * m.b * eps_v) * 2 * pi * r;
     };
     const double r_max = std::sqrt(4 * t * 60 / S);  // exp(-60): the rest of the plane holds nothing
-    res.metrics.push_back({.name = "fluid content over the plane = Q t" + tag, .value = integrate(content, 0, r_max),
-                           .reference = Q * t, .tolerance = 1e-6, .comparison = Comparison::rel_error,
+    res.metrics.push_back({.name = "fluid content over the plane = Q t" + tag,
+                           .value = integrate(content, 0, r_max),
+                           .reference = Q * t,
+                           .tolerance = 1e-6,
+                           .comparison = Comparison::rel_error,
                            .justification = "GSL qags to 1e-10 of an integrand with FD strain (~1e-8)"});
     for (double r : linspace(1e-3, 0.08, 160)) w.row({f, r, sol.pressure(r, t), sol.radial_displacement(r, t)});
     (void)eta;
@@ -183,12 +211,18 @@ BenchmarkResult sneddon_closed_form(const BenchmarkContext&) {
   BenchmarkResult res;
   const SneddonCrack crack{1e-3, 0.1, 0.25};
   const double volume = integrate([&](double x) { return 2 * crack.half_aperture(x); }, -crack.c, crack.c);
-  res.metrics.push_back({.name = "crack volume: integral of 2w = pi c eps", .value = volume,
-                         .reference = crack.crack_volume(), .tolerance = 1e-9, .comparison = Comparison::rel_error,
+  res.metrics.push_back({.name = "crack volume: integral of 2w = pi c eps",
+                         .value = volume,
+                         .reference = crack.crack_volume(),
+                         .tolerance = 1e-9,
+                         .comparison = Comparison::rel_error,
                          .justification = "GSL qags to 1e-10 relative (square-root endpoint singularities)"});
   res.metrics.push_back({.name = "max half aperture w(0) = 2(1-nu^2) p c (Sneddon 1946, plane strain)",
-                         .value = crack.half_aperture(0), .reference = 2 * (1 - 0.25 * 0.25) * 1e-3 * 0.1,
-                         .tolerance = 1e-12, .comparison = Comparison::rel_error, .justification = "round-off"});
+                         .value = crack.half_aperture(0),
+                         .reference = 2 * (1 - 0.25 * 0.25) * 1e-3 * 0.1,
+                         .tolerance = 1e-12,
+                         .comparison = Comparison::rel_error,
+                         .justification = "round-off"});
   return res;
 }
 
@@ -203,19 +237,31 @@ BenchmarkResult lame_closed_form(const BenchmarkContext&) {
       const RadialState s = state(r);
       equilibrium = std::max(equilibrium, std::abs(d1(sr, r, 1e-3 * r) + (s.sigma_r - s.sigma_theta) / r));
     }
-    res.metrics.push_back({.name = label + ": equilibrium residual / p_i", .value = equilibrium / p_i,
-                           .tolerance = 1e-7, .comparison = Comparison::at_most, .justification = fd_reason});
-    res.metrics.push_back({.name = label + ": sigma_r(R_i) = -p_i", .value = state(R_i).sigma_r, .reference = -p_i,
-                           .tolerance = 1e-12, .comparison = Comparison::rel_error, .justification = "round-off"});
+    res.metrics.push_back({.name = label + ": equilibrium residual / p_i",
+                           .value = equilibrium / p_i,
+                           .tolerance = 1e-7,
+                           .comparison = Comparison::at_most,
+                           .justification = fd_reason});
+    res.metrics.push_back({.name = label + ": sigma_r(R_i) = -p_i",
+                           .value = state(R_i).sigma_r,
+                           .reference = -p_i,
+                           .tolerance = 1e-12,
+                           .comparison = Comparison::rel_error,
+                           .justification = "round-off"});
     const double outer = outer_is_displacement ? state(1.0).u_r : state(1.0).sigma_r;
-    res.metrics.push_back({.name = label + (outer_is_displacement ? ": u_r(1) = 0" : ": sigma_r(1) = -p_o") + " (/ p_i)",
-                           .value = (outer - outer_expected) / p_i, .tolerance = 1e-12,
-                           .comparison = Comparison::abs_error, .justification = "round-off"});
+    res.metrics.push_back(
+        {.name = label + (outer_is_displacement ? ": u_r(1) = 0" : ": sigma_r(1) = -p_o") + " (/ p_i)",
+         .value = (outer - outer_expected) / p_i,
+         .tolerance = 1e-12,
+         .comparison = Comparison::abs_error,
+         .justification = "round-off"});
   };
   const LameCylinder free_outer(p_i, 0.0, R_i, 1.0, nu);
   const LameCylinderFixedOuter fixed_outer(p_i, R_i, 1.0, nu);
-  check("free outer surface", [&](double r) { return free_outer.state(r); }, 0.0, false);
-  check("fixed outer surface", [&](double r) { return fixed_outer.state(r); }, 0.0, true);
+  check(
+      "free outer surface", [&](double r) { return free_outer.state(r); }, 0.0, false);
+  check(
+      "fixed outer surface", [&](double r) { return fixed_outer.state(r); }, 0.0, true);
   return res;
 }
 
@@ -235,7 +281,8 @@ void add_analytic_benchmarks(std::vector<Benchmark>& into) {
                   "Eq. C1's ellipse: its opened area against quadrature, its maximum against Sneddon (1946).",
                   Tier::quick, sneddon_closed_form});
   into.push_back({"analytic.lame", "Lamé thick-walled cylinder, plane strain",
-                  "Free and fixed outer surface: radial equilibrium and boundary conditions.", Tier::quick, lame_closed_form});
+                  "Free and fixed outer surface: radial equilibrium and boundary conditions.", Tier::quick,
+                  lame_closed_form});
 }
 
 }  // namespace hm::verification

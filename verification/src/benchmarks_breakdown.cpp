@@ -13,8 +13,8 @@
 // Data for figures/fig18_breakdown_pressure.py: <data>/<id>/{lattice,fdm1d,fdm1d_lattice_spacing,
 // breakdown_limits}.csv and one folder per lattice run as `hmlattice run` writes it.
 #include <algorithm>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <numeric>
@@ -22,9 +22,9 @@
 #include <string>
 #include <vector>
 
-#include "breakdown_1d.hpp"
 #include "borehole_fracture_report.hpp"
 #include "borehole_fracture_runs.hpp"
+#include "breakdown_1d.hpp"
 #include "hm/analytic/biot_modulus.hpp"
 #include "hm/analytic/breakdown_limits.hpp"
 #include "hm/case/run_case.hpp"
@@ -43,8 +43,8 @@ namespace {
 namespace fs = std::filesystem;
 namespace an = hm::analytic;
 namespace lt = hm::lattice2d;
-using borehole_fracture::RunOutcome;
 using borehole_fracture::mean_sd;
+using borehole_fracture::RunOutcome;
 using breakdown::GridStudy;
 using breakdown::GridStudyPlan;
 using cases::RunCase;
@@ -60,10 +60,10 @@ std::string ratio6(double x) {
 struct Plan {
   std::string id;  // the data folder and the labels' prefix
   std::vector<double> b = {0.2, 0.5, 0.8};
-  std::vector<double> Q;                       // lattice and 1D
-  std::vector<long long> N;                    // lattice resolutions
-  std::vector<unsigned long long> seeds;       // of the lattice and the strengths
-  std::vector<double> flux_node_Q;             // also with the flux-boundary node (N.front(), seed 1)
+  std::vector<double> Q;                  // lattice and 1D
+  std::vector<long long> N;               // lattice resolutions
+  std::vector<unsigned long long> seeds;  // of the lattice and the strengths
+  std::vector<double> flux_node_Q;        // also with the flux-boundary node (N.front(), seed 1)
   GridStudyPlan grid;
 };
 
@@ -186,8 +186,12 @@ struct Group {
 };
 
 Metric flag(const std::string& name, bool value, const std::string& why) {
-  return {.name = name, .value = value ? 1.0 : 0.0, .reference = 1.0, .tolerance = 0.0,
-          .comparison = Comparison::abs_error, .justification = why};
+  return {.name = name,
+          .value = value ? 1.0 : 0.0,
+          .reference = 1.0,
+          .tolerance = 0.0,
+          .comparison = Comparison::abs_error,
+          .justification = why};
 }
 
 void add_run_metrics(const RunOutcome& o, std::vector<Metric>& m) {
@@ -198,20 +202,25 @@ void add_run_metrics(const RunOutcome& o, std::vector<Metric>& m) {
   m.push_back(flag(tag + "first break tensile, at the borehole wall (|r - R_i| <= its beam length)",
                    o.mode_first == lt::FailureMode::tensile && std::abs(o.r_first - o.R_i) <= o.length_first,
                    "Section 3.5: breakdown is tensile failure at the wall, where the hoop stress is the largest "
-                   "tension (measured: r = " + fmt(o.r_first) + ", " + hm::core::name_of(o.mode_first) + ")"));
+                   "tension (measured: r = " +
+                       fmt(o.r_first) + ", " + hm::core::name_of(o.mode_first) + ")"));
 }
 
 /// Below q_min the 1D wall's stress rises to its steady value, Q/q_min of the criterion (linear in Q),
 /// and never fails.
-Metric never_fails_metric(const an::DimensionlessParameters& d, const an::BreakdownLimits& lim, const breakdown::GridRun& g) {
+Metric never_fails_metric(const an::DimensionlessParameters& d, const an::BreakdownLimits& lim,
+                          const breakdown::GridRun& g) {
   return {.name = "1D, b = " + fmt(d.material.b) + ", Q = " + fmt(d.Q) + " (" + fmt(d.Q / lim.q_min) +
                   " q_min, n_r = " + std::to_string(g.n_r) + "): largest wall failure ratio over the run" +
                   (g.failed ? " (FAILED)" : ""),
-          .value = g.failed ? 1.0 : g.max_wall_ratio, .reference = d.Q / lim.q_min, .tolerance = 2e-3,
+          .value = g.failed ? 1.0 : g.max_wall_ratio,
+          .reference = d.Q / lim.q_min,
+          .tolerance = 2e-3,
           .comparison = Comparison::abs_error,
-          .justification = "below q_min the unfractured wall never fails: its stress rises monotonically to the "
-                           "steady value, Q/q_min of T_u (docs/breakdown.md sections 3, 6 (a)); the grid over-reads "
-                           "the steady hoop stress by 0.06-0.09% at n_r = 400, the run ends at t* <= 300; 2e-3"};
+          .justification =
+              "below q_min the unfractured wall never fails: its stress rises monotonically to the "
+              "steady value, Q/q_min of T_u (docs/breakdown.md sections 3, 6 (a)); the grid over-reads "
+              "the steady hoop stress by 0.06-0.09% at n_r = 400, the run ends at t* <= 300; 2e-3"};
 }
 
 /// The 1D model's p_b/p_b_slow at Q = 1.1 q_min as studies/breakdown_limits.cpp measured it (n_r = 4000,
@@ -224,8 +233,11 @@ void add_q_min_metrics(an::DimensionlessParameters d, const an::BreakdownLimits&
   const std::string tag = "1D, b = " + fmt(d.material.b) + ", ";
   d.Q = 1.1 * lim.q_min;
   const breakdown::GridRun slow = breakdown::run_grid(d, 1600);
-  m.push_back({.name = tag + "Q = 1.1 q_min: p_b / p_b_slow", .value = slow.p_b / lim.p_b_slow,
-               .reference = measured_slow_ratio(d.material.b), .tolerance = 2e-4, .comparison = Comparison::abs_error,
+  m.push_back({.name = tag + "Q = 1.1 q_min: p_b / p_b_slow",
+               .value = slow.p_b / lim.p_b_slow,
+               .reference = measured_slow_ratio(d.material.b),
+               .tolerance = 2e-4,
+               .comparison = Comparison::abs_error,
                .justification = "regression guard on docs/breakdown.md section 6 (b) (n_r = 4000; p_b rises from "
                                 "p_b_slow linearly in Q/q_min - 1): n_r = 1600 differs from 6400 by < 6e-5 at "
                                 "these rates (grid table), the study's nu (0.25) from the calibrated one by "
@@ -260,13 +272,15 @@ struct Fig18Record {
         limits_csv(limits_out, {"b", "q_min", "p_b_slow", "p_b_fast", "p_b_jacketed", "tensile_strength"}),
         main{"Breakdown pressure p_b/E against Q: lattice first break (" + std::to_string(p.seeds.size()) +
                  " seeds), 1D model's first wall failure, closed-form limits (all with the calibrated lattice's nu)",
-             main_header(p), {}},
+             main_header(p),
+             {}},
         grid{"1D grid study per (b, Q): p_b at n_r = 400, x4, ... until it moves by < 1e-3 (cap " +
                  std::to_string(p.grid.n_r_max) + "); observed order of the last three levels; Richardson (order 2)",
              {"b", "Q", "p_b / p_b_fast per n_r", "wall layer sqrt(t_b/S) / dr of the third-finest", "observed order",
               "last change", "Richardson", "Richardson / p_b_fast", "s"},
              {}},
-        node{"Borehole node (N = " + std::to_string(p.N.front()) + ", seed 1): Eq. 16's storage node (the "
+        node{"Borehole node (N = " + std::to_string(p.N.front()) +
+                 ", seed 1): Eq. 16's storage node (the "
                  "cases') against the 1D model's flux boundary (borehole_storage = none)",
              {"b", "Q", "node", "p_h before / at first break", "t* first break", "steps to first break",
               "p_h/p_h,1D - 1 at the last step before", "1D converged"},
@@ -309,13 +323,15 @@ std::vector<GridStudy> fig18_grid_studies(const Plan& p, const RunCase& base, co
   std::vector<GridStudy> studies;
   for (double b : p.b)
     for (double Q : p.Q) {
-      an::DimensionlessParameters d = borehole_fracture::reference_parameters(lattice_case(base, b, Q, p.N.front(), 1, false));
+      an::DimensionlessParameters d =
+          borehole_fracture::reference_parameters(lattice_case(base, b, Q, p.N.front(), 1, false));
       studies.push_back(breakdown::run_grid_study(d, p.grid));
       if (!ctx.progress) continue;
       *ctx.progress << p.id << " 1D b = " << fmt(b) << ", Q = " << fmt(Q) << ":";
       const double p_b_fast = an::fast_breakdown_pressure(d);
       for (const auto& g : studies.back().levels)
-        *ctx.progress << " n_r " << g.n_r << " p_b/p_b_fast " << ratio6(g.p_b / p_b_fast) << " (" << fmt(g.seconds) << " s);";
+        *ctx.progress << " n_r " << g.n_r << " p_b/p_b_fast " << ratio6(g.p_b / p_b_fast) << " (" << fmt(g.seconds)
+                      << " s);";
       *ctx.progress << " order " << fmt(studies.back().observed_order) << ", Richardson/p_b_fast "
                     << ratio6(studies.back().richardson / p_b_fast) << std::endl;
     }
@@ -330,7 +346,8 @@ double record_fig18_1d(const Plan& p, const an::DimensionlessParameters& d, cons
   double seconds = 0.0;
   std::string levels;
   for (const auto& g : s.levels) {
-    levels += (levels.empty() ? "" : "; ") + std::to_string(g.n_r) + ": " + (g.failed ? ratio6(g.p_b / lim.p_b_fast) : "none");
+    levels += (levels.empty() ? "" : "; ") + std::to_string(g.n_r) + ": " +
+              (g.failed ? ratio6(g.p_b / lim.p_b_fast) : "none");
     seconds += g.seconds;
   }
   const bool failed = s.finest().failed;
@@ -384,8 +401,10 @@ Fig18LatticeCells record_fig18_lattice(const Plan& p, const RunCase& base, const
     }
     const RunCase c = lattice_case(base, b, Q, N, 1, false);
     const breakdown::GridRun at_h = breakdown::run_grid(d, lattice_spacing_n_r(c));
-    rec.spacing_csv.row({b, Q, static_cast<double>(N), static_cast<double>(at_h.n_r), at_h.failed ? 1.0 : 0.0, at_h.p_b});
-    cells.spacing.push_back((at_h.failed ? fmt(at_h.p_b) : std::string("none")) + " (" + std::to_string(at_h.n_r) + ")");
+    rec.spacing_csv.row(
+        {b, Q, static_cast<double>(N), static_cast<double>(at_h.n_r), at_h.failed ? 1.0 : 0.0, at_h.p_b});
+    cells.spacing.push_back((at_h.failed ? fmt(at_h.p_b) : std::string("none")) + " (" + std::to_string(at_h.n_r) +
+                            ")");
     for (const auto& o : g.runs) rec.add_run(o, b, Q, N, false, metrics);
     if (N == p.N.front() && std::find(p.flux_node_Q.begin(), p.flux_node_Q.end(), Q) != p.flux_node_Q.end()) {
       const RunCase fc = lattice_case(base, b, Q, N, 1, true);
@@ -393,8 +412,8 @@ Fig18LatticeCells record_fig18_lattice(const Plan& p, const RunCase& base, const
       rec.add_run(flux, b, Q, N, true, metrics);
       for (const RunOutcome* o : std::vector<const RunOutcome*>{&g.runs.front(), &flux})
         rec.node.rows.push_back({fmt(b), fmt(Q), o == &flux ? "flux boundary (1D's)" : "Eq. 16 storage",
-                                 fmt(o->p_before) + " / " + fmt(o->p_first), fmt(o->t_first), std::to_string(o->n_steps),
-                                 fmt(o->pre_signed_last), fmt(converged)});
+                                 fmt(o->p_before) + " / " + fmt(o->p_first), fmt(o->t_first),
+                                 std::to_string(o->n_steps), fmt(o->pre_signed_last), fmt(converged)});
     }
   }
   return cells;
@@ -402,16 +421,23 @@ Fig18LatticeCells record_fig18_lattice(const Plan& p, const RunCase& base, const
 
 // The metrics over every (b, Q).
 void add_fig18_summary_metrics(const Plan& p, const Fig18Record& rec, std::vector<Metric>& metrics) {
-  metrics.push_back({.name = "max over b |1D p_b / p_b_fast - 1| at Q = " + fmt(p.Q.back()) + " (converged: Richardson)",
-                     .value = rec.worst_fast, .reference = 0.0, .tolerance = 1e-3, .comparison = Comparison::at_most,
-                     .justification = "docs/breakdown.md section 6: the 1D model is within 0.12% of p_b_fast from "
-                                      "Q = 0.01 up once its grid resolves the wall layer (b), and its Q = 1 "
-                                      "Richardson value within 4e-6 (c); 1e-3 leaves the growing steps' time "
-                                      "error (~1e-5 here) and the finite rate's deficit (measured <= 1.2e-4 at "
-                                      "Q = 0.1) room"});
+  metrics.push_back(
+      {.name = "max over b |1D p_b / p_b_fast - 1| at Q = " + fmt(p.Q.back()) + " (converged: Richardson)",
+       .value = rec.worst_fast,
+       .reference = 0.0,
+       .tolerance = 1e-3,
+       .comparison = Comparison::at_most,
+       .justification = "docs/breakdown.md section 6: the 1D model is within 0.12% of p_b_fast from "
+                        "Q = 0.01 up once its grid resolves the wall layer (b), and its Q = 1 "
+                        "Richardson value within 4e-6 (c); 1e-3 leaves the growing steps' time "
+                        "error (~1e-5 here) and the finite rate's deficit (measured <= 1.2e-4 at "
+                        "Q = 0.1) room"});
   metrics.push_back({.name = "lowest observed order of the 1D grid studies whose coarsest level has dr <= layer/3 (" +
                              rec.lowest_order_where + ")",
-                     .value = rec.lowest_order, .reference = 2.0, .tolerance = 1.5, .comparison = Comparison::at_least,
+                     .value = rec.lowest_order,
+                     .reference = 2.0,
+                     .tolerance = 1.5,
+                     .comparison = Comparison::at_least,
                      .justification = "the 1D scheme is second order in dr once dr resolves the wall layer "
                                       "(docs/breakdown.md 6(c): 2.00-2.02), the layer being sqrt(t_b/S); 1.5 "
                                       "allows the higher-order terms at dr = layer/3 (measured 1.94-2.00 in the "
@@ -419,28 +445,39 @@ void add_fig18_summary_metrics(const Plan& p, const Fig18Record& rec, std::vecto
   metrics.push_back(flag("every failing 1D wall fails in tension (the lattice beams' criterion)", rec.every_1d_tensile,
                          "docs/breakdown.md: the Coulomb stress of Eq. 11 is 0.30-0.36 C_u at each limit, far from "
                          "failure"));
-  metrics.push_back({.name = "lattice N = " + std::to_string(p.N.back()) + " mean p_b / 1D converged p_b: lowest over (b, Q)",
-                     .value = rec.lattice_low, .reference = 1.0, .tolerance = 0.0, .comparison = Comparison::at_least,
-                     .justification = "information: the lattice's wall row over-reads the hoop stress by ~1.2-1.4 "
-                                      "(docs/lattice.md) and one beam of the scattered strengths breaks first, so "
-                                      "it breaks below the continuum; its borehole node also differs (notes)",
-                     .gating = false});
-  metrics.push_back({.name = "lattice N = " + std::to_string(p.N.back()) + " mean p_b / 1D converged p_b: highest over (b, Q)",
-                     .value = rec.lattice_high, .reference = 1.0, .tolerance = 1.0, .comparison = Comparison::at_most,
-                     .justification = "information (see the lowest)", .gating = false});
+  metrics.push_back(
+      {.name = "lattice N = " + std::to_string(p.N.back()) + " mean p_b / 1D converged p_b: lowest over (b, Q)",
+       .value = rec.lattice_low,
+       .reference = 1.0,
+       .tolerance = 0.0,
+       .comparison = Comparison::at_least,
+       .justification = "information: the lattice's wall row over-reads the hoop stress by ~1.2-1.4 "
+                        "(docs/lattice.md) and one beam of the scattered strengths breaks first, so "
+                        "it breaks below the continuum; its borehole node also differs (notes)",
+       .gating = false});
+  metrics.push_back(
+      {.name = "lattice N = " + std::to_string(p.N.back()) + " mean p_b / 1D converged p_b: highest over (b, Q)",
+       .value = rec.lattice_high,
+       .reference = 1.0,
+       .tolerance = 1.0,
+       .comparison = Comparison::at_most,
+       .justification = "information (see the lowest)",
+       .gating = false});
 }
 
 // The figure and the notes.
 void add_fig18_figure_and_notes(const Plan& p, const borehole_fracture::RunSource& source, BenchmarkResult& res) {
   res.figures.push_back({"fig18_breakdown_pressure.py", "fig18_breakdown_pressure.png",
-                         "Breakdown pressure against Q (" + p.id + "): lattice first breaks per resolution (markers: "
-                         "seeds), the converged 1D model (solid), the 1D model at the lattice's spacing (thin), "
-                         "the closed-form limits (dashed: slow, dash-dotted: fast) and T_u/E (dotted).",
+                         "Breakdown pressure against Q (" + p.id +
+                             "): lattice first breaks per resolution (markers: "
+                             "seeds), the converged 1D model (solid), the 1D model at the lattice's spacing (thin), "
+                             "the closed-form limits (dashed: slow, dash-dotted: fast) and T_u/E (dotted).",
                          p.id});
   res.notes.push_back(
       "Three models of one breakdown. The lattice's is p_h of the step that breaks its first beam (Section 3.5), "
       "with the borehole node of cases/sweep_fig18_quick.toml: Eq. 16 as printed, with storage (E/M) V_h and b dV_h "
-      "(errata E15). The 1D model's is p_h when its wall's effective hoop stress first reaches T_u (first_wall_failure), "
+      "(errata E15). The 1D model's is p_h when its wall's effective hoop stress first reaches T_u "
+      "(first_wall_failure), "
       "with a flux-boundary borehole, no storage; the limits are that 1D model's closed forms (docs/breakdown.md). "
       "All three use the calibrated lattice's nu and Eq. 22's E/M at each b. Steps: the lattice's scale with 1/Q "
       "(the case's volume per step at Q = 0.01), the 1D model's with the half-space failure time "
@@ -448,7 +485,8 @@ void add_fig18_figure_and_notes(const Plan& p, const borehole_fracture::RunSourc
   res.notes.push_back(
       "Why the lattice breaks below the 1D model (column lattice / 1D): its wall row over-reads the hoop stress "
       "by ~1.2-1.4 (docs/lattice.md, 'Why the wall over-reads'), and with uniform strengths of width 0.05 the "
-      "weakest, most loaded of the ~15-60 wall beams (N = 1000 to 2e4) goes first; both lower p_b by tens of percent, and neither is "
+      "weakest, most loaded of the ~15-60 wall beams (N = 1000 to 2e4) goes first; both lower p_b by tens of percent, "
+      "and neither is "
       "a property of the continuum. The 1D model on a grid of the lattice's own spacing (n_r = (1 - R_i)/h) does "
       "not reproduce it: it shows what the wall layer's under-resolution alone does to a continuum's p_b. The "
       "borehole nodes differ too: Eq. 16's storage holds the lattice's p_h 70% below the 1D model's before the "
@@ -496,7 +534,8 @@ BenchmarkResult run_fig18(const Plan& p, const BenchmarkContext& ctx) {
       row.push_back((s.finest().failed ? fmt(s.finest().p_b) : std::string("none")) + " (" +
                     std::to_string(s.finest().n_r) + ")");
       row.insert(row.end(), cells.spacing.begin(), cells.spacing.end());
-      row.insert(row.end(), {fmt(lim.p_b_slow), fmt(lim.p_b_fast), fmt(lim.p_b_jacketed), paper_statement(Q, lim.q_min)});
+      row.insert(row.end(),
+                 {fmt(lim.p_b_slow), fmt(lim.p_b_fast), fmt(lim.p_b_jacketed), paper_statement(Q, lim.q_min)});
       rec.main.rows.push_back(row);
     }
   }
@@ -510,23 +549,25 @@ BenchmarkResult run_fig18(const Plan& p, const BenchmarkContext& ctx) {
 }  // namespace
 
 void add_breakdown_benchmarks(std::vector<Benchmark>& into) {
-  into.push_back({.id = "lattice2d.fig18_quick",
-                  .title = "Breakdown pressure against Q, b = 0.2, 0.5, 0.8: lattice N = 1000, 1D model, limits (Fig. 18, quick)",
-                  .description = "The case of cases/sweep_fig18_quick.toml (Eq. 16's borehole node) to its first break "
-                                 "at Q = 1e-3, 1e-2, 1e-1, seeds 1, 2 (and the flux-boundary node at Q = 1e-2); the "
-                                 "1D model's first wall failure with its grid study; the closed-form limits.",
-                  .tier = Tier::quick,
-                  .run = [](const BenchmarkContext& ctx) { return run_fig18(quick_plan(), ctx); },
-                  .planned_runs = [] { return planned(quick_plan()); },
-                  .paper_figures = {"18"}});
-  into.push_back({.id = "lattice2d.fig18",
-                  .title = "Breakdown pressure against Q, b = 0.2, 0.5, 0.8: lattice N = 5000 and 2e4, 1D model, limits (Fig. 18)",
-                  .description = "As the quick benchmark at nine rates from below q_min to Q = 1, seeds 1, 2, 3 at two "
-                                 "resolutions (and the flux-boundary node at Q = 1e-3, 1e-2, 1e-1, N = 5000).",
-                  .tier = Tier::paper,
-                  .run = [](const BenchmarkContext& ctx) { return run_fig18(paper_plan(), ctx); },
-                  .planned_runs = [] { return planned(paper_plan()); },
-                  .paper_figures = {"18"}});
+  into.push_back(
+      {.id = "lattice2d.fig18_quick",
+       .title = "Breakdown pressure against Q, b = 0.2, 0.5, 0.8: lattice N = 1000, 1D model, limits (Fig. 18, quick)",
+       .description = "The case of cases/sweep_fig18_quick.toml (Eq. 16's borehole node) to its first break "
+                      "at Q = 1e-3, 1e-2, 1e-1, seeds 1, 2 (and the flux-boundary node at Q = 1e-2); the "
+                      "1D model's first wall failure with its grid study; the closed-form limits.",
+       .tier = Tier::quick,
+       .run = [](const BenchmarkContext& ctx) { return run_fig18(quick_plan(), ctx); },
+       .planned_runs = [] { return planned(quick_plan()); },
+       .paper_figures = {"18"}});
+  into.push_back(
+      {.id = "lattice2d.fig18",
+       .title = "Breakdown pressure against Q, b = 0.2, 0.5, 0.8: lattice N = 5000 and 2e4, 1D model, limits (Fig. 18)",
+       .description = "As the quick benchmark at nine rates from below q_min to Q = 1, seeds 1, 2, 3 at two "
+                      "resolutions (and the flux-boundary node at Q = 1e-3, 1e-2, 1e-1, N = 5000).",
+       .tier = Tier::paper,
+       .run = [](const BenchmarkContext& ctx) { return run_fig18(paper_plan(), ctx); },
+       .planned_runs = [] { return planned(paper_plan()); },
+       .paper_figures = {"18"}});
 }
 
 }  // namespace hm::verification

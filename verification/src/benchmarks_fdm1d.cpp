@@ -8,13 +8,13 @@
 #include <numbers>
 
 #include "hm/analytic/steady_borehole.hpp"
+#include "hm/case/fdm1d_case.hpp"
+#include "hm/case/fdm1d_output.hpp"
 #include "hm/core/validation.hpp"
 #include "hm/fdm1d/fdm1d.hpp"
 #include "hm/fdm1d/odeint_reference.hpp"
 #include "hm/fdm1d/section32.hpp"
 #include "hm/verification/benchmark.hpp"
-#include "hm/case/fdm1d_case.hpp"
-#include "hm/case/fdm1d_output.hpp"
 #include "report_writer.hpp"
 
 namespace hm::verification {
@@ -34,7 +34,9 @@ using fdm1d::Fdm1dResult;
 double observed_order(double coarse_error, double fine_error) { return std::log2(coarse_error / fine_error); }
 
 Metric fdm1d_balance_metric(const std::string& label, double worst) {
-  return {.name = "volume balance, max relative error per step (" + label + ")", .value = worst, .tolerance = 1e-10,
+  return {.name = "volume balance, max relative error per step (" + label + ")",
+          .value = worst,
+          .tolerance = 1e-10,
           .comparison = Comparison::at_most,
           .justification = "the scheme is conservative by construction: round-off of a sparse LU solve"};
 }
@@ -46,8 +48,8 @@ BenchmarkResult steady_state(const BenchmarkContext& ctx) {
   const auto params = analytic::table1_borehole(0.5);
   const analytic::SteadyBorehole exact(params.Q, params.material.b, params.material.nu, params.R_i);
   const double p_h = exact.borehole_pressure();
-  const std::vector<int> grids = ctx.tier == Tier::paper ? std::vector<int>{50, 100, 200, 400, 800}
-                                                         : std::vector<int>{50, 100, 200};
+  const std::vector<int> grids =
+      ctx.tier == Tier::paper ? std::vector<int>{50, 100, 200, 400, 800} : std::vector<int>{50, 100, 200};
   Table table{"Steady state (t* = 8) against Appendix B, b = 0.5, Q = 0.01: max-norm errors / their scale",
               {"n_r", "dr", "p (B3) / p_h", "order", "u_r (B6) / max u_r", "order", "sigma_theta(R_i) (B8) / exact",
                "order", "sigma_r (B7), sigma_z (B9) / max sigma_theta"},
@@ -90,13 +92,21 @@ BenchmarkResult steady_state(const BenchmarkContext& ctx) {
   const char* order_reason = "second-order central differences and second-order boundary closures: expect 2";
   for (auto [name, e] : {std::pair{"p", &ep}, std::pair{"u_r", &eu}, std::pair{"sigma_theta(R_i)", &es}}) {
     const double order = observed_order((*e)[k - 1], (*e)[k]);
-    res.metrics.push_back({.name = std::string("observed order in dr of ") + name + " (finest pair)", .value = order,
-                           .tolerance = 1.8, .comparison = Comparison::at_least, .justification = order_reason});
-    res.metrics.push_back({.name = std::string("|order - 2| of ") + name, .value = std::abs(order - 2.0),
-                           .tolerance = 0.3, .comparison = Comparison::at_most, .justification = order_reason});
+    res.metrics.push_back({.name = std::string("observed order in dr of ") + name + " (finest pair)",
+                           .value = order,
+                           .tolerance = 1.8,
+                           .comparison = Comparison::at_least,
+                           .justification = order_reason});
+    res.metrics.push_back({.name = std::string("|order - 2| of ") + name,
+                           .value = std::abs(order - 2.0),
+                           .tolerance = 0.3,
+                           .comparison = Comparison::at_most,
+                           .justification = order_reason});
   }
-  res.metrics.push_back({.name = "u_r error / max u_r at n_r = " + std::to_string(grids.back()), .value = eu[k],
-                         .tolerance = 5e-3, .comparison = Comparison::at_most,
+  res.metrics.push_back({.name = "u_r error / max u_r at n_r = " + std::to_string(grids.back()),
+                         .value = eu[k],
+                         .tolerance = 5e-3,
+                         .comparison = Comparison::at_most,
                          .justification = "the measured O(dr^2) error of this table at this n_r, with margin 2-3x"});
   res.metrics.push_back(fdm1d_balance_metric("all grids", worst_balance));
   return res;
@@ -134,14 +144,21 @@ BenchmarkResult time_convergence(const BenchmarkContext& ctx) {
   res.tables.push_back(table);
   const double order = observed_order(errors[errors.size() - 2], errors.back());
   const char* reason = "implicit Euler is first order; the reference's own error (rel. 1e-10) is far below";
-  res.metrics.push_back({.name = "observed order in dt (finest pair)", .value = order, .tolerance = 0.9,
-                         .comparison = Comparison::at_least, .justification = reason});
-  res.metrics.push_back({.name = "|order - 1|", .value = std::abs(order - 1.0), .tolerance = 0.15,
-                         .comparison = Comparison::at_most, .justification = reason});
-  res.notes.push_back("The Odeint reference integrates the same semi-discrete system (u eliminated through the "
-                      "mechanics rows) with an adaptive 4th-order Rosenbrock method, so the difference is "
-                      "implicit Euler's time error alone. " + std::to_string(reference.n_steps) +
-                      " Rosenbrock steps.");
+  res.metrics.push_back({.name = "observed order in dt (finest pair)",
+                         .value = order,
+                         .tolerance = 0.9,
+                         .comparison = Comparison::at_least,
+                         .justification = reason});
+  res.metrics.push_back({.name = "|order - 1|",
+                         .value = std::abs(order - 1.0),
+                         .tolerance = 0.15,
+                         .comparison = Comparison::at_most,
+                         .justification = reason});
+  res.notes.push_back(
+      "The Odeint reference integrates the same semi-discrete system (u eliminated through the "
+      "mechanics rows) with an adaptive 4th-order Rosenbrock method, so the difference is "
+      "implicit Euler's time error alone. " +
+      std::to_string(reference.n_steps) + " Rosenbrock steps.");
   return res;
 }
 
@@ -164,10 +181,16 @@ BenchmarkResult q_scaling(const BenchmarkContext&) {
       u_scale = std::max(u_scale, std::abs(high.snapshots[k].u_r[i]));
     }
   const char* reason = "the model is linear in Q: round-off of the sparse solves (~1e-15) accumulated over steps";
-  res.metrics.push_back({.name = "max |p/Q (Q = 0.01) - p/Q (Q = 1)| / max |p/Q|", .value = dp / p_scale,
-                         .tolerance = 1e-10, .comparison = Comparison::at_most, .justification = reason});
-  res.metrics.push_back({.name = "max |u/Q (Q = 0.01) - u/Q (Q = 1)| / max |u/Q|", .value = du / u_scale,
-                         .tolerance = 1e-10, .comparison = Comparison::at_most, .justification = reason});
+  res.metrics.push_back({.name = "max |p/Q (Q = 0.01) - p/Q (Q = 1)| / max |p/Q|",
+                         .value = dp / p_scale,
+                         .tolerance = 1e-10,
+                         .comparison = Comparison::at_most,
+                         .justification = reason});
+  res.metrics.push_back({.name = "max |u/Q (Q = 0.01) - u/Q (Q = 1)| / max |u/Q|",
+                         .value = du / u_scale,
+                         .tolerance = 1e-10,
+                         .comparison = Comparison::at_most,
+                         .justification = reason});
   return res;
 }
 
@@ -175,11 +198,12 @@ BenchmarkResult q_scaling(const BenchmarkContext&) {
 
 BenchmarkResult section32(const BenchmarkContext&) {
   BenchmarkResult res;
-  Table table{"Section 3.2 measured on the 1D model (Q = 0.01, nu = 0.25, R_i = 0.138, E/M by Eq. 22; "
-              "n_r = 400; Q-independent)",
-              {"b", "vol_strain", "t99 (ours)", "t99 (paper)", "min p / p_h", "at r*", "at t*",
-               "C_u/T_u threshold, steady", "threshold, transient min", "(paper)"},
-              {}};
+  Table table{
+      "Section 3.2 measured on the 1D model (Q = 0.01, nu = 0.25, R_i = 0.138, E/M by Eq. 22; "
+      "n_r = 400; Q-independent)",
+      {"b", "vol_strain", "t99 (ours)", "t99 (paper)", "min p / p_h", "at r*", "at t*", "C_u/T_u threshold, steady",
+       "threshold, transient min", "(paper)"},
+      {}};
   Table probe_table{"Fig. 10D: how deep and how long the pressure stays negative at the probes (plane strain)",
                     {"b", "probe r*", "min p", "at t*", "time negative", "last negative t*"},
                     {}};
@@ -200,17 +224,21 @@ BenchmarkResult section32(const BenchmarkContext&) {
                             fmt(d.wall_ratio_min), "≈ 5.5"});
       if (vs == VolStrain::plane_strain && b > 0)
         for (const auto& pr : d.probes)
-          probe_table.rows.push_back({fmt(b), fmt(pr.r), fmt(pr.p_min), fmt(pr.t_min), fmt(pr.time_negative),
-                                      fmt(pr.last_negative_t)});
+          probe_table.rows.push_back(
+              {fmt(b), fmt(pr.r), fmt(pr.p_min), fmt(pr.t_min), fmt(pr.time_negative), fmt(pr.last_negative_t)});
       const std::string tag = "b = " + fmt(b) + ", " + core::name_of(vs);
       // The paper's t99 values are read off its text to about two digits; shown, not gated.
-      res.metrics.push_back({.name = "t99, " + tag, .value = d.t_99, .reference = paper, .tolerance = 0.05,
+      res.metrics.push_back({.name = "t99, " + tag,
+                             .value = d.t_99,
+                             .reference = paper,
+                             .tolerance = 0.05,
                              .comparison = Comparison::abs_error,
                              .justification = "paper value given to ~2 digits (Section 3.2); information only",
                              .gating = false});
       if (vs == VolStrain::plane_strain && b > 0)
         res.metrics.push_back({.name = "transient negative pressure exists, " + tag + " (min p / p_h)",
-                               .value = d.min_pressure.p / d.p_h_steady, .tolerance = 0.0,
+                               .value = d.min_pressure.p / d.p_h_steady,
+                               .tolerance = 0.0,
                                .comparison = Comparison::at_most,
                                .justification = "Fig. 10D: the Mandel-Cryer dip must be negative for b > 0"});
     }
@@ -223,7 +251,8 @@ BenchmarkResult section32(const BenchmarkContext&) {
       "below it. The paper quotes one value, ≈ 5.5, for all b; we find it depends on b (6.00 at b = 0 falling to "
       "5.04 at b = 1 at steady state; K = [(1+mu_i^2)^(1/2)+mu_i]^2 = 5.04 is the b = 1 limit). The transient "
       "minimum is taken over all steps with sigma_1 > 0; the earliest steps resolve the wall field poorly, so treat "
-      "it as indicative. docs/errata.md E8 explains why the paper's t99 for b = 0 and 1 cannot be matched with Eq. 22's E/M.");
+      "it as indicative. docs/errata.md E8 explains why the paper's t99 for b = 0 and 1 cannot be matched with Eq. "
+      "22's E/M.");
   return res;
 }
 
@@ -240,8 +269,10 @@ BenchmarkResult fig10_11(const BenchmarkContext& ctx) {
   const auto& last = r.snapshots.back();
   double e_p = 0;
   for (std::size_t i = 0; i < r.r.size(); ++i) e_p = std::max(e_p, std::abs(last.p[i] - exact.state(r.r[i]).p));
-  res.metrics.push_back({.name = "p at t* = 1 against steady B3, max / p_h", .value = e_p / exact.borehole_pressure(),
-                         .tolerance = 0.01, .comparison = Comparison::at_most,
+  res.metrics.push_back({.name = "p at t* = 1 against steady B3, max / p_h",
+                         .value = e_p / exact.borehole_pressure(),
+                         .tolerance = 0.01,
+                         .comparison = Comparison::at_most,
                          .justification = "Fig. 10A: 'the pressure at t* = 1 fits the steady state'; the "
                                           "remaining transient at t* = 1 is ~exp(-3/S) ~ 4e-3"});
   res.metrics.push_back(fdm1d_balance_metric("Fig. 10 case", r.summary.max_balance_error));
@@ -274,8 +305,14 @@ void add_fdm1d_benchmarks(std::vector<Benchmark>& into) {
                   "threshold at the wall, for b = 0, 0.5, 1 under both volumetric-strain variants, beside the "
                   "paper's values.",
                   Tier::quick, section32});
-  into.push_back({"fdm1d.fig10_11", "1D model: Figs. 10 and 11", "The case `cases/fig10_fdm1d_b0.5.toml` as "
-                  "`hmlattice fdm1d` runs it, drawn as the paper's Figs. 10 and 11.", Tier::quick, fig10_11, {}, {"10", "11"}});
+  into.push_back({"fdm1d.fig10_11",
+                  "1D model: Figs. 10 and 11",
+                  "The case `cases/fig10_fdm1d_b0.5.toml` as "
+                  "`hmlattice fdm1d` runs it, drawn as the paper's Figs. 10 and 11.",
+                  Tier::quick,
+                  fig10_11,
+                  {},
+                  {"10", "11"}});
 }
 
 }  // namespace hm::verification

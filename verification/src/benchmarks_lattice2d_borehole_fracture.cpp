@@ -26,14 +26,14 @@
 
 #include "borehole_fracture_report.hpp"
 #include "borehole_fracture_runs.hpp"
-#include "hm/verification/benchmark.hpp"
 #include "hm/case/run_case.hpp"
+#include "hm/verification/benchmark.hpp"
 #include "report_writer.hpp"
 
 namespace hm::verification {
 
-using cases::RunCase;
 using cases::read_run_case;
+using cases::RunCase;
 
 namespace {
 
@@ -44,15 +44,18 @@ namespace fs = std::filesystem;
 std::string twin_label(const std::string& name) { return name + "_flux_borehole"; }
 std::string eq16_label(const std::string& name) { return name + "_eq16_node"; }
 
-const std::string kFig12Paper = "Section 3.3, Fig. 12: 3 radial fractures for b = 0.2, 7 for b = 0.8, all at r = 1 "
-                                "at the last time; no secondary fractures at this low Q";
+const std::string kFig12Paper =
+    "Section 3.3, Fig. 12: 3 radial fractures for b = 0.2, 7 for b = 0.8, all at r = 1 "
+    "at the last time; no secondary fractures at this low Q";
 const std::string kFig12Fluid = "negative pressure in and along the fractures (Section 3.3)";
 
 // --- quick tier ---------------------------------------------------------------------------------
 
 const std::vector<std::string> kQuickCases = {"fig12_b0.2_quick", "fig12_b0.8_quick"};
 
-RunCase quick_case(const std::string& name) { return read_run_case(fs::path(HM_SOURCE_DIR) / "cases" / (name + ".toml")); }
+RunCase quick_case(const std::string& name) {
+  return read_run_case(fs::path(HM_SOURCE_DIR) / "cases" / (name + ".toml"));
+}
 
 std::vector<PlannedRun> fig12_quick_runs() {
   std::vector<PlannedRun> runs;
@@ -101,10 +104,11 @@ BenchmarkResult fig12_quick(const BenchmarkContext& ctx) {
   res.notes.push_back(notes_common());
   res.notes.push_back(notes_borehole_node());
   if (const std::string read = source.note(); !read.empty()) res.notes.push_back(read);
-  res.notes.push_back("At N = 3000 the lattice spacing is ~0.034 (the borehole is ~25 spacings round): the fracture "
-                      "counts are a first look, not the paper's resolution (the paper tier runs N = 1e5 and a seed "
-                      "scatter at N = 2e4). Data: fig12_quick/<case>/ as `hmlattice run` writes it, "
-                      "fig12_quick/fdm1d_b<b>/ as `hmlattice fdm1d` writes it, runs.csv.");
+  res.notes.push_back(
+      "At N = 3000 the lattice spacing is ~0.034 (the borehole is ~25 spacings round): the fracture "
+      "counts are a first look, not the paper's resolution (the paper tier runs N = 1e5 and a seed "
+      "scatter at N = 2e4). Data: fig12_quick/<case>/ as `hmlattice run` writes it, "
+      "fig12_quick/fdm1d_b<b>/ as `hmlattice fdm1d` writes it, runs.csv.");
   return res;
 }
 
@@ -166,7 +170,8 @@ BenchmarkResult fig12_paper(const BenchmarkContext& ctx) {
       eq16_seeds.push_back(source.run(with_eq16_borehole_node(cs), eq16_label(scatter_label(b, seed)), ref));
     }
     std::vector<const RunOutcome*> flux_group, eq16_group;
-    for (std::size_t k = 0; k < seeds.size(); ++k) flux_group.push_back(&seeds[k]), eq16_group.push_back(&eq16_seeds[k]);
+    for (std::size_t k = 0; k < seeds.size(); ++k)
+      flux_group.push_back(&seeds[k]), eq16_group.push_back(&eq16_seeds[k]);
     add_borehole_node_row(flux_group, node, paper_reading("fig12", c.physics.parameters.material.b));
     add_borehole_node_row(eq16_group, node, paper_reading("fig12", c.physics.parameters.material.b));
     add_borehole_node_metrics(flux_group, eq16_group, res.metrics);
@@ -191,9 +196,10 @@ BenchmarkResult fig12_paper(const BenchmarkContext& ctx) {
   res.notes.push_back(notes_common());
   res.notes.push_back(notes_borehole_node());
   if (const std::string read = source.note(); !read.empty()) res.notes.push_back(read);
-  res.notes.push_back("Data: fig12_paper/fig12_b<b>/ (N = 1e5, the figures) and fig12_paper/fig12_b<b>_N" +
-                      std::to_string(kScatterN) + "_seed<s>/ (the scatter; _eq16_node: with Eq. 16's borehole node), as `hmlattice run` writes them; "
-                      "fig12_paper/fdm1d_b<b>/, runs.csv.");
+  res.notes.push_back(
+      "Data: fig12_paper/fig12_b<b>/ (N = 1e5, the figures) and fig12_paper/fig12_b<b>_N" + std::to_string(kScatterN) +
+      "_seed<s>/ (the scatter; _eq16_node: with Eq. 16's borehole node), as `hmlattice run` writes them; "
+      "fig12_paper/fdm1d_b<b>/, runs.csv.");
   return res;
 }
 
@@ -213,9 +219,10 @@ void add_lattice2d_borehole_fracture_benchmarks(std::vector<Benchmark>& into) {
   into.push_back({.id = "lattice2d.fig12",
                   .title = "Fracture from a pressurised borehole, b = 0.2 and 0.8, N = 1e5 and a seed scatter at "
                            "N = 2e4 (Figs. 12-13)",
-                  .description = "cases/paper/fig12_b0.2.toml and cases/paper/fig12_b0.8.toml at the paper's "
-                                 "resolution, and each at N = 2e4 with seeds 1, 2, 3 (again with Eq. 16's borehole "
-                                 "node): as the quick benchmark, plus mean ± sd over the seeds and each run's wall time.",
+                  .description =
+                      "cases/paper/fig12_b0.2.toml and cases/paper/fig12_b0.8.toml at the paper's "
+                      "resolution, and each at N = 2e4 with seeds 1, 2, 3 (again with Eq. 16's borehole "
+                      "node): as the quick benchmark, plus mean ± sd over the seeds and each run's wall time.",
                   .tier = Tier::paper,
                   .run = fig12_paper,
                   .planned_runs = fig12_paper_runs,

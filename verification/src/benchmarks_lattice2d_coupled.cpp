@@ -5,36 +5,36 @@
 //
 // Which continuum: the lattice's triangle areas are plane-strain volumetric strains (eps_xx + eps_yy),
 // so the analytic solution is taken with vol_strain = plane-strain; its nu is the calibrated lattice's
-// (calibrated_continuum(): 0.25 as Table 1, 0.2236 with uniform beams), its E/M the model's own (Eq. 22 at nu = 0.25, as
-// in the case file). Rudnicki is for an unbounded plane: the disk's outer boundary (free or fixed)
-// shifts u_r by an amount that grows with r (the paper's Fig. 7 shows it), so the comparison is
-// restricted to r* in [0.01, 0.05], where the pressure plume has not reached r = 1.
+// (calibrated_continuum(): 0.25 as Table 1, 0.2236 with uniform beams), its E/M the model's own (Eq. 22 at nu = 0.25,
+// as in the case file). Rudnicki is for an unbounded plane: the disk's outer boundary (free or fixed) shifts u_r by an
+// amount that grows with r (the paper's Fig. 7 shows it), so the comparison is restricted to r* in [0.01, 0.05], where
+// the pressure plume has not reached r = 1.
 #include <algorithm>
-#include <vector>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <vector>
 
 #include "hm/analytic/rudnicki.hpp"
-#include "hm/core/file_output.hpp"
 #include "hm/case/coupled_model_of_case.hpp"
-#include "hm/lattice2d/mechanics/calibration.hpp"
+#include "hm/case/provenance.hpp"
+#include "hm/case/run_case.hpp"
+#include "hm/case/run_output.hpp"
+#include "hm/core/csv_writer.hpp"
+#include "hm/core/file_output.hpp"
 #include "hm/lattice2d/coupled/coupled_model.hpp"
 #include "hm/lattice2d/io/radial_average.hpp"
+#include "hm/lattice2d/mechanics/calibration.hpp"
 #include "hm/verification/benchmark.hpp"
-#include "hm/core/csv_writer.hpp"
-#include "hm/case/run_case.hpp"
-#include "hm/case/provenance.hpp"
-#include "hm/case/run_output.hpp"
 #include "report_writer.hpp"
 
 namespace hm::verification {
 
-using core::CsvWriter;
+using cases::radial_fields;
 using cases::RadialFields;
 using cases::RunCase;
 using cases::RunRecorder;
-using cases::radial_fields;
+using core::CsvWriter;
 
 namespace {
 
@@ -81,9 +81,9 @@ RunCase rudnicki_case(const RudnickiVariant& v) {
 }
 
 struct RudnickiOutcome {
-  RadialFields fields;          // at t_end
-  double max_error_p = 0.0;     // max over shells with r_mean in [0.01, 0.05] of |p - p_a| / p_a
-  double max_error_u = 0.0;     // same for u_r
+  RadialFields fields;       // at t_end
+  double max_error_p = 0.0;  // max over shells with r_mean in [0.01, 0.05] of |p - p_a| / p_a
+  double max_error_u = 0.0;  // same for u_r
   double max_balance = 0.0;
   int n_steps = 0, total_iterations = 0;
   double seconds = 0.0;
@@ -138,23 +138,33 @@ RudnickiOutcome run_variant(const RudnickiVariant& v, const BenchmarkContext& ct
   return o;
 }
 
-Metric error_metric(const std::string& what, double value, bool gating, const std::string& why, double tolerance = 0.10) {
-  return {.name = what, .value = value, .reference = 0.0, .tolerance = tolerance, .comparison = Comparison::at_most,
-          .justification = why, .gating = gating};
+Metric error_metric(const std::string& what, double value, bool gating, const std::string& why,
+                    double tolerance = 0.10) {
+  return {.name = what,
+          .value = value,
+          .reference = 0.0,
+          .tolerance = tolerance,
+          .comparison = Comparison::at_most,
+          .justification = why,
+          .gating = gating};
 }
 
 Metric flow_balance_metric(const std::string& label, double worst) {
-  return {.name = "volume balance, max relative error per step (" + label + ")", .value = worst, .tolerance = 1e-8,
+  return {.name = "volume balance, max relative error per step (" + label + ")",
+          .value = worst,
+          .tolerance = 1e-8,
           .comparison = Comparison::at_most,
-          .justification = "the flow scheme is conservative by construction: round-off of the sparse solve "
-                           "(measured ~1e-15 per step at N = 1e4; 1e-8 leaves margin)"};
+          .justification =
+              "the flow scheme is conservative by construction: round-off of the sparse solve "
+              "(measured ~1e-15 per step at N = 1e4; 1e-8 leaves margin)"};
 }
 
 Table profile_table() {
-  return {"Radially averaged p and u_r at t* = 3e-4 against Rudnicki (shells 0.01 wide, r = area-weighted mean "
-          "centroid radius of the shell)",
-          {"run", "N", "r*", "p (lattice)", "p (Rudnicki)", "u_r (lattice)", "u_r (Rudnicki)"},
-          {}};
+  return {
+      "Radially averaged p and u_r at t* = 3e-4 against Rudnicki (shells 0.01 wide, r = area-weighted mean "
+      "centroid radius of the shell)",
+      {"run", "N", "r*", "p (lattice)", "p (Rudnicki)", "u_r (lattice)", "u_r (Rudnicki)"},
+      {}};
 }
 
 Table run_table() {
@@ -176,8 +186,11 @@ BenchmarkResult rudnicki_quick(const BenchmarkContext& ctx) {
   const RudnickiVariant v{.label = "free_N1e4"};
   const RudnickiOutcome o = run_variant(v, ctx, profiles);
   add_run_row(runs, v.label, o);
-  res.metrics.push_back({.name = "run completed (every step converged)", .value = o.ok ? 1.0 : 0.0, .reference = 1.0,
-                         .tolerance = 0.0, .comparison = Comparison::abs_error,
+  res.metrics.push_back({.name = "run completed (every step converged)",
+                         .value = o.ok ? 1.0 : 0.0,
+                         .reference = 1.0,
+                         .tolerance = 0.0,
+                         .comparison = Comparison::abs_error,
                          .justification = "a numerical failure is a failure: " + o.message});
   res.metrics.push_back(error_metric("max relative error of radially averaged u_r, r* in [0.01, 0.05], N = 1e4",
                                      o.max_error_u, true,
@@ -185,12 +198,12 @@ BenchmarkResult rudnicki_quick(const BenchmarkContext& ctx) {
                                      "with uniform beams); the 10% near-source bound is checked at N = 3e4 in the "
                                      "paper tier",
                                      0.15));
-  res.metrics.push_back(error_metric("max relative error of radially averaged p, r* in [0.01, 0.05], N = 1e4",
-                                     o.max_error_p, false,
-                                     "not gating at N = 1e4: the plume at t* = 3e-4 spans ~2 particle spacings "
-                                     "(h ~ 0.019), the innermost shell is under-predicted (measured 19% at r* = 0.017; 27% "
-                                     "with uniform beams); the "
-                                     "paper tier checks it at N = 3e4"));
+  res.metrics.push_back(
+      error_metric("max relative error of radially averaged p, r* in [0.01, 0.05], N = 1e4", o.max_error_p, false,
+                   "not gating at N = 1e4: the plume at t* = 3e-4 spans ~2 particle spacings "
+                   "(h ~ 0.019), the innermost shell is under-predicted (measured 19% at r* = 0.017; 27% "
+                   "with uniform beams); the "
+                   "paper tier checks it at N = 3e4"));
   res.metrics.push_back(flow_balance_metric("N = 1e4", o.max_balance));
   res.tables = {runs, profiles};
   res.figures.push_back({"fig07_rudnicki.py", "fig07_rudnicki_free_N1e4.png",
@@ -224,23 +237,35 @@ BenchmarkResult rudnicki_paper(const BenchmarkContext& ctx) {
     add_run_row(runs, v.label, o);
     res.metrics.push_back(flow_balance_metric(v.label, o.max_balance));
     if (!o.ok)
-      res.metrics.push_back({.name = v.label + ": run completed", .value = 0.0, .reference = 1.0, .tolerance = 0.0,
-                             .comparison = Comparison::abs_error, .justification = o.message});
+      res.metrics.push_back({.name = v.label + ": run completed",
+                             .value = 0.0,
+                             .reference = 1.0,
+                             .tolerance = 0.0,
+                             .comparison = Comparison::abs_error,
+                             .justification = o.message});
     return o;
   };
   for (lt::BoundarySupport outer : {lt::BoundarySupport::free, lt::BoundarySupport::fixed}) {
     const std::string b = core::name_of(outer);
     const RudnickiOutcome coarse = run({.label = b + "_N1e4", .n_particles = 10000, .outer = outer});
     const RudnickiOutcome fine = run({.label = b + "_N3e4", .n_particles = 30000, .outer = outer});
-    const std::string why = "the lattice's discretisation error near the source, where the plume spans a few "
-                            "spacings: within 10% for r* in [0.01, 0.05] at N = 3e4";
+    const std::string why =
+        "the lattice's discretisation error near the source, where the plume spans a few "
+        "spacings: within 10% for r* in [0.01, 0.05] at N = 3e4";
     res.metrics.push_back(error_metric(b + ": max relative error of p, N = 3e4", fine.max_error_p, true, why));
     res.metrics.push_back(error_metric(b + ": max relative error of u_r, N = 3e4", fine.max_error_u, true, why));
-    res.metrics.push_back({.name = b + ": error of p, N = 1e4 over N = 3e4", .value = coarse.max_error_p / fine.max_error_p,
-                           .reference = 1.0, .tolerance = 1.0, .comparison = Comparison::at_least,
-                           .justification = "a discretisation error shrinks under refinement", .gating = true});
-    res.metrics.push_back({.name = b + ": error of u_r, N = 1e4 over N = 3e4", .value = coarse.max_error_u / fine.max_error_u,
-                           .reference = 1.0, .tolerance = 1.0, .comparison = Comparison::at_least,
+    res.metrics.push_back({.name = b + ": error of p, N = 1e4 over N = 3e4",
+                           .value = coarse.max_error_p / fine.max_error_p,
+                           .reference = 1.0,
+                           .tolerance = 1.0,
+                           .comparison = Comparison::at_least,
+                           .justification = "a discretisation error shrinks under refinement",
+                           .gating = true});
+    res.metrics.push_back({.name = b + ": error of u_r, N = 1e4 over N = 3e4",
+                           .value = coarse.max_error_u / fine.max_error_u,
+                           .reference = 1.0,
+                           .tolerance = 1.0,
+                           .comparison = Comparison::at_least,
                            .justification = "information: measured 2.8% -> 3.9% (free) with the facet-scaled "
                                             "lattice, the lattice 1-4% low in both: within the 10% near-source bound "
                                             "at both "
@@ -254,8 +279,10 @@ BenchmarkResult rudnicki_paper(const BenchmarkContext& ctx) {
           run({.label = "free_N3e4_drained", .n_particles = 30000, .split = lt::CouplingSplit::drained, .psi = 0.0});
       for (const auto& [label, o] : {std::pair{"one pass", &one}, std::pair{"drained", &drained}}) {
         res.metrics.push_back({.name = std::string("free, N = 3e4: max relative difference of p and u_r, ") + label +
-                                           " vs iterated undrained",
-                               .value = max_profile_difference(*o, fine), .reference = 0.0, .tolerance = 0.05,
+                                       " vs iterated undrained",
+                               .value = max_profile_difference(*o, fine),
+                               .reference = 0.0,
+                               .tolerance = 0.05,
                                .comparison = Comparison::at_most,
                                .justification = "the paper's Fig. 7: 'no significant differences'; not gating "
                                                 "(our reading of a figure)",
@@ -305,31 +332,46 @@ void add_psi_metrics(const std::vector<int>& run_passes, const std::vector<int>&
                      const std::vector<int>& sign_changes, std::vector<Metric>& metrics) {
   const bool all_ok = std::all_of(run_passes.begin(), run_passes.end(), [](int p) { return p > 0; }) &&
                       std::all_of(step_passes.begin(), step_passes.end(), [](int p) { return p > 0; });
-  metrics.push_back({.name = "every Psi converges in every step", .value = all_ok ? 1.0 : 0.0, .reference = 1.0,
-                     .tolerance = 0.0, .comparison = Comparison::abs_error,
+  metrics.push_back({.name = "every Psi converges in every step",
+                     .value = all_ok ? 1.0 : 0.0,
+                     .reference = 1.0,
+                     .tolerance = 0.0,
+                     .comparison = Comparison::abs_error,
                      .justification = "all splits must converge (max_iterations 100 per step, 500 for the one step)"});
   const double p13 = run_passes[2];
   const double best_band = std::max({run_passes[1], run_passes[2], run_passes[3]});
   metrics.push_back({.name = "ranking: min(passes(Psi = 0), passes(Psi = 10)) / max over 1 <= Psi <= 2",
-                     .value = std::min(run_passes[0], run_passes[4]) / best_band, .reference = 1.0,
-                     .tolerance = 1.0, .comparison = Comparison::at_least,
+                     .value = std::min(run_passes[0], run_passes[4]) / best_band,
+                     .reference = 1.0,
+                     .tolerance = 1.0,
+                     .comparison = Comparison::at_least,
                      .justification = "the paper's ranking (Section 3.1): 1 <= Psi <= 2 beats both Psi = 10 and the "
                                       "drained split"});
   metrics.push_back({.name = "drained split (Psi = 0): overshoots of the shell pressure in the first 5 passes",
-                     .value = static_cast<double>(sign_changes[0]), .reference = 1.0, .tolerance = 1.0,
+                     .value = static_cast<double>(sign_changes[0]),
+                     .reference = 1.0,
+                     .tolerance = 1.0,
                      .comparison = Comparison::at_least,
                      .justification = "Fig. 8: the drained split oscillates (measured: 4 of 4 at N = 3e4)"});
   metrics.push_back({.name = "undrained split, Psi = 1.3 and 10: overshoots in the first 5 passes",
-                     .value = static_cast<double>(sign_changes[2] + sign_changes[4]), .reference = 0.0,
-                     .tolerance = 0.0, .comparison = Comparison::abs_error,
+                     .value = static_cast<double>(sign_changes[2] + sign_changes[4]),
+                     .reference = 0.0,
+                     .tolerance = 0.0,
+                     .comparison = Comparison::abs_error,
                      .justification = "Fig. 8: the undrained split approaches monotonically (no oscillation)"});
-  metrics.push_back({.name = "passes(Psi = 10) / passes(Psi = 1.3)", .value = run_passes[4] / p13, .reference = 2.0,
-                     .tolerance = 0.5, .comparison = Comparison::rel_error,
+  metrics.push_back({.name = "passes(Psi = 10) / passes(Psi = 1.3)",
+                     .value = run_passes[4] / p13,
+                     .reference = 2.0,
+                     .tolerance = 0.5,
+                     .comparison = Comparison::rel_error,
                      .justification = "the paper's 'approximately doubled' (wall time, tolerances not given); "
                                       "shown, not gating",
                      .gating = false});
-  metrics.push_back({.name = "passes(drained) / passes(Psi = 1.3)", .value = run_passes[0] / p13, .reference = 5.0,
-                     .tolerance = 0.5, .comparison = Comparison::rel_error,
+  metrics.push_back({.name = "passes(drained) / passes(Psi = 1.3)",
+                     .value = run_passes[0] / p13,
+                     .reference = 5.0,
+                     .tolerance = 0.5,
+                     .comparison = Comparison::rel_error,
                      .justification = "the paper's 'a factor about 5' (wall time); shown, not gating",
                      .gating = false});
 }
@@ -343,19 +385,21 @@ BenchmarkResult psi_study(const BenchmarkContext& ctx) {
   const std::filesystem::path pass_file_path = dir / "passes.csv";
   std::ofstream pass_file = core::open_for_writing(pass_file_path);
   CsvWriter passes(pass_file, {"psi", "pass", "p_shell"});
-  Table table{"Psi study at N = " + fmt(static_cast<double>(n)) +
-                  ": the Fig. 7 run to t* = 3e-4 (27 steps) with each Psi, and one step dt = 3e-4 from rest",
-              {"Psi", "passes (run)", "passes / passes(1.3)", "seconds (run)", "seconds / seconds(1.3)",
-               "passes (one step)"},
-              {}};
+  Table table{
+      "Psi study at N = " + fmt(static_cast<double>(n)) +
+          ": the Fig. 7 run to t* = 3e-4 (27 steps) with each Psi, and one step dt = 3e-4 from rest",
+      {"Psi", "passes (run)", "passes / passes(1.3)", "seconds (run)", "seconds / seconds(1.3)", "passes (one step)"},
+      {}};
   const lt::Lattice lattice = lt::generate_lattice(rudnicki_case({.label = "psi", .n_particles = n}).lattice);
   const lt::DualGraph dual = lt::build_dual_graph(lattice);
   const Shell shell = fig6_shell(dual);
   std::vector<int> run_passes, step_passes, sign_changes;
   std::vector<double> run_seconds;
   for (double psi : psis) {
-    const RudnickiVariant v{.label = "psi", .n_particles = n,
-                            .split = psi == 0.0 ? lt::CouplingSplit::drained : lt::CouplingSplit::undrained, .psi = psi};
+    const RudnickiVariant v{.label = "psi",
+                            .n_particles = n,
+                            .split = psi == 0.0 ? lt::CouplingSplit::drained : lt::CouplingSplit::undrained,
+                            .psi = psi};
     const RunCase c = rudnicki_case(v);
     {  // the whole run
       const auto model = cases::make_coupled_model(c, lattice);
@@ -394,9 +438,10 @@ BenchmarkResult psi_study(const BenchmarkContext& ctx) {
                           fmt(run_seconds[k] / s13), std::to_string(step_passes[k])});
   res.tables.push_back(table);
   add_psi_metrics(run_passes, step_passes, sign_changes, res.metrics);
-  res.notes.push_back("psi_study/passes.csv: the area-weighted mean pressure in the shell 0.02 < r* < 0.03 (Fig. 6's "
-                      "Gamma) after every pass of one implicit step dt = 3e-4 from rest, for each Psi (Fig. 8's "
-                      "quantity; our step choice, the paper does not say which step it shows).");
+  res.notes.push_back(
+      "psi_study/passes.csv: the area-weighted mean pressure in the shell 0.02 < r* < 0.03 (Fig. 6's "
+      "Gamma) after every pass of one implicit step dt = 3e-4 from rest, for each Psi (Fig. 8's "
+      "quantity; our step choice, the paper does not say which step it shows).");
   res.figures.push_back({"fig08_psi_study.py", "fig08_psi_study.png",
                          "Fig. 8: mean pressure in the shell 0.02 < r* < 0.03 against the coupling pass, one implicit "
                          "step dt = 3e-4 from rest, for each Psi (Psi = 0: the drained split); right, its relative "

@@ -13,14 +13,14 @@
 #include <vector>
 
 #include "hm/analytic/lame.hpp"
+#include "hm/core/csv_writer.hpp"
 #include "hm/core/file_output.hpp"
-#include "hm/lattice2d/mechanics/calibration.hpp"
 #include "hm/lattice2d/geometry/dual_graph.hpp"
+#include "hm/lattice2d/io/radial_average.hpp"
+#include "hm/lattice2d/mechanics/calibration.hpp"
 #include "hm/lattice2d/mechanics/mechanics.hpp"
 #include "hm/lattice2d/mechanics/particle_stress.hpp"
-#include "hm/lattice2d/io/radial_average.hpp"
 #include "hm/verification/benchmark.hpp"
-#include "hm/core/csv_writer.hpp"
 #include "report_writer.hpp"
 
 namespace hm::verification {
@@ -51,27 +51,40 @@ const char* target_reason =
 void add_calibration_metrics(double e_default, double nu_default, double iso_default,
                              const std::vector<std::pair<long long, double>>& e_by_density, double stored_nu,
                              std::vector<Metric>& metrics) {
-  metrics.push_back({.name = "E, mean over seeds 1-3 at N = 1e4", .value = e_default, .reference = target_e,
-                     .tolerance = 0.02, .comparison = Comparison::rel_error,
+  metrics.push_back({.name = "E, mean over seeds 1-3 at N = 1e4",
+                     .value = e_default,
+                     .reference = target_e,
+                     .tolerance = 0.02,
+                     .comparison = Comparison::rel_error,
                      .justification = "the calibration's 2% on E (k_n is scaled for E = 1 on exactly these "
                                       "lattices, so the check guards the stored constants)"});
   for (auto [n, em] : e_by_density)
     if (n != 10000)
       metrics.push_back({.name = "E at another density, N = " + std::to_string(n) + " (constants from N = 1e4)",
-                         .value = em, .reference = target_e, .tolerance = 0.02, .comparison = Comparison::rel_error,
+                         .value = em,
+                         .reference = target_e,
+                         .tolerance = 0.02,
+                         .comparison = Comparison::rel_error,
                          .justification = "the calibration's 2% on E, on lattices it did not see; E is "
                                           "spacing-independent for per-beam k_n up to a measured drift of "
                                           "+0.6% (2.5e3) to -0.6% (1e5)"});
-  metrics.push_back({.name = "nu, mean over seeds 1-3 at N = 1e4, against the target 0.25", .value = nu_default,
-                     .reference = target_nu, .tolerance = 0.02, .comparison = Comparison::abs_error,
+  metrics.push_back({.name = "nu, mean over seeds 1-3 at N = 1e4, against the target 0.25",
+                     .value = nu_default,
+                     .reference = target_nu,
+                     .tolerance = 0.02,
+                     .comparison = Comparison::abs_error,
                      .justification = "the calibration's 0.02 on nu (facet-scaled beams, calibrated to 0.25 on "
                                       "these lattices)"});
   metrics.push_back({.name = "nu, mean over seeds 1-3 at N = 1e4, against the documented value",
-                     .value = nu_default, .reference = stored_nu, .tolerance = 0.005,
+                     .value = nu_default,
+                     .reference = stored_nu,
+                     .tolerance = 0.005,
                      .comparison = Comparison::abs_error,
                      .justification = "regression on calibrated_continuum() (2026-11-22): 3x the seed sd 1.5e-3"});
-  metrics.push_back({.name = "max |C66 - (C11-C12)/2| / ((C11-C12)/2), seeds 1-3 at N = 1e4", .value = iso_default,
-                     .tolerance = 0.03, .comparison = Comparison::at_most,
+  metrics.push_back({.name = "max |C66 - (C11-C12)/2| / ((C11-C12)/2), seeds 1-3 at N = 1e4",
+                     .value = iso_default,
+                     .tolerance = 0.03,
+                     .comparison = Comparison::at_most,
                      .justification = "isotropy within the region mean's sampling error (~27%/sqrt(3500) per "
                                       "entry) and the measured systematic ~-1.5% (docs/lattice.md)"});
 }
@@ -94,7 +107,8 @@ BenchmarkResult calibration(const BenchmarkContext& ctx) {
   double e_default = 0, nu_default = 0, iso_default = 0;
   std::vector<std::pair<long long, double>> e_by_density;
   for (long long n : densities) {
-    const std::vector<std::uint64_t> seeds = n > 40000 ? std::vector<std::uint64_t>{1} : std::vector<std::uint64_t>{1, 2, 3};
+    const std::vector<std::uint64_t> seeds =
+        n > 40000 ? std::vector<std::uint64_t>{1} : std::vector<std::uint64_t>{1, 2, 3};
     std::vector<double> e, nu;
     double worst_iso = 0;
     for (auto seed : seeds) {
@@ -103,12 +117,11 @@ BenchmarkResult calibration(const BenchmarkContext& ctx) {
       e.push_back(p.youngs_modulus);
       nu.push_back(p.poisson_ratio);
       worst_iso = std::max(worst_iso, std::abs(p.shear_isotropy_error));
-      per_seed.rows.push_back({std::to_string(n), std::to_string(seed), std::to_string(lattice.n_particles()),
-                               fmt(p.youngs_modulus), fmt(p.poisson_ratio), fmt(p.c11), fmt(p.c12), fmt(p.c66),
-                               fmt(0.5 * (p.c11 - p.c12)), pct(p.shear_isotropy_error),
-                               fmt(p.boundary_youngs_modulus) + ", " + fmt(p.boundary_poisson_ratio),
-                               pct(p.scatter(0, 0) / p.stiffness(0, 0)) + ", " + pct(p.scatter(2, 2) / p.stiffness(2, 2)),
-                               fmt(p.seconds)});
+      per_seed.rows.push_back(
+          {std::to_string(n), std::to_string(seed), std::to_string(lattice.n_particles()), fmt(p.youngs_modulus),
+           fmt(p.poisson_ratio), fmt(p.c11), fmt(p.c12), fmt(p.c66), fmt(0.5 * (p.c11 - p.c12)),
+           pct(p.shear_isotropy_error), fmt(p.boundary_youngs_modulus) + ", " + fmt(p.boundary_poisson_ratio),
+           pct(p.scatter(0, 0) / p.stiffness(0, 0)) + ", " + pct(p.scatter(2, 2) / p.stiffness(2, 2)), fmt(p.seconds)});
     }
     double em = 0, nm = 0;
     for (std::size_t k = 0; k < e.size(); ++k) {
@@ -141,8 +154,8 @@ BenchmarkResult calibration(const BenchmarkContext& ctx) {
   res.notes.push_back(
       "The calibration fixes nu0 = 0.25 and searches the aspect a (which spans k_omega/k_n from 0 to "
       "1/(4(1 + nu0))), then scales k_n for E = 1. With the default facet-scaled beams (k_n,ij = k_n sqrt(3) "
-      "d_ij/L_ij) a in [0.05, 2] gives nu in [0.175, 0.323], and a = " + fmt(beams.aspect) +
-      " gives the target 0.25; the lattice represents E = 1, nu = " + fmt(stored.poisson_ratio) +
+      "d_ij/L_ij) a in [0.05, 2] gives nu in [0.175, 0.323], and a = " +
+      fmt(beams.aspect) + " gives the target 0.25; the lattice represents E = 1, nu = " + fmt(stored.poisson_ratio) +
       ", which every continuum comparison below uses (calibrated_continuum()). With the paper's uniform beams "
       "nu cannot exceed ~0.224 (docs/lattice.md).");
   return res;
@@ -183,13 +196,14 @@ CentralStress central_stress(const l2::Lattice& lattice, const l2::DualGraph& du
 }
 
 // Histogram data for the patch test's scatter: one row per region particle, beside the continuum's stress.
-void write_patch_stresses(const std::filesystem::path& path, const l2::Lattice& lattice, const l2::ParticleStress& stress,
-                          const std::vector<int>& chosen, const Eigen::Vector3d& expected) {
+void write_patch_stresses(const std::filesystem::path& path, const l2::Lattice& lattice,
+                          const l2::ParticleStress& stress, const std::vector<int>& chosen,
+                          const Eigen::Vector3d& expected) {
   core::write_file_atomically(path, [&](std::ostream& out) {
     CsvWriter csv(out, {"x", "y", "sigma_xx", "sigma_yy", "sigma_xy", "expected_xx", "expected_yy", "expected_xy"});
     for (int i : chosen)
-      csv.row({lattice.points(0, i), lattice.points(1, i), stress.stress(0, i), stress.stress(1, i), stress.stress(2, i),
-               expected[0], expected[1], expected[2]});
+      csv.row({lattice.points(0, i), lattice.points(1, i), stress.stress(0, i), stress.stress(1, i),
+               stress.stress(2, i), expected[0], expected[1], expected[2]});
   });
 }
 
@@ -212,8 +226,8 @@ BenchmarkResult patch_test(const BenchmarkContext& ctx) {
   const auto start = std::chrono::steady_clock::now();
   l2::BeamMechanics mechanics(lattice, beams, bc);
   const l2::MechanicsSummary summary = mechanics.solve();
-  const l2::ParticleStress stress = l2::compute_particle_stress(
-      lattice, dual, l2::compute_beam_forces(lattice, beams, mechanics.displacement()));
+  const l2::ParticleStress stress =
+      l2::compute_particle_stress(lattice, dual, l2::compute_beam_forces(lattice, beams, mechanics.displacement()));
   const double solve_s = seconds_since(start);
 
   const auto [chosen, mean, sd] = central_stress(lattice, dual, stress, 0.6);
@@ -225,27 +239,36 @@ BenchmarkResult patch_test(const BenchmarkContext& ctx) {
   const double error = (mean - expected).norm() / scale;
   const double error_target = (mean - target).norm() / target.norm();
 
-  Table table{"Patch test: disk N = " + std::to_string(lattice.n_particles()) + " (seed 7), boundary strain eps_xx = 1e-3, "
-                  "eps_yy = -3e-4, eps_xy = 4e-4; " + std::to_string(chosen.size()) + " interior particles with r <= 0.6",
+  Table table{"Patch test: disk N = " + std::to_string(lattice.n_particles()) +
+                  " (seed 7), boundary strain eps_xx = 1e-3, "
+                  "eps_yy = -3e-4, eps_xy = 4e-4; " +
+                  std::to_string(chosen.size()) + " interior particles with r <= 0.6",
               {"component", "lattice (area-weighted mean)", "continuum E = 1, nu = " + fmt(cal.poisson_ratio),
                "relative error", "continuum E = 1, nu = 0.25", "particle sd", "sd / |sigma|"},
               {}};
   const char* names[] = {"sigma_xx", "sigma_yy", "sigma_xy"};
   for (int k = 0; k < 3; ++k)
-    table.rows.push_back({names[k], fmt(mean[k]), fmt(expected[k]), pct((mean[k] - expected[k]) / scale), fmt(target[k]),
-                          fmt(sd[k]), pct(sd[k] / scale)});
+    table.rows.push_back({names[k], fmt(mean[k]), fmt(expected[k]), pct((mean[k] - expected[k]) / scale),
+                          fmt(target[k]), fmt(sd[k]), pct(sd[k] / scale)});
   res.tables.push_back(table);
 
   write_patch_stresses(ctx.data_dir / "lattice_patch_test.csv", lattice, stress, chosen, expected);
 
-  res.metrics.push_back({.name = "|mean interior stress - calibrated continuum| / |sigma|", .value = error,
-                         .tolerance = 0.02, .comparison = Comparison::at_most,
+  res.metrics.push_back({.name = "|mean interior stress - calibrated continuum| / |sigma|",
+                         .value = error,
+                         .tolerance = 0.02,
+                         .comparison = Comparison::at_most,
                          .justification = "the calibration's 2% on E; the seed-to-seed scatter of the calibrated E "
                                           "is 0.4% and the region mean's sampling error ~27%/sqrt(n) < 1%"});
-  res.metrics.push_back({.name = "|mean interior stress - continuum (E = 1, nu = 0.25)| / |sigma|", .value = error_target,
-                         .tolerance = 0.02, .comparison = Comparison::at_most, .justification = target_reason});
-  res.metrics.push_back({.name = "solve converged (equilibrium residual)", .value = summary.equilibrium_residual,
-                         .tolerance = 1e-8, .comparison = Comparison::at_most,
+  res.metrics.push_back({.name = "|mean interior stress - continuum (E = 1, nu = 0.25)| / |sigma|",
+                         .value = error_target,
+                         .tolerance = 0.02,
+                         .comparison = Comparison::at_most,
+                         .justification = target_reason});
+  res.metrics.push_back({.name = "solve converged (equilibrium residual)",
+                         .value = summary.equilibrium_residual,
+                         .tolerance = 1e-8,
+                         .comparison = Comparison::at_most,
                          .justification = "direct sparse Cholesky: round-off"});
   res.notes.push_back("Particle-to-particle scatter (sd over the region, relative to |sigma|): " + pct(sd[0] / scale) +
                       ", " + pct(sd[1] / scale) + ", " + pct(sd[2] / scale) +
@@ -333,7 +356,8 @@ LameRun lame_case(const l2::Lattice& lattice, const l2::DualGraph& dual, l2::Bou
     const auto &a = pu.shells[k], &b = pue.shells[k], &c = ps.shells[k], &d = pse.shells[k];
     run.u_error = std::max(run.u_error, std::abs(a.mean - b.mean) / u_scale);
     run.sigma_error = std::max(run.sigma_error, std::abs(c.mean - d.mean) / s_scale);
-    csv.row({static_cast<double>(n), static_cast<double>(outer_tag), a.r_mean, a.mean, b.mean, c.r_mean, c.mean, d.mean});
+    csv.row(
+        {static_cast<double>(n), static_cast<double>(outer_tag), a.r_mean, a.mean, b.mean, c.r_mean, c.mean, d.mean});
   }
   run.u_wall_error = std::abs(pu.shells.front().mean - u_scale) / u_scale;
   run.seconds = seconds_since(start);
@@ -348,30 +372,41 @@ void add_lame_metrics(const std::vector<LameRun>& runs, std::vector<Metric>& met
   auto order = [&](const LameRun& c, const LameRun& f) {
     return std::log(c.u_error / f.u_error) / std::log(std::sqrt(static_cast<double>(f.particles) / c.particles));
   };
-  const char* measured = "measured (2026-11-22, seed 1, facet-scaled beams, boundary spacing 1.3): max shell u_r "
-                         "error 7.0% / 2.65% / 1.16% (free) and 6.8% / 2.50% / 1.10% (fixed) at N = 2.5e3 / 1e4 / 1e5, "
-                         "first order in the spacing; the largest error sits in the innermost shell";
+  const char* measured =
+      "measured (2026-11-22, seed 1, facet-scaled beams, boundary spacing 1.3): max shell u_r "
+      "error 7.0% / 2.65% / 1.16% (free) and 6.8% / 2.50% / 1.10% (fixed) at N = 2.5e3 / 1e4 / 1e5, "
+      "first order in the spacing; the largest error sits in the innermost shell";
   metrics.push_back({.name = "max shell u_r error / u_r(R_i), free outer, N = " + fine + " (the issue's 3%)",
-                         .value = fine_free.u_error, .tolerance = 0.03, .comparison = Comparison::at_most,
-                         .justification = std::string("the target 3% at N >= 1e4 (free boundary); ") + measured});
-  metrics.push_back({.name = "max shell u_r error / u_r(R_i), fixed outer, N = " + fine, .value = fine_fixed.u_error,
-                         .tolerance = 0.03, .comparison = Comparison::at_most,
-                         .justification = std::string("the free boundary's 3%, applied to the fixed boundary too; ") +
-                                          measured});
-  metrics.push_back({.name = "observed order of the u_r error in the spacing (free)", .value = order(coarse_free, fine_free),
-                         .tolerance = 0.5, .comparison = Comparison::at_least,
-                         .justification = "the error must fall with the spacing: the wall row and the boundary layers "
-                                          "of the lattice are O(spacing) thick (first order), and the random "
-                                          "lattice's shell-mean scatter falls more slowly; measured 1.40 (2.5e3 -> "
-                                          "1e4), 0.72 (1e4 -> 1e5)"});
-  metrics.push_back({.name = "observed order of the u_r error in the spacing (fixed)", .value = order(coarse_fixed, fine_fixed),
-                         .tolerance = 0.5, .comparison = Comparison::at_least,
-                         .justification = "as for the free boundary; measured 1.40 (2.5e3 -> 1e4), 0.72 (1e4 -> 1e5)"});
+                     .value = fine_free.u_error,
+                     .tolerance = 0.03,
+                     .comparison = Comparison::at_most,
+                     .justification = std::string("the target 3% at N >= 1e4 (free boundary); ") + measured});
+  metrics.push_back(
+      {.name = "max shell u_r error / u_r(R_i), fixed outer, N = " + fine,
+       .value = fine_fixed.u_error,
+       .tolerance = 0.03,
+       .comparison = Comparison::at_most,
+       .justification = std::string("the free boundary's 3%, applied to the fixed boundary too; ") + measured});
+  metrics.push_back({.name = "observed order of the u_r error in the spacing (free)",
+                     .value = order(coarse_free, fine_free),
+                     .tolerance = 0.5,
+                     .comparison = Comparison::at_least,
+                     .justification = "the error must fall with the spacing: the wall row and the boundary layers "
+                                      "of the lattice are O(spacing) thick (first order), and the random "
+                                      "lattice's shell-mean scatter falls more slowly; measured 1.40 (2.5e3 -> "
+                                      "1e4), 0.72 (1e4 -> 1e5)"});
+  metrics.push_back({.name = "observed order of the u_r error in the spacing (fixed)",
+                     .value = order(coarse_fixed, fine_fixed),
+                     .tolerance = 0.5,
+                     .comparison = Comparison::at_least,
+                     .justification = "as for the free boundary; measured 1.40 (2.5e3 -> 1e4), 0.72 (1e4 -> 1e5)"});
   metrics.push_back({.name = "max shell sigma_theta error / sigma_theta(R_i), free outer, N = " + fine,
-                         .value = fine_free.sigma_error, .tolerance = 0.1, .comparison = Comparison::at_most,
-                         .justification = "particle stresses scatter by ~25% and the innermost shell holds the steepest "
-                                          "gradient (sigma_theta ~ 1/r^2) over few particles; information beside u_r",
-                         .gating = false});
+                     .value = fine_free.sigma_error,
+                     .tolerance = 0.1,
+                     .comparison = Comparison::at_most,
+                     .justification = "particle stresses scatter by ~25% and the innermost shell holds the steepest "
+                                      "gradient (sigma_theta ~ 1/r^2) over few particles; information beside u_r",
+                     .gating = false});
 }
 
 BenchmarkResult lattice_lame(const BenchmarkContext& ctx) {
@@ -382,14 +417,16 @@ BenchmarkResult lattice_lame(const BenchmarkContext& ctx) {
       ctx.tier == Tier::paper ? std::vector<long long>{10000, 100000} : std::vector<long long>{2500, 10000};
   const std::filesystem::path out_path = ctx.data_dir / "lattice_lame.csv";
   std::ofstream out = core::open_for_writing(out_path);
-  CsvWriter csv(out, {"n_particles", "outer_fixed", "r_u", "u_r", "u_r_exact", "r_sigma", "sigma_theta",
-                      "sigma_theta_exact"});
-  Table table{"Lame cylinder R_i = 0.138, p_i = 1e-4, calibrated beams; 16 radial shells; lattice against the "
-                  "plane-strain solution with E = 1, nu = " + fmt(cal.poisson_ratio) +
-                  " averaged over the same particles (u_r: all particles; sigma_theta: interior particles)",
-              {"N", "outer boundary", "max shell |u_r error| / u_r(R_i)", "innermost shell u_r error",
-               "max shell |sigma_theta error| / sigma_theta(R_i)", "s"},
-              {}};
+  CsvWriter csv(
+      out, {"n_particles", "outer_fixed", "r_u", "u_r", "u_r_exact", "r_sigma", "sigma_theta", "sigma_theta_exact"});
+  Table table{
+      "Lame cylinder R_i = 0.138, p_i = 1e-4, calibrated beams; 16 radial shells; lattice against the "
+      "plane-strain solution with E = 1, nu = " +
+          fmt(cal.poisson_ratio) +
+          " averaged over the same particles (u_r: all particles; sigma_theta: interior particles)",
+      {"N", "outer boundary", "max shell |u_r error| / u_r(R_i)", "innermost shell u_r error",
+       "max shell |sigma_theta error| / sigma_theta(R_i)", "s"},
+      {}};
   std::vector<LameRun> runs;
   for (long long n : resolutions) {
     l2::LatticeSpec spec;

@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
+#include "crack_growth.hpp"
 #include "hm/core/csv_writer.hpp"
 #include "hm/core/file_output.hpp"
 #include "hm/verification/benchmark.hpp"
-#include "crack_growth.hpp"
 #include "report_writer.hpp"
 
 namespace hm::verification {
@@ -26,7 +26,8 @@ struct Scatter {
 };
 Scatter scatter(const std::vector<double>& x) {
   Scatter s{0.0, x.front(), x.front()};
-  for (double v : x) s.mean += v / static_cast<double>(x.size()), s.low = std::min(s.low, v), s.high = std::max(s.high, v);
+  for (double v : x)
+    s.mean += v / static_cast<double>(x.size()), s.low = std::min(s.low, v), s.high = std::max(s.high, v);
   return s;
 }
 
@@ -58,32 +59,41 @@ std::array<Scatter, 4> grow_over_seeds(bool sawtooth, long long n, int n_seeds, 
 void add_extrapolated_metrics(const std::vector<double>& spacing, const std::vector<double>& rock_mean,
                               const std::vector<double>& k_mean, double booked_all, std::vector<Metric>& metrics) {
   const LineFit rock_fit = fit_line(spacing, rock_mean), k_fit = fit_line(spacing, k_mean);
-  metrics.push_back({.name = "sawtooth: rock's dissipation per unit crack length / booked, extrapolated to N -> infinity "
-                           "(linear in N^-1/2)",
-                   .value = rock_fit.intercept / booked_all, .reference = 1.0, .tolerance = 0.10,
-                   .comparison = Comparison::rel_error,
-                   .justification = "the tip's jumps vanish with the beam length if the law converges; an "
-                                    "extrapolation from three sizes, shown, not gated",
-                   .gating = false});
+  metrics.push_back({.name =
+                         "sawtooth: rock's dissipation per unit crack length / booked, extrapolated to N -> infinity "
+                         "(linear in N^-1/2)",
+                     .value = rock_fit.intercept / booked_all,
+                     .reference = 1.0,
+                     .tolerance = 0.10,
+                     .comparison = Comparison::rel_error,
+                     .justification = "the tip's jumps vanish with the beam length if the law converges; an "
+                                      "extrapolation from three sizes, shown, not gated",
+                     .gating = false});
   metrics.push_back({.name = "sawtooth: K / K_c extrapolated to N -> infinity (linear in N^-1/2)",
-                   .value = k_fit.intercept, .reference = 1.0, .tolerance = 0.10, .comparison = Comparison::rel_error,
-                   .justification = "the goal's K_c = sqrt(E' G_f); the lattice books about 1.25 G_f per unit "
-                                    "length, so sqrt(1.25) = 1.12 is what the energy balance expects; shown, "
-                                    "not gated",
-                   .gating = false});
+                     .value = k_fit.intercept,
+                     .reference = 1.0,
+                     .tolerance = 0.10,
+                     .comparison = Comparison::rel_error,
+                     .justification = "the goal's K_c = sqrt(E' G_f); the lattice books about 1.25 G_f per unit "
+                                      "length, so sqrt(1.25) = 1.12 is what the energy balance expects; shown, "
+                                      "not gated",
+                     .gating = false});
 }
 
 // The goal: the booked energy per unit crack length (means over the seeds) the same at every N within 10%.
-void add_booked_metrics(const std::vector<long long>& sizes, const std::vector<double>& booked_mean,
-                        double booked_all, std::vector<Metric>& metrics) {
+void add_booked_metrics(const std::vector<long long>& sizes, const std::vector<double>& booked_mean, double booked_all,
+                        std::vector<Metric>& metrics) {
   for (std::size_t i = 0; i < sizes.size(); ++i)
-    metrics.push_back({.name = "sawtooth: booked energy per unit crack length, mean over seeds, over its mean over N (N = " +
-                               std::to_string(sizes[i]) + ")",
-                       .value = booked_mean[i] / booked_all, .reference = 1.0, .tolerance = 0.10,
-                       .comparison = Comparison::rel_error,
-                       .justification = "N-independent within 10% (the goal): each beam books G_f per unit facet, "
-                                        "so only the crack's path (zig-zag facets, softened neighbours) can "
-                                        "depend on N"});
+    metrics.push_back(
+        {.name = "sawtooth: booked energy per unit crack length, mean over seeds, over its mean over N (N = " +
+                 std::to_string(sizes[i]) + ")",
+         .value = booked_mean[i] / booked_all,
+         .reference = 1.0,
+         .tolerance = 0.10,
+         .comparison = Comparison::rel_error,
+         .justification = "N-independent within 10% (the goal): each beam books G_f per unit facet, "
+                          "so only the crack's path (zig-zag facets, softened neighbours) can "
+                          "depend on N"});
 }
 
 BenchmarkResult fracture_energy(const BenchmarkContext& ctx) {
@@ -93,16 +103,18 @@ BenchmarkResult fracture_energy(const BenchmarkContext& ctx) {
   const double g_f = kGrowthCharacteristicLength * t_u * t_u;
   // The quick tier's sizes are below the law's resolution (its length 1.6 l_ch / kappa^2 = 0.035 R spans
   // 1.2-2.4 beams): they check that the booked energy holds across N, not the converged dissipation.
-  const std::vector<long long> sizes = paper ? std::vector<long long>{15000, 30000, 60000} : std::vector<long long>{3000, 6000, 12000};
+  const std::vector<long long> sizes =
+      paper ? std::vector<long long>{15000, 30000, 60000} : std::vector<long long>{3000, 6000, 12000};
   const int n_seeds = paper ? 3 : 2;
   const std::filesystem::path out_path = ctx.data_dir / "lattice2d_fracture_energy.csv";
   std::ofstream out = core::open_for_writing(out_path);
   core::CsvWriter csv(out, {"sawtooth", "n_particles", "seed", "booked", "rock", "cost", "k_over_k_c"});
-  Table table{"Energy per unit length of a crack grown from a notch by its volume (lattice2d.griffith_growth's "
-                  "growth, process zone pressurised by its damage), over G_f/(E R) = " + fmt(g_f) + ", for " +
-                  std::to_string(n_seeds) + " seeds (lattice and strengths): mean [lowest, highest]",
-              {"law", "N", "booked / G_f", "rock's dissipation / G_f", "cost (W - pV/2) / G_f", "K / K_c"},
-              {}};
+  Table table{
+      "Energy per unit length of a crack grown from a notch by its volume (lattice2d.griffith_growth's "
+      "growth, process zone pressurised by its damage), over G_f/(E R) = " +
+          fmt(g_f) + ", for " + std::to_string(n_seeds) + " seeds (lattice and strengths): mean [lowest, highest]",
+      {"law", "N", "booked / G_f", "rock's dissipation / G_f", "cost (W - pV/2) / G_f", "K / K_c"},
+      {}};
   const double k_c = griffith_constants(g_f).k_c;
   // The saw-tooth law's means over the seeds, per N (in the order of `sizes`); N^(-1/2) ~ the beam length.
   std::vector<double> spacing, booked_mean, rock_mean, k_mean;
@@ -124,17 +136,19 @@ BenchmarkResult fracture_energy(const BenchmarkContext& ctx) {
         k_mean.push_back(k_s.mean);
         booked_all += booked_s.mean / static_cast<double>(sizes.size());
       }
-      res.metrics.push_back({.name = std::string(sawtooth ? "sawtooth" : "brittle") +
-                                     ": rock's dissipation per unit crack length / G_f, mean over seeds (N = " +
-                                     std::to_string(n) + ")",
-                             .value = rock_s.mean, .reference = 1.0, .tolerance = 0.10,
-                             .comparison = Comparison::rel_error,
-                             .justification = sawtooth ? "shown, not gated: above the booked energy while the process "
-                                                         "zone spans one or two beams (the tip's beams give way in "
-                                                         "jumps); falls with N (docs/fracture_law.md)"
-                                                       : "shown, not gated: the brittle law has no fracture energy; "
-                                                         "over the saw-tooth law's G_f for comparison",
-                             .gating = false});
+      res.metrics.push_back(
+          {.name = std::string(sawtooth ? "sawtooth" : "brittle") +
+                   ": rock's dissipation per unit crack length / G_f, mean over seeds (N = " + std::to_string(n) + ")",
+           .value = rock_s.mean,
+           .reference = 1.0,
+           .tolerance = 0.10,
+           .comparison = Comparison::rel_error,
+           .justification = sawtooth ? "shown, not gated: above the booked energy while the process "
+                                       "zone spans one or two beams (the tip's beams give way in "
+                                       "jumps); falls with N (docs/fracture_law.md)"
+                                     : "shown, not gated: the brittle law has no fracture energy; "
+                                       "over the saw-tooth law's G_f for comparison",
+           .gating = false});
     }
   }
   add_booked_metrics(sizes, booked_mean, booked_all, res.metrics);

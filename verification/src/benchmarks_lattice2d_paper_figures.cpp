@@ -35,8 +35,8 @@
 
 namespace hm::verification {
 
-using cases::RunCase;
 using cases::read_run_case;
+using cases::RunCase;
 
 namespace {
 
@@ -87,12 +87,13 @@ std::string paper_text(const FigureSpec& f) {
 
 // Fig. 15: u_r of the fracturing lattice against the 1D model without fracture, per output time.
 Table displacement_table() {
-  return {"Fig. 15: the lattice's radially averaged u_r over the 1D model's without fracture (mean over the shells of "
-          "u_r/u_r,1D; max |u_r/u_r,1D - 1| while unbroken). Paper: b = 0.2 unbroken at t* = 2.3e-3 and 4.5e-3 with "
-          "the lattice on the 1D curve, then u_r above it at most positions; b = 0.8 unbroken at 2.3e-3 and 4.5e-3, "
-          "then u_r below it at all positions",
-          {"run", "t*", "n_broken", "mean u_r/u_r,1D", "max |u_r/u_r,1D - 1| (unbroken)", "paper"},
-          {}};
+  return {
+      "Fig. 15: the lattice's radially averaged u_r over the 1D model's without fracture (mean over the shells of "
+      "u_r/u_r,1D; max |u_r/u_r,1D - 1| while unbroken). Paper: b = 0.2 unbroken at t* = 2.3e-3 and 4.5e-3 with "
+      "the lattice on the 1D curve, then u_r above it at most positions; b = 0.8 unbroken at 2.3e-3 and 4.5e-3, "
+      "then u_r below it at all positions",
+      {"run", "t*", "n_broken", "mean u_r/u_r,1D", "max |u_r/u_r,1D - 1| (unbroken)", "paper"},
+      {}};
 }
 
 /// The paper's u_r against the 1D model: unbroken up to last_unbroken_t, then above or below it.
@@ -119,19 +120,29 @@ void add_displacement_rows(const FigureSpec& f, const RunOutcome& o, Table& t, s
     const std::string why = "the paper's Fig. 15 (N = 1e5, one realisation); shown, not tuned";
     const std::string tag = run_name(o) + ": ";
     if (unbroken) {
-      m.push_back({.name = tag + "unbroken at t* = " + fmt(s.t) + " (broken beams)", .value = double(s.stats.n_broken),
-                   .reference = 0.0, .tolerance = 0.0, .comparison = Comparison::abs_error, .justification = why,
+      m.push_back({.name = tag + "unbroken at t* = " + fmt(s.t) + " (broken beams)",
+                   .value = double(s.stats.n_broken),
+                   .reference = 0.0,
+                   .tolerance = 0.0,
+                   .comparison = Comparison::abs_error,
+                   .justification = why,
                    .gating = false});
-      m.push_back({.name = tag + "mean u_r/u_r,1D at t* = " + fmt(s.t), .value = s.u_ratio_mean, .reference = 1.0,
-                   .tolerance = 0.05, .comparison = Comparison::rel_error,
+      m.push_back({.name = tag + "mean u_r/u_r,1D at t* = " + fmt(s.t),
+                   .value = s.u_ratio_mean,
+                   .reference = 1.0,
+                   .tolerance = 0.05,
+                   .comparison = Comparison::rel_error,
                    .justification = why + "; 5% as the 2D-vs-1D comparison before fracture (lattice2d.vs_fdm1d)",
                    .gating = false});
     } else if (first_fractured) {
       const bool above = paper.above_after;
       m.push_back({.name = tag + "mean u_r/u_r,1D at the first fractured time of Fig. 15, t* = " + fmt(s.t),
-                   .value = s.u_ratio_mean, .reference = 1.0, .tolerance = 1.0,
+                   .value = s.u_ratio_mean,
+                   .reference = 1.0,
+                   .tolerance = 1.0,
                    .comparison = above ? Comparison::at_least : Comparison::at_most,
-                   .justification = why + (above ? ": above the 1D curve" : ": below the 1D curve"), .gating = false});
+                   .justification = why + (above ? ": above the 1D curve" : ": below the 1D curve"),
+                   .gating = false});
     }
   }
 }
@@ -143,7 +154,8 @@ BenchmarkResult run_fracture_figure(const FigureSpec& f, const BenchmarkContext&
   fs::create_directories(root);
   RunSource source(root, ctx.runs_dir, ctx.progress);
   const std::string paper = paper_text(f);
-  Table snaps = snapshot_table(paper), fluid = fluid_table(paper), breakdown = breakdown_table(), timing = timing_table();
+  Table snaps = snapshot_table(paper), fluid = fluid_table(paper), breakdown = breakdown_table(),
+        timing = timing_table();
   Table displacement = displacement_table();
   Table scatter = scatter_table(f.scatter_particles), scatter_bd = scatter_breakdown_table(f.scatter_particles);
   std::vector<RunOutcome> runs;
@@ -195,7 +207,8 @@ std::vector<RunCase> refinement_cases(const fs::path& sweep_case, const fs::path
   const cases::SweepExpansion e = cases::expand_sweep(sweep_case, folder);
   std::vector<RunCase> out;
   for (const auto& combination : e.combinations) out.push_back(read_run_case(folder / (combination.name + ".toml")));
-  std::sort(out.begin(), out.end(), [](const RunCase& a, const RunCase& b) { return a.lattice.n_particles < b.lattice.n_particles; });
+  std::sort(out.begin(), out.end(),
+            [](const RunCase& a, const RunCase& b) { return a.lattice.n_particles < b.lattice.n_particles; });
   return out;
 }
 
@@ -223,26 +236,29 @@ std::vector<PlannedRun> planned_refinement(const FigureSpec& f, Tier tier) {
   std::vector<PlannedRun> runs;
   for (const RunCase& c : cases)
     for (unsigned long long seed : refinement_seeds(f, c.lattice.n_particles, tier, &c == &cases.front()))
-      runs.push_back({refinement_label(f, c.lattice.n_particles, seed, tier), with_lattice(c, c.lattice.n_particles, seed)});
+      runs.push_back(
+          {refinement_label(f, c.lattice.n_particles, seed, tier), with_lattice(c, c.lattice.n_particles, seed)});
   return runs;
 }
 
 Table refinement_table() {
-  return {"Fig. 19: the state at the last output time per resolution (mean ± sd over the seeds where there are "
-          "several): broken beams, radial fractures as arms and clusters, radial clusters at r = 1, the longest "
-          "radial fracture's r_max, the pressure range, p_h. Paper (Section 3.6): 2 fractures at 684 particles, 4 at "
-          "every finer resolution, similar lengths and maximum pressure",
-          {"N (target)", "seeds", "t*", "n_broken", "arms", "radial (clusters)", "radial at r = 1", "r_max radial",
-           "p min", "p max", "p_h", "paper: fractures"},
-          {}};
+  return {
+      "Fig. 19: the state at the last output time per resolution (mean ± sd over the seeds where there are "
+      "several): broken beams, radial fractures as arms and clusters, radial clusters at r = 1, the longest "
+      "radial fracture's r_max, the pressure range, p_h. Paper (Section 3.6): 2 fractures at 684 particles, 4 at "
+      "every finer resolution, similar lengths and maximum pressure",
+      {"N (target)", "seeds", "t*", "n_broken", "arms", "radial (clusters)", "radial at r = 1", "r_max radial", "p min",
+       "p max", "p_h", "paper: fractures"},
+      {}};
 }
 
 Table refinement_displacement_table() {
-  return {"Fig. 20: each resolution's radially averaged u_r (seed 1) against the finest lattice's at the same time: "
-          "mean over the shells of u_r/u_r,finest and the max |u_r/u_r,finest - 1|. Paper: the five highest "
-          "resolutions almost identical, the lowest noticeably lower",
-          {"N (target)", "t*", "mean u_r/u_r,finest", "max |u_r/u_r,finest - 1|", "mean u_r/u_r,1D (no fracture)"},
-          {}};
+  return {
+      "Fig. 20: each resolution's radially averaged u_r (seed 1) against the finest lattice's at the same time: "
+      "mean over the shells of u_r/u_r,finest and the max |u_r/u_r,finest - 1|. Paper: the five highest "
+      "resolutions almost identical, the lowest noticeably lower",
+      {"N (target)", "t*", "mean u_r/u_r,finest", "max |u_r/u_r,finest - 1|", "mean u_r/u_r,1D (no fracture)"},
+      {}};
 }
 
 struct ShellRatio {
@@ -271,15 +287,18 @@ std::vector<std::string> resolution_row(const FigureSpec& f, const std::vector<c
   std::string seeds;
   for (const RunOutcome* o : group) seeds += (seeds.empty() ? "" : ", ") + std::to_string(o->seed);
   const RunOutcome& first = *group.front();
-  return {std::to_string(first.n_particles), seeds, first.snaps.empty() ? "-" : fmt(first.snaps.back().t),
-         last([](const Snapshot& s) { return double(s.stats.n_broken); }),
-         last([](const Snapshot& s) { return double(s.stats.n_arms); }),
-         last([](const Snapshot& s) { return double(s.stats.n_radial); }),
-         last([](const Snapshot& s) { return double(s.stats.n_radial_reaching_outer); }),
-         last([](const Snapshot& s) { return s.stats.max_radial_extent; }),
-         last([](const Snapshot& s) { return s.fp.p_min; }), last([](const Snapshot& s) { return s.fp.p_max; }),
-         last([](const Snapshot& s) { return s.p_h; }),
-         f.panel(first.b, first.n_particles).reading.fractures_text()};
+  return {std::to_string(first.n_particles),
+          seeds,
+          first.snaps.empty() ? "-" : fmt(first.snaps.back().t),
+          last([](const Snapshot& s) { return double(s.stats.n_broken); }),
+          last([](const Snapshot& s) { return double(s.stats.n_arms); }),
+          last([](const Snapshot& s) { return double(s.stats.n_radial); }),
+          last([](const Snapshot& s) { return double(s.stats.n_radial_reaching_outer); }),
+          last([](const Snapshot& s) { return s.stats.max_radial_extent; }),
+          last([](const Snapshot& s) { return s.fp.p_min; }),
+          last([](const Snapshot& s) { return s.fp.p_max; }),
+          last([](const Snapshot& s) { return s.p_h; }),
+          f.panel(first.b, first.n_particles).reading.fractures_text()};
 }
 
 BenchmarkResult run_refinement(const FigureSpec& f, const BenchmarkContext& ctx) {
@@ -290,8 +309,9 @@ BenchmarkResult run_refinement(const FigureSpec& f, const BenchmarkContext& ctx)
   RunSource source(root, ctx.runs_dir, ctx.progress);
   const std::vector<RunCase> resolutions = refinement_cases(refinement_sweep(f, ctx.tier), root);
   const fdm1d::Fdm1dResult ref = write_reference(resolutions.front(), root);
-  Table table = refinement_table(), displacement = refinement_displacement_table(), snaps = snapshot_table(
-      "Section 3.6, Fig. 19: 2 fractures at 684 particles, 4 above"), breakdown = breakdown_table(), timing = timing_table();
+  Table table = refinement_table(), displacement = refinement_displacement_table(),
+        snaps = snapshot_table("Section 3.6, Fig. 19: 2 fractures at 684 particles, 4 above"),
+        breakdown = breakdown_table(), timing = timing_table();
   std::vector<RunOutcome> runs;
   std::vector<bool> in_figure;
   std::vector<std::vector<const RunOutcome*>> by_resolution;
@@ -304,7 +324,8 @@ BenchmarkResult run_refinement(const FigureSpec& f, const BenchmarkContext& ctx)
   }
   write_index(root, runs, in_figure, source);
   for (const auto& o : runs) {
-    if (by_resolution.empty() || by_resolution.back().front()->n_particles != o.n_particles) by_resolution.emplace_back();
+    if (by_resolution.empty() || by_resolution.back().front()->n_particles != o.n_particles)
+      by_resolution.emplace_back();
     by_resolution.back().push_back(&o);
     const PaperReading& reading = f.panel(o.b, o.n_particles).reading;
     add_snapshot_rows(o, snaps, reading);
@@ -324,15 +345,19 @@ BenchmarkResult run_refinement(const FigureSpec& f, const BenchmarkContext& ctx)
     if (&first == &finest) continue;
     const bool coarsest = &group == &by_resolution.front();
     // The paper's words, "almost identical", read as within 5% of the finest; "noticeably lower" as below it.
-    res.metrics.push_back({.name = "N = " + std::to_string(first.n_particles) + ", seed 1: mean u_r/u_r,finest at t* = " +
-                                       fmt(first.snaps.back().t),
-                           .value = r.mean, .reference = 1.0, .tolerance = coarsest ? 1.0 : 0.05,
-                           .comparison = coarsest ? Comparison::at_most : Comparison::rel_error,
-                           .justification = std::string("the paper's Fig. 20: ") +
-                                            (coarsest ? "the lowest resolution gives noticeably lower u_r"
-                                                      : "the higher resolutions give almost identical u_r (our reading: "
-                                                        "within 5%)") + "; shown, not tuned",
-                           .gating = false});
+    res.metrics.push_back(
+        {.name = "N = " + std::to_string(first.n_particles) +
+                 ", seed 1: mean u_r/u_r,finest at t* = " + fmt(first.snaps.back().t),
+         .value = r.mean,
+         .reference = 1.0,
+         .tolerance = coarsest ? 1.0 : 0.05,
+         .comparison = coarsest ? Comparison::at_most : Comparison::rel_error,
+         .justification = std::string("the paper's Fig. 20: ") +
+                          (coarsest ? "the lowest resolution gives noticeably lower u_r"
+                                    : "the higher resolutions give almost identical u_r (our reading: "
+                                      "within 5%)") +
+                          "; shown, not tuned",
+         .gating = false});
   }
   res.tables = {table, displacement, snaps, breakdown, timing};
   const std::string what = ctx.tier == Tier::quick ? "quick tier" : "paper tier";

@@ -9,13 +9,13 @@
 //    (docs/flow.md, "Borehole storage"). With that the plain coupling loop (undrained split, Psi = 1.3, no
 //    relaxation) converges in ~10 passes per step.
 //  - the continuum. The calibrated lattice is E = 1.000, nu = 0.250 (calibrated_continuum(); 0.2236
-//    with the paper's uniform beams), so fdm1d is run with that nu and the model's own E/M (Eq. 22 at Table 1 with nu = 0.25: the same number in
-//    both models), vol_strain = plane-strain (the lattice's volumetric strain is the triangle-area
-//    change). A 1D run with nu = 0.25 (the paper's comparison) is shown beside it, not gating.
+//    with the paper's uniform beams), so fdm1d is run with that nu and the model's own E/M (Eq. 22 at Table 1 with nu =
+//    0.25: the same number in both models), vol_strain = plane-strain (the lattice's volumetric strain is the
+//    triangle-area change). A 1D run with nu = 0.25 (the paper's comparison) is shown beside it, not gating.
 //  - time. Both run implicit Euler on the same dt sequence (dt from 1e-5, growth 1.2, dt_max 2e-3,
 //    steps shortened to land on the output times), so their difference is the lattice's spatial
-//    discretisation, not a time error. A 1D run with finer steps (dt / 10, growth 1.02) shows how large that shared time
-//    error is (information).
+//    discretisation, not a time error. A 1D run with finer steps (dt / 10, growth 1.02) shows how large that shared
+//    time error is (information).
 //  - averaging. The lattice's shell value is the area-weighted mean over the triangles whose centroid
 //    lies in the shell (radial_fields); the 1D value is the area-weighted mean of the nodal profile over
 //    the same shell, integral f r dr / integral r dr.
@@ -31,30 +31,30 @@
 #include <utility>
 #include <vector>
 
+#include "fdm1d_sampling.hpp"
 #include "hm/analytic/physical_parameters.hpp"
-#include "hm/core/file_output.hpp"
 #include "hm/case/coupled_model_of_case.hpp"
-#include "hm/fdm1d/fdm1d.hpp"
-#include "hm/lattice2d/mechanics/calibration.hpp"
-#include "hm/lattice2d/coupled/coupled_model.hpp"
-#include "hm/lattice2d/io/radial_average.hpp"
-#include "hm/verification/benchmark.hpp"
-#include "hm/core/csv_writer.hpp"
 #include "hm/case/fdm1d_output.hpp"
 #include "hm/case/run_case.hpp"
 #include "hm/case/run_output.hpp"
+#include "hm/core/csv_writer.hpp"
+#include "hm/core/file_output.hpp"
+#include "hm/fdm1d/fdm1d.hpp"
+#include "hm/lattice2d/coupled/coupled_model.hpp"
+#include "hm/lattice2d/io/radial_average.hpp"
+#include "hm/lattice2d/mechanics/calibration.hpp"
+#include "hm/verification/benchmark.hpp"
 #include "report_writer.hpp"
-#include "fdm1d_sampling.hpp"
 
 namespace hm::verification {
 
-using core::CsvWriter;
+using cases::injection_pressure;
+using cases::radial_fields;
 using cases::RadialFields;
 using cases::RunCase;
 using cases::RunRecorder;
-using cases::injection_pressure;
-using cases::radial_fields;
 using cases::write_fdm1d_results;
+using core::CsvWriter;
 
 namespace {
 
@@ -142,9 +142,9 @@ const fdm1d::Fdm1dSnapshot& snapshot_at(const fdm1d::Fdm1dResult& r, double t) {
 /// Errors at one compared time.
 struct ProfileErrors {
   double t = 0.0;
-  double u_local = 0.0;  // max over shells of |u2 - u1| / u1 (u1 the 1D shell mean, > 0)
-  double u_max = 0.0;    // max over shells of |u2 - u1| / max u1
-  double p = 0.0;        // max over shells of |p2 - p1| / p_h,1D(t)
+  double u_local = 0.0;               // max over shells of |u2 - u1| / u1 (u1 the 1D shell mean, > 0)
+  double u_max = 0.0;                 // max over shells of |u2 - u1| / max u1
+  double p = 0.0;                     // max over shells of |p2 - p1| / p_h,1D(t)
   double u_local25 = 0.0, p25 = 0.0;  // the same against fdm1d with nu = 0.25 (the paper's comparison)
   // Fluid taken up by the deformation since t = 0, b (V - V0) summed over the rock: lattice over 1D - 1,
   // and the difference over the injected volume Q t.
@@ -170,8 +170,8 @@ struct Outcome {
 };
 
 /// Runs both models for one setting, writes the CSV for the figure, returns the errors.
-Outcome compare(const Comparison1d& v, const fs::path& root, CsvWriter& ph_csv,
-                CsvWriter& p2d_csv, CsvWriter* p1d_csv, Table& profile_table) {
+Outcome compare(const Comparison1d& v, const fs::path& root, CsvWriter& ph_csv, CsvWriter& p2d_csv, CsvWriter* p1d_csv,
+                Table& profile_table) {
   Outcome o;
   o.setting = v;
   const double nu_lattice = lt::calibrated_continuum().poisson_ratio;
@@ -277,14 +277,16 @@ Outcome compare(const Comparison1d& v, const fs::path& root, CsvWriter& ph_csv,
 }
 
 Table profile_table() {
-  return {"Radially averaged u_r and p, lattice vs fdm1d (20 shells on [R_i, 1]; 1D = area-weighted shell mean of "
-          "the nodal profile): u_r error relative to the 1D shell value (gating) and to the largest 1D u_r; p error "
-          "over the 1D borehole pressure at that time; two columns against fdm1d with nu = 0.25; the fluid taken up by "
-          "the deformation, b (V - V0) over the rock (lattice: series.csv's coupling; 1D: b 2 pi [r u] from R_i "
-          "to 1), lattice over 1D - 1 and (the difference over the injected volume Q t)",
-          {"b", "N", "t*", "p_h (1D)", "max |u_r/u_r,1D - 1| (at r*)", "max |u_r - u_r,1D| / max u_r,1D",
-           "max |p - p_1D| / p_h,1D (at r*)", "u_r vs 1D nu = 0.25", "p vs 1D nu = 0.25", "b dV: lattice / 1D - 1 (of Q t)"},
-          {}};
+  return {
+      "Radially averaged u_r and p, lattice vs fdm1d (20 shells on [R_i, 1]; 1D = area-weighted shell mean of "
+      "the nodal profile): u_r error relative to the 1D shell value (gating) and to the largest 1D u_r; p error "
+      "over the 1D borehole pressure at that time; two columns against fdm1d with nu = 0.25; the fluid taken up by "
+      "the deformation, b (V - V0) over the rock (lattice: series.csv's coupling; 1D: b 2 pi [r u] from R_i "
+      "to 1), lattice over 1D - 1 and (the difference over the injected volume Q t)",
+      {"b", "N", "t*", "p_h (1D)", "max |u_r/u_r,1D - 1| (at r*)", "max |u_r - u_r,1D| / max u_r,1D",
+       "max |p - p_1D| / p_h,1D (at r*)", "u_r vs 1D nu = 0.25", "p vs 1D nu = 0.25",
+       "b dV: lattice / 1D - 1 (of Q t)"},
+      {}};
 }
 
 Table run_table() {
@@ -295,12 +297,14 @@ Table run_table() {
 }
 
 Table one_d_table() {
-  return {"fdm1d against itself (information): the paper's nu = 0.25 against the lattice's nu, and a finer time "
-          "stepping (dt / 10, growth 1.02) against the shared dt sequence (max over the compared times; u_r over max u_r, p over p_h; p_h for t* >= " +
-              fmt(kWindow) + ")",
-          {"b", "u_r: nu 0.25 vs lattice", "p: nu 0.25 vs lattice", "p_h: nu 0.25 vs lattice", "u_r: fine dt vs dt",
-           "p_h: fine dt vs dt"},
-          {}};
+  return {
+      "fdm1d against itself (information): the paper's nu = 0.25 against the lattice's nu, and a finer time "
+      "stepping (dt / 10, growth 1.02) against the shared dt sequence (max over the compared times; u_r over max u_r, "
+      "p over p_h; p_h for t* >= " +
+          fmt(kWindow) + ")",
+      {"b", "u_r: nu 0.25 vs lattice", "p: nu 0.25 vs lattice", "p_h: nu 0.25 vs lattice", "u_r: fine dt vs dt",
+       "p_h: fine dt vs dt"},
+      {}};
 }
 
 void add_rows(const Outcome& o, Table& runs, Table* one_d) {
@@ -313,13 +317,21 @@ void add_rows(const Outcome& o, Table& runs, Table* one_d) {
 }
 
 Metric at_most(const std::string& name, double value, double tolerance, bool gating, const std::string& why) {
-  return {.name = name, .value = value, .reference = 0.0, .tolerance = tolerance, .comparison = Comparison::at_most,
-          .justification = why, .gating = gating};
+  return {.name = name,
+          .value = value,
+          .reference = 0.0,
+          .tolerance = tolerance,
+          .comparison = Comparison::at_most,
+          .justification = why,
+          .gating = gating};
 }
 
 Metric completed_metric(const Outcome& o) {
   return {.name = run_label(o.setting.b, o.setting.n_particles) + ": run completed (every step converged, plain loop)",
-          .value = o.ok ? 1.0 : 0.0, .reference = 1.0, .tolerance = 0.0, .comparison = Comparison::abs_error,
+          .value = o.ok ? 1.0 : 0.0,
+          .reference = 1.0,
+          .tolerance = 0.0,
+          .comparison = Comparison::abs_error,
           .justification = "a numerical failure is a failure: " + (o.message.empty() ? "ok" : o.message)};
 }
 
@@ -396,9 +408,10 @@ BenchmarkResult vs_fdm1d_quick(const BenchmarkContext& ctx) {
   const auto& late = o.profiles.back();
   res.metrics.push_back(at_most("N = 4000, t* = 2.3e-3: max |u_r/u_r,1D - 1| over shells", early.u_local, 0.10, true,
                                 why + "7.8% (first shell, the lattice low); 5% is the paper tier's, at N >= 1e4"));
-  res.metrics.push_back(at_most("N = 4000, t* = 2.3e-3: max |p - p_1D| / p_h,1D over shells", early.p, 0.13, true,
-                                why + "4.4% (first shell; 9.1% with uniform beams): the wall boundary layer sqrt(t/S) = 0.049 spans 1.6 "
-                                      "mean beam lengths (h = 0.031); 5% is the paper tier's, at N >= 1e4"));
+  res.metrics.push_back(
+      at_most("N = 4000, t* = 2.3e-3: max |p - p_1D| / p_h,1D over shells", early.p, 0.13, true,
+              why + "4.4% (first shell; 9.1% with uniform beams): the wall boundary layer sqrt(t/S) = 0.049 spans 1.6 "
+                    "mean beam lengths (h = 0.031); 5% is the paper tier's, at N >= 1e4"));
   res.metrics.push_back(at_most("N = 4000, t* = 0.025: max |u_r/u_r,1D - 1| over shells", late.u_local, 0.10, true,
                                 why + "7.6% (first shell, the lattice low: the wall row at h = 0.031 is stiffer "
                                       "than the continuum, first order in h); 5% is the paper tier's, at N >= 1e4"));
@@ -421,12 +434,15 @@ BenchmarkResult vs_fdm1d_quick(const BenchmarkContext& ctx) {
 // One paper-tier run's metrics: it completed, its balance, its profiles and p_h against the 1D model at
 // the compared times (gated at 5%), and against the 1D model with the paper's nu (shown).
 void add_paper_run_metrics(const Outcome& o, std::vector<Metric>& metrics) {
-  const std::string why = "the lattice's spatial discretisation error against 1D (same time steps): radially averaged "
-                          "u_r and p within 5% over [R_i, 1] at each compared time";
-  const std::string why_ph = "the lattice's discretisation error in the borehole pressure history: within 5% over "
-                             "t* >= " + fmt(kWindow) +
-                             " (before it the wall boundary layer sqrt(t/S) is thinner than ~1.2 mean beam lengths "
-                             "at N = 1e4 for b = 0.8)";
+  const std::string why =
+      "the lattice's spatial discretisation error against 1D (same time steps): radially averaged "
+      "u_r and p within 5% over [R_i, 1] at each compared time";
+  const std::string why_ph =
+      "the lattice's discretisation error in the borehole pressure history: within 5% over "
+      "t* >= " +
+      fmt(kWindow) +
+      " (before it the wall boundary layer sqrt(t/S) is thinner than ~1.2 mean beam lengths "
+      "at N = 1e4 for b = 0.8)";
   const std::string tag = run_label(o.setting.b, o.setting.n_particles);
   metrics.push_back(completed_metric(o));
   metrics.push_back(balance_metric(o));
@@ -438,20 +454,20 @@ void add_paper_run_metrics(const Outcome& o, std::vector<Metric>& metrics) {
   }
   metrics.push_back(
       at_most(tag + ": max |p_h/p_h,1D - 1| for t* >= " + fmt(kWindow), o.p_h_window, 0.05, true, why_ph));
-  metrics.push_back(at_most(tag + ": max |p_h/p_h,1D - 1| for t* >= " + fmt(0.5 * kWindow), o.p_h_half_window,
-                            0.05, false,
+  metrics.push_back(at_most(tag + ": max |p_h/p_h,1D - 1| for t* >= " + fmt(0.5 * kWindow), o.p_h_half_window, 0.05,
+                            false,
                             "information: the window's edge; at N = 1e4, b = 0.8 the lattice is still 5% high "
                             "at t* = 6e-4, where sqrt(t/S) ~ 1 lattice spacing"));
   double u25 = 0.0, p25 = 0.0;
   for (const auto& pe : o.profiles) u25 = std::max(u25, pe.u_local25), p25 = std::max(p25, pe.p25);
-  metrics.push_back(at_most(tag + ": against fdm1d with the paper's nu = 0.25, max |u_r/u_r,1D - 1| (all times)",
-                            u25, 0.05, false,
+  metrics.push_back(at_most(tag + ": against fdm1d with the paper's nu = 0.25, max |u_r/u_r,1D - 1| (all times)", u25,
+                            0.05, false,
                             "information: the paper compares with nu = 0.25; the lattice's calibrated nu is " +
                                 fmt(lt::calibrated_continuum().poisson_ratio) +
                                 " (the same column when they agree; 0.2236 with uniform beams moves the 1D u_r "
                                 "by ~2.5% of max u_r)"));
-  metrics.push_back(at_most(tag + ": against fdm1d with nu = 0.25, max |p - p_1D| / p_h,1D (all times)", p25,
-                            0.05, false, "information: as above; nu moves the 1D p by < 1% of p_h"));
+  metrics.push_back(at_most(tag + ": against fdm1d with nu = 0.25, max |p - p_1D| / p_h,1D (all times)", p25, 0.05,
+                            false, "information: as above; nu moves the 1D p by < 1% of p_h"));
 }
 
 BenchmarkResult vs_fdm1d_paper(const BenchmarkContext& ctx) {
@@ -487,20 +503,26 @@ BenchmarkResult vs_fdm1d_paper(const BenchmarkContext& ctx) {
     add_paper_run_metrics(f, res.metrics);
     const std::string b = "b = " + fmt(bs[k]);
     res.metrics.push_back({.name = b + ": |p_h/p_h,1D - 1| at t* = " + fmt(kEarly) + ", N = 1e4 over N = 3e4",
-                           .value = c.p_h_early / f.p_h_early, .reference = 1.0, .tolerance = 1.0,
+                           .value = c.p_h_early / f.p_h_early,
+                           .reference = 1.0,
+                           .tolerance = 1.0,
                            .comparison = Comparison::at_least,
                            .justification = "the early-time excess of the lattice's p_h (an unresolved boundary layer) "
                                             "must shrink under refinement"});
     res.metrics.push_back({.name = b + ": max |u_r/u_r,1D - 1| at t* = 2.3e-3, N = 1e4 over N = 3e4",
-                           .value = c.profiles.front().u_local / f.profiles.front().u_local, .reference = 1.0,
-                           .tolerance = 1.0, .comparison = Comparison::at_least,
+                           .value = c.profiles.front().u_local / f.profiles.front().u_local,
+                           .reference = 1.0,
+                           .tolerance = 1.0,
+                           .comparison = Comparison::at_least,
                            .justification = "information: with the facet-scaled lattice the largest u_r difference is "
                                             "at most ~3% at N = 1e4 and not always at the wall (measured 2.3-3.2% at "
                                             "N = 1e4, 1.2-2.4% at 3e4, 2026-11-22): at the level of the shell means' "
                                             "sampling scatter, where the ratio is noise; each run's 5% above gates",
                            .gating = false});
     res.metrics.push_back({.name = b + ": max |p - p_1D| / p_h,1D at t* = 2.3e-3, N = 1e4 over N = 3e4",
-                           .value = c.profiles.front().p / f.profiles.front().p, .reference = 1.0, .tolerance = 1.0,
+                           .value = c.profiles.front().p / f.profiles.front().p,
+                           .reference = 1.0,
+                           .tolerance = 1.0,
                            .comparison = Comparison::at_least,
                            .justification = "information: the first shell's p is shown, not gated (the shell average "
                                             "of a steep wall profile)",

@@ -20,8 +20,13 @@ namespace {
 std::string sign_word(double x) { return std::isnan(x) ? "-" : (x < 0.0 ? "negative" : "positive"); }
 
 Metric flag(const std::string& name, bool value, const std::string& why, bool gating = true) {
-  return {.name = name, .value = value ? 1.0 : 0.0, .reference = 1.0, .tolerance = 0.0,
-          .comparison = Comparison::abs_error, .justification = why, .gating = gating};
+  return {.name = name,
+          .value = value ? 1.0 : 0.0,
+          .reference = 1.0,
+          .tolerance = 0.0,
+          .comparison = Comparison::abs_error,
+          .justification = why,
+          .gating = gating};
 }
 
 /// The largest value of a field of the fluid over the output times (NaN where none is a number).
@@ -50,13 +55,15 @@ std::string mean_sd(const std::vector<double>& x) {
 }
 
 Table snapshot_table(const std::string& paper) {
-  return {"Per output time: broken beams; radial fractures as clusters (connected to the borehole) and as arms "
-          "crossing r = R_i + (1 - R_i)/4; radial clusters reaching r = 1; secondary clusters (all; those at least "
-          "0.05 R long, most others are single broken beams; and of those, how many touch r = 1 and how many lie "
-          "inside). Paper: " + paper,
-          {"run", "t*", "n_broken", "radial (clusters)", "arms", "radial at r = 1", "secondary", "secondary >= 0.05",
-           "... at r = 1 / inside", "paper: fractures (last time)"},
-          {}};
+  return {
+      "Per output time: broken beams; radial fractures as clusters (connected to the borehole) and as arms "
+      "crossing r = R_i + (1 - R_i)/4; radial clusters reaching r = 1; secondary clusters (all; those at least "
+      "0.05 R long, most others are single broken beams; and of those, how many touch r = 1 and how many lie "
+      "inside). Paper: " +
+          paper,
+      {"run", "t*", "n_broken", "radial (clusters)", "arms", "radial at r = 1", "secondary", "secondary >= 0.05",
+       "... at r = 1 / inside", "paper: fractures (last time)"},
+      {}};
 }
 
 void add_snapshot_rows(const RunOutcome& o, Table& t, const PaperReading& paper) {
@@ -69,14 +76,16 @@ void add_snapshot_rows(const RunOutcome& o, Table& t, const PaperReading& paper)
 }
 
 Table fluid_table(const std::string& paper) {
-  return {"The fluid per output time: borehole pressure; pressure range over all triangles; mean pressure in the "
-          "fracture triangles (area-weighted over triangles with a broken beam, without / with the borehole-wall "
-          "triangles), its minimum and sign; backflow into the borehole (wall segments draining into it); inflow "
-          "through r = 1 (drawn in by the Mandel-Cryer suction near the free boundary in every run) and its part through "
-          "the mouths of fractures at r = 1; each over the injection rate Q. Paper: " + paper,
-          {"run", "t*", "p_h", "p min", "p max", "p in fractures (no wall tri.)", "with wall tri.", "min p in fractures",
-           "sign", "backflow into borehole / Q", "inflow at r = 1 / Q", "... through fracture mouths / Q"},
-          {}};
+  return {
+      "The fluid per output time: borehole pressure; pressure range over all triangles; mean pressure in the "
+      "fracture triangles (area-weighted over triangles with a broken beam, without / with the borehole-wall "
+      "triangles), its minimum and sign; backflow into the borehole (wall segments draining into it); inflow "
+      "through r = 1 (drawn in by the Mandel-Cryer suction near the free boundary in every run) and its part through "
+      "the mouths of fractures at r = 1; each over the injection rate Q. Paper: " +
+          paper,
+      {"run", "t*", "p_h", "p min", "p max", "p in fractures (no wall tri.)", "with wall tri.", "min p in fractures",
+       "sign", "backflow into borehole / Q", "inflow at r = 1 / Q", "... through fracture mouths / Q"},
+      {}};
 }
 
 void add_fluid_rows(const RunOutcome& o, Table& t) {
@@ -88,8 +97,9 @@ void add_fluid_rows(const RunOutcome& o, Table& t) {
 }
 
 Table scatter_table(long long n_particles) {
-  return {"Seed scatter at N = " + std::to_string(n_particles) + " (seeds 1, 2, 3 of the lattice and the strengths): "
-          "mean ± sample standard deviation over the three runs",
+  return {"Seed scatter at N = " + std::to_string(n_particles) +
+              " (seeds 1, 2, 3 of the lattice and the strengths): "
+              "mean ± sample standard deviation over the three runs",
           {"b", "t*", "n_broken", "radial (clusters)", "arms", "radial at r = 1", "secondary", "secondary >= 0.05",
            "p in fractures (no wall tri.)", "p_h"},
           {}};
@@ -121,19 +131,23 @@ void add_scatter_rows(const std::string& b, const std::vector<RunOutcome>& seeds
                             mean_sd(ns), mean_sd(nz), mean_sd(fp), mean_sd(ph)});
   }
   std::vector<double> tf, pf, tp, pp;
-  for (const RunOutcome* s : ok) tf.push_back(s->t_first), pf.push_back(s->p_first), tp.push_back(s->t_peak), pp.push_back(s->p_peak);
+  for (const RunOutcome* s : ok)
+    tf.push_back(s->t_first), pf.push_back(s->p_first), tp.push_back(s->t_peak), pp.push_back(s->p_peak);
   breakdown.rows.push_back({b, mean_sd(tf), mean_sd(pf), mean_sd(tp), mean_sd(pp)});
 }
 
 Table breakdown_table() {
-  return {"Breakdown (Section 3.5): the step that broke the first beam (its time, p_h^n before it, its converged "
-          "p_h^{n+1}), where and how the first beam broke, the peak borehole pressure; before the first break, the "
-          "2D p_h against fdm1d (no fracture, flux-boundary borehole) for t* >= " + fmt(kWindow),
-          {"run", "t* first break", "p_h before", "p_h at first break", "first break: r (R_i), mode",
-           "t* peak", "p_h peak", "max |p_h/p_h,1D - 1| before, t* >= " + fmt(kWindow) + " (at t*)", "p_h/p_h,1D - 1 just before (t*)",
-           "max |u_r/u_r,1D - 1| unbroken snapshot", "flux-borehole twin: |p_h/p_h,1D - 1| at its end; max for t* >= " + fmt(kWindow) + " (at t*)",
-           "twin: max |u_r/u_r,1D - 1| (t*)"},
-          {}};
+  return {
+      "Breakdown (Section 3.5): the step that broke the first beam (its time, p_h^n before it, its converged "
+      "p_h^{n+1}), where and how the first beam broke, the peak borehole pressure; before the first break, the "
+      "2D p_h against fdm1d (no fracture, flux-boundary borehole) for t* >= " +
+          fmt(kWindow),
+      {"run", "t* first break", "p_h before", "p_h at first break", "first break: r (R_i), mode", "t* peak", "p_h peak",
+       "max |p_h/p_h,1D - 1| before, t* >= " + fmt(kWindow) + " (at t*)", "p_h/p_h,1D - 1 just before (t*)",
+       "max |u_r/u_r,1D - 1| unbroken snapshot",
+       "flux-borehole twin: |p_h/p_h,1D - 1| at its end; max for t* >= " + fmt(kWindow) + " (at t*)",
+       "twin: max |u_r/u_r,1D - 1| (t*)"},
+      {}};
 }
 
 void add_breakdown_row(const RunOutcome& o, Table& t) {
@@ -144,23 +158,26 @@ void add_breakdown_row(const RunOutcome& o, Table& t) {
                     fmt(o.r_first) + " (" + fmt(o.R_i) + "), " + hm::core::name_of(o.mode_first), fmt(o.t_peak),
                     fmt(o.p_peak), fmt(o.pre_max) + " (" + fmt(o.pre_max_t) + ")",
                     fmt(o.pre_signed_last) + " (" + fmt(o.pre_last_t) + ")", u,
-                    o.twin_label.empty() ? "-" : fmt(o.twin.end_error) + "; " + fmt(o.twin.max_error) + " (" + fmt(o.twin.max_error_t) + ")",
+                    o.twin_label.empty()
+                        ? "-"
+                        : fmt(o.twin.end_error) + "; " + fmt(o.twin.max_error) + " (" + fmt(o.twin.max_error_t) + ")",
                     o.twin_label.empty() ? "-" : fmt(o.twin.u_error) + " (" + fmt(o.twin.t_end) + ")"});
 }
 
 Table timing_table() {
-  return {"Runs: steps, coupling passes, step halvings, wall time and its split (sums of CoupledStepSummary's "
-          "mechanical solves (break loops' included), stresses + downdates, geometry, flow), max volume-balance error "
-          "per step",
-          {"run", "steps", "passes", "halvings", "wall s", "mechanics s", "stresses + downdates s", "geometry s", "flow s",
-           "balance"},
-          {}};
+  return {
+      "Runs: steps, coupling passes, step halvings, wall time and its split (sums of CoupledStepSummary's "
+      "mechanical solves (break loops' included), stresses + downdates, geometry, flow), max volume-balance error "
+      "per step",
+      {"run", "steps", "passes", "halvings", "wall s", "mechanics s", "stresses + downdates s", "geometry s", "flow s",
+       "balance"},
+      {}};
 }
 
 void add_timing_row(const RunOutcome& o, Table& t) {
-  t.rows.push_back({run_name(o), std::to_string(o.n_steps), std::to_string(o.passes), o.n_halvings < 0 ? std::string("-") : std::to_string(o.n_halvings),
-                    fmt(o.seconds), fmt(o.mechanics), fmt(o.fracture), fmt(o.geometry), fmt(o.flow),
-                    fmt(o.max_balance)});
+  t.rows.push_back({run_name(o), std::to_string(o.n_steps), std::to_string(o.passes),
+                    o.n_halvings < 0 ? std::string("-") : std::to_string(o.n_halvings), fmt(o.seconds),
+                    fmt(o.mechanics), fmt(o.fracture), fmt(o.geometry), fmt(o.flow), fmt(o.max_balance)});
 }
 
 /// What must hold for every run (gating), and the 1D comparison before the first break (not gating).
@@ -168,30 +185,43 @@ void add_gating_metrics(const RunOutcome& o, std::vector<Metric>& m) {
   const std::string tag = run_name(o) + ": ";
   m.push_back(flag(tag + "run completed (every step converged)", o.ok,
                    "a numerical failure is a failure: " + (o.message.empty() ? std::string("ok") : o.message)));
-  m.push_back({.name = tag + "volume balance, max relative error per step", .value = o.max_balance,
-               .reference = 0.0, .tolerance = 1e-8, .comparison = Comparison::at_most,
+  m.push_back({.name = tag + "volume balance, max relative error per step",
+               .value = o.max_balance,
+               .reference = 0.0,
+               .tolerance = 1e-8,
+               .comparison = Comparison::at_most,
                .justification = "the flow scheme is conservative by construction, broken segments included: round-off "
                                 "(measured <= 3e-11 per step; 1e-8 leaves margin)"});
   m.push_back(flag(tag + "first break tensile, at the borehole wall (|r - R_i| <= its beam length)",
                    o.mode_first == lt::FailureMode::tensile && std::abs(o.r_first - o.R_i) <= o.length_first,
                    "Section 3.2/3.3: the hoop stress is largest and tensile at the wall, so fractures initiate there "
-                   "in tension (measured: r = " + fmt(o.r_first) + ", " + hm::core::name_of(o.mode_first) + ")"));
-  m.push_back({.name = tag + "radial fractures at the last output time", .value = o.snaps.empty() ? 0.0 : static_cast<double>(o.snaps.back().stats.n_radial),
-               .reference = 1.0, .tolerance = 1.0, .comparison = Comparison::at_least,
+                   "in tension (measured: r = " +
+                       fmt(o.r_first) + ", " + hm::core::name_of(o.mode_first) + ")"));
+  m.push_back({.name = tag + "radial fractures at the last output time",
+               .value = o.snaps.empty() ? 0.0 : static_cast<double>(o.snaps.back().stats.n_radial),
+               .reference = 1.0,
+               .tolerance = 1.0,
+               .comparison = Comparison::at_least,
                .justification = "Fig. 12: radial fractures initiate at the borehole wall in both cases; how many is "
                                 "the non-gating comparison below"});
   m.push_back({.name = tag + "broken beams found intact again, and steps where n_broken fell",
-               .value = static_cast<double>(o.n_healed + o.n_broken_decreases), .reference = 0.0, .tolerance = 0.0,
+               .value = static_cast<double>(o.n_healed + o.n_broken_decreases),
+               .reference = 0.0,
+               .tolerance = 0.0,
                .comparison = Comparison::at_most,
                .justification = "Section 2.1: breaking is irreversible (no healing); checked after every step"});
-  m.push_back({.name = tag + "|p_h/p_h,1D - 1| at the last step before the first break (t* = " + fmt(o.pre_last_t) + ")",
-               .value = o.pre_last, .reference = 0.0, .tolerance = 0.05, .comparison = Comparison::at_most,
-               .justification = "information, not gating: the first breaks come in the first steps, where the lattice "
-                                "cannot resolve the wall's pressure boundary layer sqrt(t/S) (p_h +73% to +250% above 1D at "
-                                "t* = 1e-5, N = 1e4, docs/lattice_vs_fdm1d.md; nan: the first step already broke). Eq. 16's "
-                                "borehole node instead holds p_h 75-83% below 1D (errata E15); the unfractured twin below "
-                                "is what is gated",
-               .gating = false});
+  m.push_back(
+      {.name = tag + "|p_h/p_h,1D - 1| at the last step before the first break (t* = " + fmt(o.pre_last_t) + ")",
+       .value = o.pre_last,
+       .reference = 0.0,
+       .tolerance = 0.05,
+       .comparison = Comparison::at_most,
+       .justification = "information, not gating: the first breaks come in the first steps, where the lattice "
+                        "cannot resolve the wall's pressure boundary layer sqrt(t/S) (p_h +73% to +250% above 1D at "
+                        "t* = 1e-5, N = 1e4, docs/lattice_vs_fdm1d.md; nan: the first step already broke). Eq. 16's "
+                        "borehole node instead holds p_h 75-83% below 1D (errata E15); the unfractured twin below "
+                        "is what is gated",
+       .gating = false});
   if (o.twin_label.empty()) return;
   // The twin's tolerances. N >= 1e4: 5%, the bound on the lattice's spatial discretisation error against
   // 1D that lattice2d.vs_fdm1d holds at N = 1e4 and 3e4 with the same borehole (measured <= 3.2%).
@@ -200,25 +230,34 @@ void add_gating_metrics(const RunOutcome& o, std::vector<Metric>& m) {
   const bool fine = o.n_particles >= 10000;
   m.push_back(flag(tag + "flux-borehole twin (no fracture) completed", o.twin.ok, "a numerical failure is a failure"));
   m.push_back({.name = tag + "flux-borehole twin: |p_h/p_h,1D - 1| at t* = " + fmt(o.twin.t_end),
-               .value = o.twin.end_error, .reference = 0.0, .tolerance = 0.05, .comparison = Comparison::at_most,
+               .value = o.twin.end_error,
+               .reference = 0.0,
+               .tolerance = 0.05,
+               .comparison = Comparison::at_most,
                .justification = "the lattice's spatial discretisation error in p_h against 1D, within 5% (measured at "
                                 "N = 3000: 0.3% for b = 0.2 at t* = 4.5e-3, 4.6% for b = 0.8 at t* = 2.3e-3)"});
-  m.push_back({.name = tag + "flux-borehole twin: max |p_h/p_h,1D - 1|, " + fmt(kWindow) + " <= t* <= " + fmt(o.twin.t_end),
-               .value = o.twin.max_error, .reference = 0.0, .tolerance = fine ? 0.05 : 0.13,
-               .comparison = Comparison::at_most,
-               .justification = fine ? std::string("the lattice's discretisation error against 1D over t* >= 1e-3: 5%, as "
-                                                 "lattice2d.vs_fdm1d")
-                                     : std::string("regression guard at N = 3000: measured 0.7% (b = 0.2), 11.2% (b = 0.8, at "
-                                                   "t* = 1.06e-3, where the wall boundary layer sqrt(t/S) = 0.024 is under "
-                                                   "one lattice spacing, 0.034; it decays to 4.6% by t* = 2.3e-3)")});
-  m.push_back({.name = tag + "flux-borehole twin: max |u_r/u_r,1D - 1| over shells at t* = " + fmt(o.twin.t_end),
-               .value = o.twin.u_error, .reference = 0.0, .tolerance = fine ? 0.05 : 0.12,
-               .comparison = Comparison::at_most,
-               .justification = fine ? std::string("the lattice's discretisation error against 1D: 5%, as "
-                                                 "lattice2d.vs_fdm1d")
-                                     : std::string("regression guard at N = 3000: the wall row's first-order error, 7.6% "
-                                                   "at N = 4000 (lattice2d.vs_fdm1d_quick), 2.3-3.2% at N = 1e4; "
-                                                   "measured 8.1% (b = 0.2), 2.5% (b = 0.8)")});
+  m.push_back(
+      {.name = tag + "flux-borehole twin: max |p_h/p_h,1D - 1|, " + fmt(kWindow) + " <= t* <= " + fmt(o.twin.t_end),
+       .value = o.twin.max_error,
+       .reference = 0.0,
+       .tolerance = fine ? 0.05 : 0.13,
+       .comparison = Comparison::at_most,
+       .justification = fine ? std::string("the lattice's discretisation error against 1D over t* >= 1e-3: 5%, as "
+                                           "lattice2d.vs_fdm1d")
+                             : std::string("regression guard at N = 3000: measured 0.7% (b = 0.2), 11.2% (b = 0.8, at "
+                                           "t* = 1.06e-3, where the wall boundary layer sqrt(t/S) = 0.024 is under "
+                                           "one lattice spacing, 0.034; it decays to 4.6% by t* = 2.3e-3)")});
+  m.push_back(
+      {.name = tag + "flux-borehole twin: max |u_r/u_r,1D - 1| over shells at t* = " + fmt(o.twin.t_end),
+       .value = o.twin.u_error,
+       .reference = 0.0,
+       .tolerance = fine ? 0.05 : 0.12,
+       .comparison = Comparison::at_most,
+       .justification = fine ? std::string("the lattice's discretisation error against 1D: 5%, as "
+                                           "lattice2d.vs_fdm1d")
+                             : std::string("regression guard at N = 3000: the wall row's first-order error, 7.6% "
+                                           "at N = 4000 (lattice2d.vs_fdm1d_quick), 2.3-3.2% at N = 1e4; "
+                                           "measured 8.1% (b = 0.2), 2.5% (b = 0.8)")});
 }
 
 /// The paper's reading of the run's figure, shown beside ours (never gating).
@@ -228,14 +267,20 @@ void add_paper_metrics(const RunOutcome& o, std::vector<Metric>& m, const PaperR
   using Sign = PaperReading::FracturePressureSign;
   const std::string tag = run_name(o) + ": ";
   const Snapshot& last = o.snaps.back();
-  const std::string why = "the paper's " + paper.figure + " (N = 1e5, one realisation): \"" + paper.quote +
-                          "\"; shown, not tuned";
+  const std::string why =
+      "the paper's " + paper.figure + " (N = 1e5, one realisation): \"" + paper.quote + "\"; shown, not tuned";
   const auto shown = [&](const std::string& name, double value, double reference, double tolerance, Comparison c) {
-    m.push_back({.name = tag + name, .value = value, .reference = reference, .tolerance = tolerance, .comparison = c,
-                 .justification = why, .gating = false});
+    m.push_back({.name = tag + name,
+                 .value = value,
+                 .reference = reference,
+                 .tolerance = tolerance,
+                 .comparison = c,
+                 .justification = why,
+                 .gating = false});
   };
   if (paper.fractures != PaperReading::not_stated) {
-    shown("radial fractures (arms) at t* = " + fmt(last.t), last.stats.n_arms, paper.fractures, 0.0, Comparison::abs_error);
+    shown("radial fractures (arms) at t* = " + fmt(last.t), last.stats.n_arms, paper.fractures, 0.0,
+          Comparison::abs_error);
     shown("radial fractures (clusters) at t* = " + fmt(last.t), last.stats.n_radial, paper.fractures, 0.0,
           Comparison::abs_error);
   }
@@ -268,9 +313,11 @@ void add_paper_metrics(const RunOutcome& o, std::vector<Metric>& m, const PaperR
   const double inflow = largest(o.snaps, &FracturePressure::mouth_inflow);
   // 1e-3 Q: a backflow of a thousandth of the injection, far above the flow solve's round-off.
   if (paper.backflow_into_borehole)
-    shown("largest backflow into the borehole over the output times, / Q", backflow / o.Q, 1.0, 1e-3, Comparison::at_least);
+    shown("largest backflow into the borehole over the output times, / Q", backflow / o.Q, 1.0, 1e-3,
+          Comparison::at_least);
   if (paper.backflow_into_domain)
-    shown("largest inflow through fracture mouths at r = 1 over the output times, / Q", inflow / o.Q, 1.0, 1e-3, Comparison::at_least);
+    shown("largest inflow through fracture mouths at r = 1 over the output times, / Q", inflow / o.Q, 1.0, 1e-3,
+          Comparison::at_least);
   if (paper.borehole_pressure_drops)
     shown("p_h at t* = " + fmt(last.t) + " over its peak (" + fmt(o.p_peak) + " at t* = " + fmt(o.t_peak) + ")",
           last.p_h / o.p_peak, 1.0, 0.99, Comparison::at_most);
@@ -283,21 +330,24 @@ void write_index(const fs::path& root, const std::vector<RunOutcome>& runs, cons
   f << "run,b,n_particles,seed,fdm1d,figure,flux_twin,eq16_node\n";
   for (std::size_t k = 0; k < runs.size(); ++k)
     f << source.folder(runs[k].label) << "," << fmt(runs[k].b) << "," << runs[k].n_particles << "," << runs[k].seed
-      << ",fdm1d_b" << fmt(runs[k].b) << "," << (in_figure[k] ? 1 : 0) << "," << source.folder(runs[k].twin_label) << ","
-      << source.folder(runs[k].eq16_label) << "\n";
+      << ",fdm1d_b" << fmt(runs[k].b) << "," << (in_figure[k] ? 1 : 0) << "," << source.folder(runs[k].twin_label)
+      << "," << source.folder(runs[k].eq16_label) << "\n";
   core::close_checked(f, root / "runs.csv");
 }
 
 std::vector<Figure> figures(const std::string& subdir, const std::string& what) {
-  return {{"fig12_fracture_pressure.py", "fig12_fracture_pressure.png",
-           "Fig. 12 (" + what + "): pressure per triangle (diverging colours centred on 0, limits from each snapshot's "
+  return {
+      {"fig12_fracture_pressure.py", "fig12_fracture_pressure.png",
+       "Fig. 12 (" + what +
+           "): pressure per triangle (diverging colours centred on 0, limits from each snapshot's "
            "min and max), broken beams in black, the borehole outline, at the case's output times; b = 0.2 (top), "
            "0.8 (bottom).",
-           subdir},
-          {"fig13_displacement_vs_1d.py", "fig13_displacement_vs_1d.png",
-           "Fig. 13 (" + what + "): radially averaged u_r of the fracturing lattice (solid, markers) and of fdm1d "
+       subdir},
+      {"fig13_displacement_vs_1d.py", "fig13_displacement_vs_1d.png",
+       "Fig. 13 (" + what +
+           "): radially averaged u_r of the fracturing lattice (solid, markers) and of fdm1d "
            "without fracture (dashed) at the paper's times; borehole pressure 2D vs 1D with the first break marked.",
-           subdir}};
+       subdir}};
 }
 
 std::string notes_common() {
@@ -309,14 +359,14 @@ std::string notes_common() {
          "*arms*: groups of broken beams crossing the circle r = R_i + (1 - R_i)/4. The *pressure in the fractures* "
          "is the area-weighted mean over the triangles that have a broken beam, without the triangles on the "
          "borehole wall (their pressure follows p_h through the wall segment); the mean with them is shown beside. "
-         "The 1D reference is fdm1d with the calibrated lattice's nu = " + fmt(lt::calibrated_continuum().poisson_ratio) +
+         "The 1D reference is fdm1d with the calibrated lattice's nu = " +
+         fmt(lt::calibrated_continuum().poisson_ratio) +
          ", the case's E/M, plane-strain volumetric strain, n_r = 400, on the case's dt sequence; it has no "
          "fracture and a flux-boundary borehole (no storage), as the cases (errata E15: Eq. 16's borehole node "
          "would hold p_h 75-83% below 1D before the first break). What is gated against 1D is the *unfractured twin* "
          "(same case and lattice, fracture off, to the first output time; folders <case>_flux_borehole/, dotted in "
          "Fig. 13).";
 }
-
 
 namespace {
 
@@ -347,15 +397,16 @@ double mean_of(const std::vector<double>& v) {
 }  // namespace
 
 Table borehole_node_table() {
-  return {"Borehole node (errata E15, E16): the cases' flux boundary (no storage, no b dV_h: fdm1d's borehole) "
-          "against Eq. 16 as printed (`[flow] borehole_storage = \"biot-modulus\"`, `borehole_deformation = "
-          "\"biot\"`); mean ± sd over seeds. Unbroken at Fig. 13's first time: the fraction of runs with no broken "
-          "beam at the case's first output time (the paper: none broken at t* = 4.5e-3 for b = 0.2, 2.3e-3 for "
-          "b = 0.8), and there u_r/u_r,1D averaged over the shells (the paper: the lattice fits the 1D model). "
-          "Counts at the last output time",
-          {"runs", "t* first break", "p_h at first break", "unbroken at first output t*", "u_r/u_r,1D there",
-           "n_broken", "arms", "radial (clusters)", "radial at r = 1", "secondary", "p_h peak", "paper: fractures"},
-          {}};
+  return {
+      "Borehole node (errata E15, E16): the cases' flux boundary (no storage, no b dV_h: fdm1d's borehole) "
+      "against Eq. 16 as printed (`[flow] borehole_storage = \"biot-modulus\"`, `borehole_deformation = "
+      "\"biot\"`); mean ± sd over seeds. Unbroken at Fig. 13's first time: the fraction of runs with no broken "
+      "beam at the case's first output time (the paper: none broken at t* = 4.5e-3 for b = 0.2, 2.3e-3 for "
+      "b = 0.8), and there u_r/u_r,1D averaged over the shells (the paper: the lattice fits the 1D model). "
+      "Counts at the last output time",
+      {"runs", "t* first break", "p_h at first break", "unbroken at first output t*", "u_r/u_r,1D there", "n_broken",
+       "arms", "radial (clusters)", "radial at r = 1", "secondary", "p_h peak", "paper: fractures"},
+      {}};
 }
 
 void add_borehole_node_row(const std::vector<const RunOutcome*>& g, Table& t, const PaperReading& paper) {
@@ -363,35 +414,42 @@ void add_borehole_node_row(const std::vector<const RunOutcome*>& g, Table& t, co
   const auto last = [](auto field) {
     return [field](const RunOutcome& o) { return static_cast<double>(field(o.snaps.back().stats)); };
   };
-  t.rows.push_back(
-      {group_name(g), mean_sd(values(g, [](const RunOutcome& o) { return o.t_first; })),
-       mean_sd(values(g, [](const RunOutcome& o) { return o.p_first; })),
-       mean_sd(values(g, first_snapshot_unbroken)) + " (t* = " + fmt(g.front()->snaps.empty() ? kNaN : g.front()->snaps.front().t) + ")",
-       mean_sd(values(g, [](const RunOutcome& o) { return o.snaps.front().u_ratio_mean; })),
-       mean_sd(values(g, last([](const lt::FractureStatistics& s) { return s.n_broken; }))),
-       mean_sd(values(g, last([](const lt::FractureStatistics& s) { return s.n_arms; }))),
-       mean_sd(values(g, last([](const lt::FractureStatistics& s) { return s.n_radial; }))),
-       mean_sd(values(g, last([](const lt::FractureStatistics& s) { return s.n_radial_reaching_outer; }))),
-       mean_sd(values(g, last([](const lt::FractureStatistics& s) { return s.n_secondary; }))),
-       mean_sd(values(g, [](const RunOutcome& o) { return o.p_peak; })),
-       paper.fractures_text()});
+  t.rows.push_back({group_name(g), mean_sd(values(g, [](const RunOutcome& o) { return o.t_first; })),
+                    mean_sd(values(g, [](const RunOutcome& o) { return o.p_first; })),
+                    mean_sd(values(g, first_snapshot_unbroken)) +
+                        " (t* = " + fmt(g.front()->snaps.empty() ? kNaN : g.front()->snaps.front().t) + ")",
+                    mean_sd(values(g, [](const RunOutcome& o) { return o.snaps.front().u_ratio_mean; })),
+                    mean_sd(values(g, last([](const lt::FractureStatistics& s) { return s.n_broken; }))),
+                    mean_sd(values(g, last([](const lt::FractureStatistics& s) { return s.n_arms; }))),
+                    mean_sd(values(g, last([](const lt::FractureStatistics& s) { return s.n_radial; }))),
+                    mean_sd(values(g, last([](const lt::FractureStatistics& s) { return s.n_radial_reaching_outer; }))),
+                    mean_sd(values(g, last([](const lt::FractureStatistics& s) { return s.n_secondary; }))),
+                    mean_sd(values(g, [](const RunOutcome& o) { return o.p_peak; })), paper.fractures_text()});
 }
 
 void add_borehole_node_metrics(const std::vector<const RunOutcome*>& flux, const std::vector<const RunOutcome*>& eq16,
                                std::vector<Metric>& m) {
-  const std::string paper = "the paper's Fig. 13 (no fracture at its first time, the lattice on the 1D curve): shown, "
-                            "not tuned; with Table 1's T_u the 1D wall passes T_u long before (errata E16)";
+  const std::string paper =
+      "the paper's Fig. 13 (no fracture at its first time, the lattice on the 1D curve): shown, "
+      "not tuned; with Table 1's T_u the 1D wall passes T_u long before (errata E16)";
   for (const auto* g : {&flux, &eq16}) {
     const std::vector<double> unbroken = values(*g, first_snapshot_unbroken);
     if (unbroken.empty()) continue;
     const double t1 = g->front()->snaps.front().t;
-    m.push_back({.name = group_name(*g) + ": fraction of runs unbroken at t* = " + fmt(t1), .value = mean_of(unbroken),
-                 .reference = 1.0, .tolerance = 0.0, .comparison = Comparison::abs_error, .justification = paper,
+    m.push_back({.name = group_name(*g) + ": fraction of runs unbroken at t* = " + fmt(t1),
+                 .value = mean_of(unbroken),
+                 .reference = 1.0,
+                 .tolerance = 0.0,
+                 .comparison = Comparison::abs_error,
+                 .justification = paper,
                  .gating = false});
     const std::vector<double> u = values(*g, [](const RunOutcome& o) { return o.snaps.front().u_ratio_mean; });
     if (!u.empty())
       m.push_back({.name = group_name(*g) + ": u_r/u_r,1D (mean over shells, unbroken runs) at t* = " + fmt(t1),
-                   .value = mean_of(u), .reference = 1.0, .tolerance = 0.05, .comparison = Comparison::rel_error,
+                   .value = mean_of(u),
+                   .reference = 1.0,
+                   .tolerance = 0.05,
+                   .comparison = Comparison::rel_error,
                    .justification = paper + "; 5% as the 2D-vs-1D comparison before fracture (lattice2d.vs_fdm1d)",
                    .gating = false});
   }
@@ -399,7 +457,10 @@ void add_borehole_node_metrics(const std::vector<const RunOutcome*>& flux, const
   const double t_eq16 = mean_of(values(eq16, [](const RunOutcome& o) { return o.t_first; }));
   if (flux.empty() || eq16.empty() || std::isnan(t_flux) || std::isnan(t_eq16)) return;
   m.push_back({.name = group_name(eq16) + ": first break t*, Eq. 16 node / flux node (mean over seeds)",
-               .value = t_eq16 / t_flux, .reference = 1.0, .tolerance = 1.0, .comparison = Comparison::at_least,
+               .value = t_eq16 / t_flux,
+               .reference = 1.0,
+               .tolerance = 1.0,
+               .comparison = Comparison::at_least,
                .justification = "information: Eq. 16's storage holds p_h low early on (errata E15), so the wall "
                                 "reaches T_u later; measured 24x (b = 0.2) and ~28x (b = 0.8) at N = 2e4",
                .gating = false});

@@ -10,27 +10,27 @@
 
 #include "fdm1d_sampling.hpp"
 #include "hm/case/coupled_model_of_case.hpp"
-#include "hm/core/file_output.hpp"
-#include "hm/lattice2d/mechanics/calibration.hpp"
-#include "hm/lattice2d/io/break_log.hpp"
-#include "hm/lattice2d/io/radial_average.hpp"
 #include "hm/case/fdm1d_output.hpp"
 #include "hm/case/progress.hpp"
 #include "hm/case/provenance.hpp"
 #include "hm/case/run_files.hpp"
 #include "hm/case/run_output.hpp"
+#include "hm/core/file_output.hpp"
+#include "hm/lattice2d/io/break_log.hpp"
+#include "hm/lattice2d/io/radial_average.hpp"
+#include "hm/lattice2d/mechanics/calibration.hpp"
 #include "report_writer.hpp"
 
 namespace hm::verification::borehole_fracture {
 
-using cases::ProgressReporter;
-using cases::RadialFields;
-using cases::RunCase;
-using cases::RunRecorder;
 using cases::injection_pressure;
 using cases::make_provenance;
+using cases::ProgressReporter;
 using cases::radial_fields;
+using cases::RadialFields;
 using cases::run_case_to_toml;
+using cases::RunCase;
+using cases::RunRecorder;
 using cases::to_toml;
 using cases::write_fdm1d_results;
 
@@ -39,7 +39,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-
 /// u_r of the lattice against 1D at time t, shell by shell (Fig. 13's comparison): the max of
 /// |u_r/u_r,1D - 1| and the mean of u_r/u_r,1D over the shells; nothing if the reference has no snapshot at t.
 struct RadialComparison {
@@ -47,7 +46,7 @@ struct RadialComparison {
 };
 
 RadialComparison u_r_against_1d(const std::vector<double>& u_r, const std::vector<double>& edges,
-                                 const fdm1d::Fdm1dResult& ref, double t) {
+                                const fdm1d::Fdm1dResult& ref, double t) {
   RadialComparison c;
   for (const auto& s1 : ref.snapshots) {
     if (std::abs(s1.t - t) > 1e-9 * t) continue;
@@ -69,7 +68,8 @@ class CsvColumns {
   explicit CsvColumns(const fs::path& path) : path_(path) {
     std::ifstream in(path);
     std::string line;
-    if (!in || !std::getline(in, line)) throw std::runtime_error(path.string() + ": cannot be read (a run folder of `hmlattice run` has it)");
+    if (!in || !std::getline(in, line))
+      throw std::runtime_error(path.string() + ": cannot be read (a run folder of `hmlattice run` has it)");
     const std::vector<std::string> header = split(line);
     std::vector<std::vector<double>*> by_position;
     for (const auto& name : header) by_position.push_back(&columns_[name]);
@@ -79,7 +79,8 @@ class CsvColumns {
       if (fields.size() != header.size())
         throw std::runtime_error(path.string() + ":" + std::to_string(line_no) + ": " + std::to_string(fields.size()) +
                                  " fields, the header has " + std::to_string(header.size()));
-      for (std::size_t k = 0; k < fields.size(); ++k) by_position[k]->push_back(std::strtod(fields[k].c_str(), nullptr));
+      for (std::size_t k = 0; k < fields.size(); ++k)
+        by_position[k]->push_back(std::strtod(fields[k].c_str(), nullptr));
       ++n_rows_;
     }
   }
@@ -135,7 +136,6 @@ RunOutcome describe(const RunCase& c, const std::string& label) {
 
 }  // namespace
 
-
 /// The 1D reference of a case: fdm1d (Appendix A, no fracture, flux-boundary borehole) with the
 /// calibrated lattice's nu and the case's E/M, plane-strain volumetric strain (as benchmarks_lattice2d_vs_fdm1d.cpp),
 /// on the case's dt sequence and output times.
@@ -159,8 +159,8 @@ fdm1d::Fdm1dResult run_reference(const RunCase& c) {
                                       [&](double t) { return t >= c.stepping.t_end * (1 - 1e-12); }),
                        n.output_times.end());
   // An isotropic in-situ stress is the 1D model's rest state; a deviatoric one has no 1D counterpart.
-  const fdm1d::RestState rest = c.insitu.S_H == c.insitu.S_h ? fdm1d::RestState{c.insitu.S_H, c.insitu.p0}
-                                                              : fdm1d::RestState{};
+  const fdm1d::RestState rest =
+      c.insitu.S_H == c.insitu.S_h ? fdm1d::RestState{c.insitu.S_H, c.insitu.p0} : fdm1d::RestState{};
   fdm1d::Fdm1dResult r = fdm1d::run_fdm1d(p, n, rest);
   if (!r.summary.is_success()) throw std::runtime_error("fdm1d failed: " + r.summary.message);
   return r;
@@ -221,7 +221,8 @@ void read_first_break(const RunCase& c, const fs::path& dir, std::pair<double, d
   std::vector<int> beams;
   for (const auto& e : log) beams.push_back(e.beam);
   std::sort(beams.begin(), beams.end());
-  o.n_healed = static_cast<int>(beams.size() - static_cast<std::size_t>(std::unique(beams.begin(), beams.end()) - beams.begin()));
+  o.n_healed = static_cast<int>(beams.size() -
+                                static_cast<std::size_t>(std::unique(beams.begin(), beams.end()) - beams.begin()));
   o.pre_last = std::abs(pre_last.first), o.pre_last_t = pre_last.second, o.pre_signed_last = pre_last.first;
 }
 
@@ -229,7 +230,8 @@ void read_first_break(const RunCase& c, const fs::path& dir, std::pair<double, d
 void read_snapshots(const RunCase& c, const fs::path& dir, const CsvColumns& series, const fdm1d::Fdm1dResult& ref,
                     RunOutcome& o) {
   const auto &t = series["t"], &p_h = series["p_h"];
-  const CsvColumns summary(cases::run_file_path(dir, cases::RunFileId::fracture_summary)), radial(cases::run_file_path(dir, cases::RunFileId::radial));
+  const CsvColumns summary(cases::run_file_path(dir, cases::RunFileId::fracture_summary)),
+      radial(cases::run_file_path(dir, cases::RunFileId::radial));
   const std::vector<double> edges = recorder_shell_edges(c);
   for (std::size_t k = 0; k < summary.n_rows(); ++k) {
     Snapshot snap;
@@ -266,7 +268,8 @@ void read_fracture_tables(const fs::path& dir, RunOutcome& o) {
     for (std::size_t k = 0; k < fractures.n_rows(); ++k) {
       if (fractures["connected_to_borehole"][k] != 0.0 || fractures["extent"][k] < sizable) continue;
       for (Snapshot& snap : o.snaps)
-        if (snap.t == fractures["t"][k]) ++(fractures["reaches_outer"][k] != 0.0 ? snap.secondary_at_outer : snap.secondary_inside);
+        if (snap.t == fractures["t"][k])
+          ++(fractures["reaches_outer"][k] != 0.0 ? snap.secondary_at_outer : snap.secondary_inside);
     }
   }
   if (!fs::exists(cases::run_file_path(dir, cases::RunFileId::fracture_pressure))) return;
@@ -274,10 +277,17 @@ void read_fracture_tables(const fs::path& dir, RunOutcome& o) {
   for (Snapshot& snap : o.snaps)
     for (std::size_t k = 0; k < pressure.n_rows(); ++k) {
       if (pressure["t"][k] != snap.t) continue;
-      snap.fp = {pressure["mean_all"][k], pressure["mean_away"][k], pressure["min_away"][k],
-                 static_cast<int>(pressure["n_all"][k]), static_cast<int>(pressure["n_away"][k]),
-                 pressure["negative_area_fraction"][k], pressure["p_min"][k], pressure["p_max"][k],
-                 pressure["borehole_backflow"][k], pressure["outer_inflow"][k], pressure["mouth_inflow"][k]};
+      snap.fp = {pressure["mean_all"][k],
+                 pressure["mean_away"][k],
+                 pressure["min_away"][k],
+                 static_cast<int>(pressure["n_all"][k]),
+                 static_cast<int>(pressure["n_away"][k]),
+                 pressure["negative_area_fraction"][k],
+                 pressure["p_min"][k],
+                 pressure["p_max"][k],
+                 pressure["borehole_backflow"][k],
+                 pressure["outer_inflow"][k],
+                 pressure["mouth_inflow"][k]};
     }
 }
 
@@ -299,7 +309,8 @@ TwinOutcome read_twin(const RunCase& twin_case, const fs::path& dir, const fdm1d
   TwinOutcome o;
   o.ok = true;
   o.t_end = twin_case.stepping.t_end;
-  const CsvColumns series(cases::run_file_path(dir, cases::RunFileId::series)), radial(cases::run_file_path(dir, cases::RunFileId::radial));
+  const CsvColumns series(cases::run_file_path(dir, cases::RunFileId::series)),
+      radial(cases::run_file_path(dir, cases::RunFileId::radial));
   const auto &t = series["t"], &p_h = series["p_h"];
   for (std::size_t k = 0; k < series.n_rows(); ++k) {
     if (t[k] < kWindow * (1 - 1e-12)) continue;
@@ -327,16 +338,19 @@ RunOutcome run_case(const RunCase& c, const std::string& label, const fs::path& 
   if (progress) reporter.emplace(*progress, label, 60.0);
   // As `hmlattice run` does with [fracture] stop_at_first_break: the step that breaks the first beam is
   // recorded as an output time's and is the last; the run is complete then (or at t_end, unbroken).
-  const auto run = model->run(c.stepping, [&](const lt::CoupledModel& m, const lt::CoupledStepSummary& s, bool out) {
-    recorder.record(m, s, out || c.reached_first_break(m));
-    if (reporter) reporter->update(m.time(), c.stepping.t_end, "broken " + std::to_string(m.n_broken()));
-    const auto& states = m.mechanics().states();
-    for (std::size_t e = 0; e < states.size(); ++e) {
-      const bool broken = states[e] != lt::BeamState::intact;
-      if (was_broken[e] && !broken) ++n_healed;
-      was_broken[e] = was_broken[e] || broken;
-    }
-  }, [&] { return c.reached_first_break(*model); });
+  const auto run = model->run(
+      c.stepping,
+      [&](const lt::CoupledModel& m, const lt::CoupledStepSummary& s, bool out) {
+        recorder.record(m, s, out || c.reached_first_break(m));
+        if (reporter) reporter->update(m.time(), c.stepping.t_end, "broken " + std::to_string(m.n_broken()));
+        const auto& states = m.mechanics().states();
+        for (std::size_t e = 0; e < states.size(); ++e) {
+          const bool broken = states[e] != lt::BeamState::intact;
+          if (was_broken[e] && !broken) ++n_healed;
+          was_broken[e] = was_broken[e] || broken;
+        }
+      },
+      [&] { return c.reached_first_break(*model); });
   const bool complete = run.is_ok() || c.reached_first_break(*model);
   if (reporter)
     reporter->finish(complete ? std::to_string(run.n_steps) + " steps, " + std::to_string(run.total_iterations) +
@@ -420,8 +434,10 @@ std::string RunSource::note() const {
   if (runs_dir_.empty()) return "";
   std::string labels;
   for (const auto& l : read_) labels += (labels.empty() ? "" : ", ") + l;
-  return "Runs read from `--runs " + runs_dir_.string() + "` (made by `hmlattice run`, e.g. through the workflow; "
-         "checked to be complete and of the benchmark's case): " + (labels.empty() ? "none" : labels) +
+  return "Runs read from `--runs " + runs_dir_.string() +
+         "` (made by `hmlattice run`, e.g. through the workflow; "
+         "checked to be complete and of the benchmark's case): " +
+         (labels.empty() ? "none" : labels) +
          "; the others were run here. A read run's files hold no timing split (nan).";
 }
 

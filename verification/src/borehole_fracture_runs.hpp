@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
+#include "hm/case/fracture_pressure.hpp"
+#include "hm/case/run_case.hpp"
 #include "hm/fdm1d/fdm1d.hpp"
 #include "hm/lattice2d/coupled/coupled_model.hpp"
 #include "hm/lattice2d/fracture/fracture_statistics.hpp"
-#include "hm/case/fracture_pressure.hpp"
-#include "hm/case/run_case.hpp"
 
 namespace hm::verification::borehole_fracture {
 
@@ -32,7 +32,7 @@ struct Snapshot {
   double t = 0.0, p_h = 0.0;
   hm::lattice2d::FractureStatistics stats;
   FracturePressure fp;
-  double u_pre = kNaN;        // before the first break only: max over shells |u_r/u_r,1D - 1| (information)
+  double u_pre = kNaN;         // before the first break only: max over shells |u_r/u_r,1D - 1| (information)
   double u_ratio_mean = kNaN;  // the mean over shells of u_r/u_r,1D (1D without fracture)
   std::vector<double> u_r;     // the shells' u_r (radial.csv)
   // Secondary fractures at least sizable_extent long: touching the outer boundary, or inside the domain.
@@ -70,10 +70,10 @@ struct RunOutcome {
   // Broken beams never heal: steps where n_broken fell, and beams found intact after having broken.
   int n_broken_decreases = 0, n_healed = 0;
   // p_h against the 1D model (no fracture) before the first break.
-  double pre_max = kNaN, pre_max_t = kNaN;  // max |p_h/p_h,1D - 1| for t* >= kWindow, and where
+  double pre_max = kNaN, pre_max_t = kNaN;    // max |p_h/p_h,1D - 1| for t* >= kWindow, and where
   double pre_last = kNaN, pre_last_t = kNaN;  // at the last step before the breaking one (any t*)
-  double pre_signed_last = kNaN;               // p_h/p_h,1D - 1 there (signed)
-  std::string twin_label;  // empty: no twin run
+  double pre_signed_last = kNaN;              // p_h/p_h,1D - 1 there (signed)
+  std::string twin_label;                     // empty: no twin run
   TwinOutcome twin;
   std::string eq16_label;  // the folder of the same case with Eq. 16's borehole node; empty: none
 };

@@ -36,7 +36,8 @@ GridRun run_grid(const analytic::DimensionlessParameters& d, int n_r) {
   g.p_b = f.p_h;
   g.t_b = f.t;
   g.tensile = f.mode == analytic::FailureMode::tensile;
-  for (const auto& s : res.borehole) g.max_wall_ratio = std::max(g.max_wall_ratio, fdm1d::wall_failure_check(s, d).ratio);
+  for (const auto& s : res.borehole)
+    g.max_wall_ratio = std::max(g.max_wall_ratio, fdm1d::wall_failure_check(s, d).ratio);
   g.steps = res.summary.n_steps;
   g.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return g;

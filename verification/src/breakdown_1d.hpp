@@ -17,10 +17,10 @@ inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 /// One grid's run.
 struct GridRun {
   int n_r = 0;
-  bool failed = false;     // the wall met the criteria before t_end
-  double p_b = kNaN;       // p_h then (first_wall_failure)
+  bool failed = false;  // the wall met the criteria before t_end
+  double p_b = kNaN;    // p_h then (first_wall_failure)
   double t_b = kNaN;
-  bool tensile = false;    // it failed in tension (the criterion of the lattice's beams)
+  bool tensile = false;         // it failed in tension (the criterion of the lattice's beams)
   double max_wall_ratio = 0.0;  // largest failure ratio of the wall over the run (1 at failure)
   long steps = 0;
   double seconds = 0.0;
@@ -29,7 +29,7 @@ struct GridRun {
 /// How far to refine.
 struct GridStudyPlan {
   std::vector<int> start = {400, 1600, 6400};  // always run: three levels give an observed order
-  int n_r_max = 102400;                         // refine by 4 up to this while p_b still moves
+  int n_r_max = 102400;                        // refine by 4 up to this while p_b still moves
   double settled = 1e-3;  // stop when the last refinement moved p_b by less than this (relative), or
                           // when the wall failed on neither of the last two grids
 };

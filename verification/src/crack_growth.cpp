@@ -55,8 +55,11 @@ struct Growth {
   Eigen::VectorXd f_before, u_before;  // the last accounted state's load and displacement
 
   explicit Growth(const CrackGrowthSpec& s)
-      : spec(s), lattice(disk_lattice(s)), dual(l2::build_dual_graph(lattice)),
-        m(lattice, parameters, l2::BoundaryConditions{}), strengths(drawn_strengths(s, lattice.n_beams())) {
+      : spec(s),
+        lattice(disk_lattice(s)),
+        dual(l2::build_dual_graph(lattice)),
+        m(lattice, parameters, l2::BoundaryConditions{}),
+        strengths(drawn_strengths(s, lattice.n_beams())) {
     if (spec.fracture_energy > 0.0) {
       l2::SawtoothLawOptions o;
       o.fracture_energy = spec.fracture_energy;
@@ -64,7 +67,8 @@ struct Growth {
       o.strength_factor = spec.strength_factor;
       law = std::make_unique<l2::SawtoothLaw>(lattice, dual, parameters, strengths, o);
     }
-    crack = l2::beams_crossing(lattice, l2::NotchSegment{{-spec.notch_half_length, 0.0}, {spec.notch_half_length, 0.0}});
+    crack =
+        l2::beams_crossing(lattice, l2::NotchSegment{{-spec.notch_half_length, 0.0}, {spec.notch_half_length, 0.0}});
     for (int e : crack) m.break_beam(e);
     f_before = u_before = Eigen::VectorXd::Zero(3 * lattice.n_particles());
   }
@@ -95,8 +99,13 @@ struct Growth {
   double half_length() const { return crack_half_length(dual, crack_triangles(lattice, crack)); }
 
   void record(double pressure, double booked) {
-    run.points.push_back({.volume = volume, .pressure = pressure, .half_length = half_length(), .booked = booked,
-                          .work = work, .mechanical_work = mechanical_work, .n_broken = static_cast<int>(crack.size())});
+    run.points.push_back({.volume = volume,
+                          .pressure = pressure,
+                          .half_length = half_length(),
+                          .booked = booked,
+                          .work = work,
+                          .mechanical_work = mechanical_work,
+                          .n_broken = static_cast<int>(crack.size())});
   }
 
   CrackGrowthRun finish() {

@@ -2,11 +2,11 @@
 // A dry crack grown from a notch (the Griffith benchmark of the saw-tooth law), loaded by a pressure p
 // on its faces, under the control of the load's work-conjugate displacement D = f_1 . u (f_1 the load
 // at p = 1), the crack's volume V. (A remote tension is no substitute: the disk's own stretch dominates
-// its conjugate displacement, so the crack runs away at fixed D as under load control.) For a fixed set of broken and softened beams the response is linear in p, so one solve at p = 1
-// gives D_1 and the largest failure ratio r_1, and the next event (a tooth or a break) comes at
-// p = 1 / r_1, D = D_1 / r_1. Events are taken one at a time; after each, the load at the same D is
-// D / D_1 of the new state, and further events at that D follow until none is due (an unstable jump),
-// then D is raised to the next event's. No work is done at fixed D, so the drop of pD/2 there is the
+// its conjugate displacement, so the crack runs away at fixed D as under load control.) For a fixed set of broken and
+// softened beams the response is linear in p, so one solve at p = 1 gives D_1 and the largest failure ratio r_1, and
+// the next event (a tooth or a break) comes at p = 1 / r_1, D = D_1 / r_1. Events are taken one at a time; after each,
+// the load at the same D is D / D_1 of the new state, and further events at that D follow until none is due (an
+// unstable jump), then D is raised to the next event's. No work is done at fixed D, so the drop of pD/2 there is the
 // energy the event released.
 // On the continuous path (the envelope the teeth approximate) D is raised in small steps and, at each,
 // every beam strained past its history is softened to its envelope's secant at that strain, the
@@ -35,8 +35,8 @@ enum class SofteningPath {
 struct CrackGrowthSpec {
   long long n_particles = 15000;  ///< disk of radius 1
   std::uint64_t lattice_seed = 1, strength_seed = 1;
-  double notch_half_length = 0.05;  ///< notch |x| < this on y = 0
-  double fracture_energy = 0.0;     ///< G_f / (E R); 0: the brittle law (crack-tip factor on)
+  double notch_half_length = 0.05;    ///< notch |x| < this on y = 0
+  double fracture_energy = 0.0;       ///< G_f / (E R); 0: the brittle law (crack-tip factor on)
   hm::lattice2d::SawtoothSpec teeth;  ///< the saw-tooth's shape
   /// The saw-tooth law's f_t over the drawn strength (SawtoothLawOptions): by default the calibrated one a
   /// run of the law uses.
@@ -48,7 +48,7 @@ struct CrackGrowthSpec {
   /// is strained further than that. At N = 1.5e4 (kappa = 1.36) a tolerance of 1e-3 gives K within 1e-4
   /// of 1e-4's in 56% of the solves, and a step of 0.01 moves K by 0.2%.
   double volume_step = 0.005, history_tolerance = 1e-3;
-  double max_half_length = 0.3;     ///< stop once the crack's half length c passes this
+  double max_half_length = 0.3;  ///< stop once the crack's half length c passes this
   int max_events = 200000;
 };
 

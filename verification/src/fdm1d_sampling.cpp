@@ -28,7 +28,8 @@ double borehole_pressure_at(const fdm1d::Fdm1dResult& result, double t) {
   const auto& h = result.borehole;
   if (t <= h.front().t) return h.front().p_h;
   if (t >= h.back().t) return h.back().p_h;
-  const auto it = std::lower_bound(h.begin(), h.end(), t, [](const fdm1d::BoreholeSample& s, double x) { return s.t < x; });
+  const auto it =
+      std::lower_bound(h.begin(), h.end(), t, [](const fdm1d::BoreholeSample& s, double x) { return s.t < x; });
   const std::size_t i = static_cast<std::size_t>(it - h.begin());
   if (std::abs(h[i].t - t) <= 1e-12 * t) return h[i].p_h;
   const double w = (t - h[i - 1].t) / (h[i].t - h[i - 1].t);

@@ -35,8 +35,8 @@ std::string draw_figure(const Figure& figure, const fs::path& data_dir, const fs
   // empty folder or one that holds the toolkit's marker (figures/hmplot.py).
   const fs::path log = figure_dir.parent_path() / (figure_dir.filename().string() + "." + figure.file + ".log");
   const std::string cmd = shell_quote(python) + " " + shell_quote(script.string()) + " --data " +
-                          shell_quote((data_dir / figure.data_subdir).string()) + " --out " + shell_quote(figure_dir.string()) +
-                          " > " + shell_quote(log.string()) + " 2>&1";
+                          shell_quote((data_dir / figure.data_subdir).string()) + " --out " +
+                          shell_quote(figure_dir.string()) + " > " + shell_quote(log.string()) + " 2>&1";
   const int rc = std::system(cmd.c_str());
   if (rc != 0 || !fs::exists(figure_dir / figure.file)) {
     const std::string why = last_line(log);

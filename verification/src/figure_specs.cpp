@@ -78,10 +78,9 @@ PanelReading read_reading(CaseTable& t, const std::string& figure) {
 }
 
 void read_benchmark(CaseTable& t, FigureSpec& s) {
-  s.runner = choice<FigureRunner>(t, "runner",
-                                  {{"borehole_pair", FigureRunner::borehole_pair},
-                                   {"refinement", FigureRunner::refinement}},
-                                  FigureRunner::none);
+  s.runner = choice<FigureRunner>(
+      t, "runner", {{"borehole_pair", FigureRunner::borehole_pair}, {"refinement", FigureRunner::refinement}},
+      FigureRunner::none);
   if (s.runner == FigureRunner::none) t.fail("runner is missing, allowed: \"borehole_pair\" or \"refinement\"");
   s.paper_figures = t.get_strings("paper_figures", {});
   if (s.paper_figures.empty()) t.fail("paper_figures is missing or empty, allowed: the paper's figure numbers");
@@ -103,8 +102,8 @@ void read_benchmark(CaseTable& t, FigureSpec& s) {
     s.paper_sweep = required_string(t, "paper_sweep");
   }
   for (CaseTable& plot : t.tables("plot")) {
-    s.plots.push_back({required_string(plot, "script"), required_string(plot, "image"),
-                       required_string(plot, "caption")});
+    s.plots.push_back(
+        {required_string(plot, "script"), required_string(plot, "image"), required_string(plot, "caption")});
     plot.reject_unknown();
   }
   t.reject_unknown();
@@ -145,8 +144,10 @@ FigureSpec read_figure_spec(const fs::path& file) {
     s.unbroken_until = u.get_double("unbroken_until");
     u.reject_unknown();
     for (const PanelReading& r : s.readings)
-      if (!r.u_r_above_1d) root.fail("a [[reading]] without u_r_once_fractured, allowed: \"above\" or \"below\" in "
-                                     "every reading when [u_r_vs_1d] is given");
+      if (!r.u_r_above_1d)
+        root.fail(
+            "a [[reading]] without u_r_once_fractured, allowed: \"above\" or \"below\" in "
+            "every reading when [u_r_vs_1d] is given");
   }
   if (root.has("benchmark")) {
     CaseTable b = root.table("benchmark");

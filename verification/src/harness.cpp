@@ -7,8 +7,8 @@
 #include <mutex>
 #include <omp.h>
 #include <streambuf>
-#include <string_view>
 #include <string>
+#include <string_view>
 #include <thread>
 
 #include "figure_runner.hpp"
@@ -102,8 +102,8 @@ void log_outcome(const BenchmarkOutcome& o, std::ostream& log) {
   if (!o.error.empty())
     log << "ERROR: " << o.error << "\n";
   else
-    log << (failed ? "FAILED " + std::to_string(failed) + " of " : "ok, ") << o.result.metrics.size()
-        << " metrics (" << format_number(o.seconds) << " s)\n";
+    log << (failed ? "FAILED " + std::to_string(failed) + " of " : "ok, ") << o.result.metrics.size() << " metrics ("
+        << format_number(o.seconds) << " s)\n";
   for (const auto& e : o.figure_errors) log << "    figure missing: " << e << "\n";
   log << std::flush;
 }
@@ -119,14 +119,13 @@ std::vector<const Benchmark*> select_benchmarks(const std::vector<Benchmark>& be
   if (selected.empty())
     throw InputError("--filter = '" + core::echo(filter) + "' matches no benchmark id of the " + core::name_of(tier) +
                      " tier, allowed: part of an id (" +
-                     (benchmarks.empty() ? std::string("none registered") : "e.g. '" + benchmarks.front().id + "'") + ")");
+                     (benchmarks.empty() ? std::string("none registered") : "e.g. '" + benchmarks.front().id + "'") +
+                     ")");
   return selected;
 }
 
-HarnessSummary run_harness(const std::vector<Benchmark>& benchmarks, const HarnessOptions& options,
-                           std::ostream& log) {
-  if (options.jobs < 1)
-    throw InputError("--jobs = " + std::to_string(options.jobs) + ", allowed: an integer >= 1");
+HarnessSummary run_harness(const std::vector<Benchmark>& benchmarks, const HarnessOptions& options, std::ostream& log) {
+  if (options.jobs < 1) throw InputError("--jobs = " + std::to_string(options.jobs) + ", allowed: an integer >= 1");
   const std::vector<const Benchmark*> selected = select_benchmarks(benchmarks, options.tier, options.filter);
   // Run folders made elsewhere (a workflow engine) are checked before anything is written or run.
   if (!options.runs_dir.empty()) {
@@ -141,7 +140,8 @@ HarnessSummary run_harness(const std::vector<Benchmark>& benchmarks, const Harne
   fs::create_directories(figure_dir);
   // What the figure scripts name in their footers: the data's version, commit and command.
   const Provenance provenance = make_provenance(options.command_line);
-  core::write_file_atomically(data_dir / "provenance.toml", [&](std::ostream& os) { os << cases::to_toml(provenance); });
+  core::write_file_atomically(data_dir / "provenance.toml",
+                              [&](std::ostream& os) { os << cases::to_toml(provenance); });
 
   const std::size_t n = selected.size();
   const int jobs = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(options.jobs), n));

@@ -8,16 +8,19 @@ namespace hm::verification {
 
 struct PaperReading {
   static constexpr int all = -1, not_stated = -2;
-  std::string figure;            ///< "Fig. 12"
-  int fractures = not_stated;    ///< radial fractures at the last snapshot
+  std::string figure;               ///< "Fig. 12"
+  int fractures = not_stated;       ///< radial fractures at the last snapshot
   int reaching_outer = not_stated;  ///< how many of them reach r = 1 then: a count, all or not_stated
   enum class Secondary { not_stated, none, at_outer_boundary, between_primaries } secondary = Secondary::not_stated;
-  enum class FracturePressureSign { not_stated, negative_at_every_time, negative_at_last_time } pressure =
-      FracturePressureSign::not_stated;
-  bool backflow_into_borehole = false;  ///< "fluid flows back into the borehole"
-  bool backflow_into_domain = false;    ///< "a backflow of fluid into the domain" (through r = 1)
-  bool borehole_pressure_drops = false; ///< p_h falls below its peak once fractures drain it
-  std::string quote;                    ///< the paper's words, shortened
+  enum class FracturePressureSign {
+    not_stated,
+    negative_at_every_time,
+    negative_at_last_time
+  } pressure = FracturePressureSign::not_stated;
+  bool backflow_into_borehole = false;   ///< "fluid flows back into the borehole"
+  bool backflow_into_domain = false;     ///< "a backflow of fluid into the domain" (through r = 1)
+  bool borehole_pressure_drops = false;  ///< p_h falls below its peak once fractures drain it
+  std::string quote;                     ///< the paper's words, shortened
 
   /// "3, all at r = 1": the count and where the fractures end.
   std::string fractures_text() const;

@@ -102,12 +102,12 @@ int failed_gating(const BenchmarkOutcome& o) {
 
 }  // namespace
 
-void write_report_markdown(const fs::path& file, const std::vector<BenchmarkOutcome>& outcomes,
-                           const Provenance& prov, Tier tier) {
+void write_report_markdown(const fs::path& file, const std::vector<BenchmarkOutcome>& outcomes, const Provenance& prov,
+                           Tier tier) {
   core::write_file_atomically(file, [&](std::ostream& md) {
     md << "# hmlattice verification report\n\n"
-       << "Tier **" << (tier == Tier::quick ? "quick" : "paper") << "**; hmlattice " << prov.version
-       << " (commit " << prov.git_commit << ", " << prov.build_type << "), " << prov.utc_time << ".  \n"
+       << "Tier **" << (tier == Tier::quick ? "quick" : "paper") << "**; hmlattice " << prov.version << " (commit "
+       << prov.git_commit << ", " << prov.build_type << "), " << prov.utc_time << ".  \n"
        << "Command: `" << prov.command_line << "`\n\n"
        << "Each metric states what is compared, the tolerance and where that tolerance comes from. "
           "Metrics marked *(info)* compare with numbers read from the paper; they are shown, never tuned, "
@@ -115,8 +115,8 @@ void write_report_markdown(const fs::path& file, const std::vector<BenchmarkOutc
        << "## Summary\n\n| benchmark | metrics | failed | time [s] |\n|---|---|---|---|\n";
     for (const auto& o : outcomes) {
       const std::string failed = o.error.empty() ? std::to_string(failed_gating(o)) : "error";
-      md << "| [" << o.benchmark->title << "](#" << o.benchmark->id << ") | " << o.result.metrics.size()
-         << " | " << failed << " | " << format_number(o.seconds) << " |\n";
+      md << "| [" << o.benchmark->title << "](#" << o.benchmark->id << ") | " << o.result.metrics.size() << " | "
+         << failed << " | " << format_number(o.seconds) << " |\n";
     }
     md << "\n";
     write_paper_figures(md, outcomes);
@@ -127,12 +127,13 @@ void write_report_markdown(const fs::path& file, const std::vector<BenchmarkOutc
       if (!o.result.metrics.empty()) {
         md << "| metric | value | reference | check | verdict | why this tolerance |\n|---|---|---|---|---|---|\n";
         for (const auto& m : o.result.metrics)
-          md << "| " << cell(m.name) << " | " << format_number(m.value) << " | " << reference_text(m)
-             << " | " << comparison_text(m) << " | " << verdict(m) << " | " << cell(m.justification) << " |\n";
+          md << "| " << cell(m.name) << " | " << format_number(m.value) << " | " << reference_text(m) << " | "
+             << comparison_text(m) << " | " << verdict(m) << " | " << cell(m.justification) << " |\n";
         md << "\n";
       }
       for (const auto& t : o.result.tables) write_table(md, t);
-      for (const auto& f : o.result.figures) md << "![" << f.caption << "](figures/" << o.benchmark->id << "/" << f.file << ")\n\n*" << f.caption << "*\n\n";
+      for (const auto& f : o.result.figures)
+        md << "![" << f.caption << "](figures/" << o.benchmark->id << "/" << f.file << ")\n\n*" << f.caption << "*\n\n";
       for (const auto& e : o.figure_errors) md << "> Figure missing: " << e << "\n\n";
       for (const auto& n : o.result.notes) md << n << "\n\n";
     }
@@ -144,13 +145,23 @@ void write_metrics_json(const fs::path& file, const std::vector<BenchmarkOutcome
   nlohmann::json list = nlohmann::json::array();
   for (const auto& o : outcomes) {
     if (!o.error.empty())
-      list.push_back({{"benchmark", o.benchmark->id}, {"metric", "error"}, {"value", nullptr},
-                      {"reference", nullptr}, {"tolerance", nullptr}, {"pass", false}, {"gating", true},
+      list.push_back({{"benchmark", o.benchmark->id},
+                      {"metric", "error"},
+                      {"value", nullptr},
+                      {"reference", nullptr},
+                      {"tolerance", nullptr},
+                      {"pass", false},
+                      {"gating", true},
                       {"error", o.error}});
     for (const auto& m : o.result.metrics)
-      list.push_back({{"benchmark", o.benchmark->id}, {"metric", m.name}, {"value", number(m.value)},
-                      {"reference", number(m.reference)}, {"tolerance", number(m.tolerance)},
-                      {"pass", m.passes()}, {"gating", m.gating}, {"justification", m.justification}});
+      list.push_back({{"benchmark", o.benchmark->id},
+                      {"metric", m.name},
+                      {"value", number(m.value)},
+                      {"reference", number(m.reference)},
+                      {"tolerance", number(m.tolerance)},
+                      {"pass", m.passes()},
+                      {"gating", m.gating},
+                      {"justification", m.justification}});
   }
   core::write_file_atomically(file, [&](std::ostream& out) { out << list.dump(2) << "\n"; });
 }

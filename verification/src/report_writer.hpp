@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "hm/verification/benchmark.hpp"
 #include "hm/case/provenance.hpp"
+#include "hm/verification/benchmark.hpp"
 
 namespace hm::verification {
 
@@ -13,8 +13,8 @@ namespace hm::verification {
 struct BenchmarkOutcome {
   const Benchmark* benchmark = nullptr;
   BenchmarkResult result;
-  std::string error;                        ///< non-empty if the benchmark threw
-  std::vector<std::string> figure_errors;   ///< one per figure that could not be drawn
+  std::string error;                       ///< non-empty if the benchmark threw
+  std::vector<std::string> figure_errors;  ///< one per figure that could not be drawn
   double seconds = 0.0;
 };
 

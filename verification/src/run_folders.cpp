@@ -63,7 +63,8 @@ std::vector<std::pair<const Benchmark*, PlannedRun>> planned_runs(const std::vec
   for (const Benchmark* b : selected) {
     if (!b->planned_runs) continue;
     for (PlannedRun& r : b->planned_runs()) {
-      if (!labels.insert(r.label).second) throw std::logic_error("planned run '" + r.label + "' of " + b->id + " planned twice");
+      if (!labels.insert(r.label).second)
+        throw std::logic_error("planned run '" + r.label + "' of " + b->id + " planned twice");
       runs.emplace_back(b, std::move(r));
     }
   }

@@ -62,8 +62,7 @@ Fdm1dOdeintResult run_fdm1d_odeint(const an::DimensionlessParameters& params, co
                      ", allowed: 0 < R_i < 1 (the 1D model needs a borehole)");
   numerics.validate(params.R_i);
   if (numerics.n_r > 2000)
-    throw InputError("n_r = " + std::to_string(numerics.n_r) +
-                     ", allowed: n_r <= 2000 for the dense Odeint reference");
+    throw InputError("n_r = " + std::to_string(numerics.n_r) + ", allowed: n_r <= 2000 for the dense Odeint reference");
   tolerances.validate();
   const auto start = std::chrono::steady_clock::now();
 
@@ -100,8 +99,8 @@ Fdm1dOdeintResult run_fdm1d_odeint(const an::DimensionlessParameters& params, co
   Fdm1dOdeintResult res;
   res.n_steps = static_cast<long>(odeint::integrate_times(
       odeint::make_dense_output(tolerances.absolute, tolerances.relative, odeint::rosenbrock4<double>()),
-      std::make_pair(LinearOde{&J, &c}, ConstantJacobian{&J_ublas}), x, times.begin(), times.end(),
-      numerics.dt_initial, observer));
+      std::make_pair(LinearOde{&J, &c}, ConstantJacobian{&J_ublas}), x, times.begin(), times.end(), numerics.dt_initial,
+      observer));
 
   // 4. Back to p = Q (p/Q), u = G p, and the same post-processing as run_fdm1d.
   res.r.resize(static_cast<std::size_t>(n + 1));

@@ -56,7 +56,8 @@ Eigen::VectorXd AndersonAcceleration::next(const Eigen::VectorXd& x, const Eigen
   const Eigen::Index m = gram_.rows();
   Eigen::VectorXd rhs(m);
   for (Eigen::Index j = 0; j < m; ++j) rhs[j] = dr_[static_cast<std::size_t>(j)].dot(r);
-  const Eigen::VectorXd scale = gram_.diagonal().cwiseSqrt().cwiseMax(std::numeric_limits<double>::min()).cwiseInverse();
+  const Eigen::VectorXd scale =
+      gram_.diagonal().cwiseSqrt().cwiseMax(std::numeric_limits<double>::min()).cwiseInverse();
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(scale.asDiagonal() * gram_ * scale.asDiagonal());
   const Eigen::VectorXd& lambda = eig.eigenvalues();  // ascending
   const double cutoff = 1e-12 * lambda[m - 1];

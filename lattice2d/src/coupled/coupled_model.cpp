@@ -60,7 +60,8 @@ void TimeStepping::validate() const {
     const std::string element = element_of(k);
     if (!(t > 0.0 && t <= t_end))
       throw hm::FieldError("output_times", element, format_value(t), "0 < t <= t_end = " + format_value(t_end));
-    if (k > 0 && !(t > output_times[k - 1])) throw hm::FieldError("output_times", element, format_value(t), "strictly increasing");
+    if (k > 0 && !(t > output_times[k - 1]))
+      throw hm::FieldError("output_times", element, format_value(t), "strictly increasing");
   }
 }
 
@@ -94,7 +95,8 @@ CoupledModel::CoupledModel(Lattice lattice, const BeamParameters& beams, const B
   if (options_.terms.psi > 0.0) mechanics_->set_normal_springs(springs_, options_.terms.broken_beam_spring);
   if (options_.terms.borehole_spring == BoreholeSpring::undrained) {
     if (!flow_->has_borehole())
-      throw hm::InputError("coupling.borehole_spring = \"undrained\", allowed: only with a borehole (lattice.domain = annulus)");
+      throw hm::InputError(
+          "coupling.borehole_spring = \"undrained\", allowed: only with a borehole (lattice.domain = annulus)");
     // At the undeformed hole's storage: V_h changes by the strains (~1e-4), and the spring only sets
     // the passes' path.
     mechanics_->set_rank_one_stiffness(borehole_spring(mechanics_->lattice(), flow_->borehole_storage_coefficient(),
@@ -130,7 +132,8 @@ void CoupledModel::cut_beams(const std::vector<int>& beams) {
   const Lattice& l = lattice();
   for (int e : beams) {
     if (e < 0 || e >= l.n_beams())
-      throw hm::InputError("notch beam = " + std::to_string(e) + ", allowed: 0 <= beam < " + std::to_string(l.n_beams()));
+      throw hm::InputError("notch beam = " + std::to_string(e) + ", allowed: 0 <= beam < " +
+                           std::to_string(l.n_beams()));
     if (mechanics_->states()[static_cast<std::size_t>(e)] != BeamState::intact)
       throw hm::InputError("notch beam = " + std::to_string(e) + ", allowed: an intact beam (each beam once)");
     const auto [i, j] = l.beams[static_cast<std::size_t>(e)];
@@ -290,8 +293,8 @@ bool CoupledModel::iterate(double dt, double overshoot_tolerance, PassGuess& gue
   const auto overshot = [&] {
     if (!(overshoot_tolerance > 0.0 && summary.first_event_ratio > 1.0 + overshoot_tolerance)) return false;
     summary.status = CoupledStatus::overshoot;
-    summary.message = std::string("first ") + (summary.n_teeth > 0 ? "event" : "break") + " at t = " +
-                      hm::core::format_value(summary.time) + " at failure ratio " +
+    summary.message = std::string("first ") + (summary.n_teeth > 0 ? "event" : "break") +
+                      " at t = " + hm::core::format_value(summary.time) + " at failure ratio " +
                       hm::core::format_value(summary.first_event_ratio) + ", above 1 + overshoot_tolerance (" +
                       hm::core::format_value(overshoot_tolerance) + ")";
     return true;
@@ -362,8 +365,8 @@ bool CoupledModel::solve_mechanics(int pass, const PassGuess& guess, bool check_
   summary.n_contact_changes += ms.n_contact_changes;
   if (ms.is_converged()) return true;
   summary.status = CoupledStatus::solver_failure;
-  summary.message = "mechanics at t = " + hm::core::format_value(summary.time) + ", pass " + std::to_string(pass) +
-                    ": " + ms.message;
+  summary.message =
+      "mechanics at t = " + hm::core::format_value(summary.time) + ", pass " + std::to_string(pass) + ": " + ms.message;
   return false;
 }
 
@@ -374,10 +377,10 @@ bool CoupledModel::break_beams(int pass, int& n_breaks, CoupledStepSummary& summ
   const bool capped = options_.events_per_check > 0 && pass > 0;
   if (capped) loop.max_breaks = options_.events_per_check;
   const BreakLoopSummary bs =
-      fracture_->sawtooth ? break_until_stable(*mechanics_, reference_dual_, fracture_->strengths, *fracture_->sawtooth,
-                                               loop, summary.time, break_log_, tooth_log_)
-                          : break_until_stable(*mechanics_, reference_dual_, fracture_->strengths, loop,
-                                               summary.time, break_log_);
+      fracture_->sawtooth
+          ? break_until_stable(*mechanics_, reference_dual_, fracture_->strengths, *fracture_->sawtooth, loop,
+                               summary.time, break_log_, tooth_log_)
+          : break_until_stable(*mechanics_, reference_dual_, fracture_->strengths, loop, summary.time, break_log_);
   summary.mechanics_seconds += bs.solve_seconds;
   summary.stress_seconds += bs.stress_seconds;
   summary.break_seconds += bs.break_seconds;
@@ -396,8 +399,8 @@ bool CoupledModel::break_beams(int pass, int& n_breaks, CoupledStepSummary& summ
   }
   if (!bs.is_stable() && !(capped && bs.status == BreakLoopStatus::break_cap)) {
     summary.status = CoupledStatus::solver_failure;
-    summary.message = "break loop at t = " + hm::core::format_value(summary.time) + ", pass " +
-                      std::to_string(pass) + ": " + core::name_of(bs.status) + " " + bs.message;
+    summary.message = "break loop at t = " + hm::core::format_value(summary.time) + ", pass " + std::to_string(pass) +
+                      ": " + core::name_of(bs.status) + " " + bs.message;
     return false;
   }
   if (bs.n_breaks + bs.n_teeth > 0) flow_->set_crack_weights(crack_weights());
@@ -542,15 +545,14 @@ bool CoupledModel::solve_flow(double dt, int pass, const Eigen::VectorXd& u, con
   const bool stabilised = !crack_stabiliser_.modes.empty();
   if (stabilised) crack_stabiliser_.reference_pressure = pressure_guess;
   // V^n with the cracks of now: a beam broken in this step is charged its opening since t^n.
-  const Eigen::VectorXd volume_change =
-      charged_volumes(unknown_volumes(dual.triangle_area), dual.triangle_area, u) -
-      charged_volumes(volume_, current_dual_.triangle_area, displacement_);
+  const Eigen::VectorXd volume_change = charged_volumes(unknown_volumes(dual.triangle_area), dual.triangle_area, u) -
+                                        charged_volumes(volume_, current_dual_.triangle_area, displacement_);
   summary.flow = flow_->solve(dt, volume_change, stabilised ? &crack_stabiliser_ : nullptr);
   summary.flow_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - tock).count();
   if (summary.flow.is_ok()) return true;
   summary.status = CoupledStatus::solver_failure;
-  summary.message = "flow at t = " + hm::core::format_value(summary.time) + ", pass " + std::to_string(pass) +
-                    ": " + summary.flow.message;
+  summary.message = "flow at t = " + hm::core::format_value(summary.time) + ", pass " + std::to_string(pass) + ": " +
+                    summary.flow.message;
   return false;
 }
 
@@ -726,8 +728,8 @@ std::vector<BreakEvent> restore_break_log(core::StateReader& r) {
   for (std::size_t k = 0; k < log.size(); ++k) {
     const int* i = &ints[5 * k];
     const double* x = &reals[7 * k];
-    log[k] = {i[0], i[1], i[2], i[3], Eigen::Vector2d(x[0], x[1]), x[2], x[3], x[4], x[5], x[6],
-              static_cast<FailureMode>(i[4])};
+    log[k] = {i[0], i[1], i[2], i[3], Eigen::Vector2d(x[0], x[1]),   x[2],
+              x[3], x[4], x[5], x[6], static_cast<FailureMode>(i[4])};
   }
   return log;
 }
@@ -839,12 +841,13 @@ void CoupledModel::restore_model_state(core::StateReader& r) {
   r.get("model.beams", beams);
   if (particles != lattice().n_particles() || beams != lattice().n_beams())
     throw InputError(r.source() + ": a state of another lattice (" + std::to_string(particles) + " particles, " +
-                     std::to_string(beams) + " beams; this one has " + std::to_string(lattice().n_particles()) +
-                     ", " + std::to_string(lattice().n_beams()) + ")");
+                     std::to_string(beams) + " beams; this one has " + std::to_string(lattice().n_particles()) + ", " +
+                     std::to_string(lattice().n_beams()) + ")");
   // Sizes and indices are checked against this lattice before anything indexes with them: a damaged
   // checkpoint whose checksum still matches is refused, not followed out of an array.
   const auto check = [&](bool ok, const char* tag) {
-    if (!ok) throw InputError(r.source() + ": at '" + tag + "': not a state of this lattice (damaged or of another case)");
+    if (!ok)
+      throw InputError(r.source() + ": at '" + tag + "': not a state of this lattice (damaged or of another case)");
   };
   const Eigen::Index n_dofs = 3 * lattice().n_particles();
   mechanics_->restore_state(r);
@@ -852,7 +855,8 @@ void CoupledModel::restore_model_state(core::StateReader& r) {
   transfer_history(r, *this);
   check(displacement_.size() == n_dofs, "model.displacement");
   check(previous_displacement_.size() == 0 || previous_displacement_.size() == n_dofs, "model.previous_displacement");
-  check(previous_pressure_.size() == 0 || previous_pressure_.size() == flow_->pressure().size(), "model.previous_pressure");
+  check(previous_pressure_.size() == 0 || previous_pressure_.size() == flow_->pressure().size(),
+        "model.previous_pressure");
   r.get("model.at_rest", at_rest_);
   bool fracture = false;
   r.get("model.fracture", fracture);
@@ -867,7 +871,8 @@ void CoupledModel::restore_model_state(core::StateReader& r) {
   break_log_ = restore_break_log(r);
   // Each logged break names a broken beam of this lattice and its particles.
   for (const BreakEvent& e : break_log_)
-    check(e.beam >= 0 && e.beam < beams && mechanics_->states()[static_cast<std::size_t>(e.beam)] != BeamState::intact &&
+    check(e.beam >= 0 && e.beam < beams &&
+              mechanics_->states()[static_cast<std::size_t>(e.beam)] != BeamState::intact &&
               lattice().beams[static_cast<std::size_t>(e.beam)] == std::array<int, 2>{e.particle_i, e.particle_j},
           "breaks.ints");
   if (sawtooth_law()) {

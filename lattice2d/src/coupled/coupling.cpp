@@ -26,7 +26,8 @@ Eigen::VectorXd pressure_forces(const Lattice& lattice, const DualGraph& dual, c
   assert((pressure.size() == n_t || pressure.size() == n_t + 1) && "pressure_forces: one value per triangle (+ p_h)");
   assert(dual.dual_length.size() == lattice.n_beams() && "pressure_forces: dual graph of another lattice");
   const double p_h = pressure.size() > n_t ? pressure[n_t] : 0.0;
-  assert((crack_weight.size() == 0 || crack_weight.size() == lattice.n_beams()) && "pressure_forces: one weight per beam");
+  assert((crack_weight.size() == 0 || crack_weight.size() == lattice.n_beams()) &&
+         "pressure_forces: one weight per beam");
   Eigen::VectorXd f = Eigen::VectorXd::Zero(3 * lattice.n_particles());
   for (int e = 0; e < lattice.n_beams(); ++e) {
     const auto [s, t] = lattice.beam_triangles[static_cast<std::size_t>(e)];
@@ -73,8 +74,8 @@ RankOneStiffness borehole_spring(const Lattice& lattice, double storage_coeffici
   return RankOneStiffness(borehole_volume_gradient(lattice), deformation_coefficient / storage_coefficient);
 }
 
-Eigen::VectorXd crack_opening_volumes(const Lattice& lattice, const DualGraph& dual, const Eigen::VectorXd& crack_weight,
-                                      const Eigen::VectorXd& u) {
+Eigen::VectorXd crack_opening_volumes(const Lattice& lattice, const DualGraph& dual,
+                                      const Eigen::VectorXd& crack_weight, const Eigen::VectorXd& u) {
   assert(crack_weight.size() == lattice.n_beams() && "crack_opening_volumes: one weight per beam");
   assert(u.size() == 3 * lattice.n_particles() && "crack_opening_volumes: 3 dofs per particle");
   Eigen::VectorXd v = Eigen::VectorXd::Zero(lattice.n_triangles());

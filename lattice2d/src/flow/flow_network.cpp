@@ -39,7 +39,8 @@ int source_triangle_of(const Lattice& lattice, const Eigen::Vector2d& x0) {
   int found = -1;
   for (int s = 0; s < lattice.n_triangles(); ++s) {
     const auto& tri = lattice.triangles[static_cast<std::size_t>(s)];
-    const Eigen::Vector2d a = lattice.points.col(tri[0]), b = lattice.points.col(tri[1]), c = lattice.points.col(tri[2]);
+    const Eigen::Vector2d a = lattice.points.col(tri[0]), b = lattice.points.col(tri[1]),
+                          c = lattice.points.col(tri[2]);
     auto cross = [](const Eigen::Vector2d& u, const Eigen::Vector2d& v) { return u.x() * v.y() - u.y() * v.x(); };
     const double twice_area = cross(b - a, c - a);
     const double lambda = std::min({cross(b - x0, c - x0), cross(c - x0, a - x0), cross(a - x0, b - x0)}) / twice_area;
@@ -136,7 +137,7 @@ struct FlowNetwork::Solver {
   };
 
   Matrix matrix;
-  std::vector<int> diagonal_slot;                // value index of (k, k)
+  std::vector<int> diagonal_slot;                   // value index of (k, k)
   std::vector<std::array<int, 4>> connection_slot;  // (s,s), (t,t), (s,t), (t,s); -1 where absent
   Factorisation factorisation;
   Eigen::VectorXd factor_values;  // the matrix `factorisation` holds, for a restored network to refactorise
@@ -226,8 +227,9 @@ FlowNetwork::FlowNetwork(const Lattice& lattice, const DualGraph& dual, const Fl
   solver_->connection_slot.resize(connections_.size());
   for (std::size_t e = 0; e < connections_.size(); ++e) {
     const Connection& c = connections_[e];
-    solver_->connection_slot[e] = c.t >= 0 ? std::array<int, 4>{slot(c.s, c.s), slot(c.t, c.t), slot(c.s, c.t), slot(c.t, c.s)}
-                                           : std::array<int, 4>{slot(c.s, c.s), -1, -1, -1};
+    solver_->connection_slot[e] =
+        c.t >= 0 ? std::array<int, 4>{slot(c.s, c.s), slot(c.t, c.t), slot(c.s, c.t), slot(c.t, c.s)}
+                 : std::array<int, 4>{slot(c.s, c.s), -1, -1, -1};
   }
   solver_->analyse(solver_->factorisation);
 
@@ -297,7 +299,8 @@ std::vector<std::vector<int>> FlowNetwork::crack_modes(const Eigen::VectorXd& we
   std::vector<int> parent(static_cast<std::size_t>(n_unknowns()));
   std::iota(parent.begin(), parent.end(), 0);
   auto root = [&](int u) {
-    while (parent[static_cast<std::size_t>(u)] != u) u = parent[static_cast<std::size_t>(u)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(u)])];
+    while (parent[static_cast<std::size_t>(u)] != u)
+      u = parent[static_cast<std::size_t>(u)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(u)])];
     return u;
   };
   std::vector<char> on_crack(parent.size(), 0);
@@ -361,9 +364,11 @@ double FlowNetwork::borehole_deformation_coefficient() const {
 void FlowNetwork::assemble_values(double dt, double storage_scale, Eigen::VectorXd& values) const {
   values = Eigen::VectorXd::Zero(solver_->matrix.nonZeros());
   for (int s = 0; s < n_triangles_; ++s)
-    values[solver_->diagonal_slot[static_cast<std::size_t>(s)]] = storage_scale * parameters_.E_over_M * triangle_area_[s];
+    values[solver_->diagonal_slot[static_cast<std::size_t>(s)]] =
+        storage_scale * parameters_.E_over_M * triangle_area_[s];
   if (has_borehole_)
-    values[solver_->diagonal_slot[static_cast<std::size_t>(n_triangles_)]] = storage_scale * borehole_storage_coefficient();
+    values[solver_->diagonal_slot[static_cast<std::size_t>(n_triangles_)]] =
+        storage_scale * borehole_storage_coefficient();
   for (std::size_t e = 0; e < connections_.size(); ++e) {
     const double g = dt * conductance(static_cast<int>(e));
     const auto& slot = solver_->connection_slot[e];
@@ -400,8 +405,8 @@ void FlowNetwork::save_state(core::StateWriter& w) const {
   w.put("flow.charged_ahead", charged_ahead_);
   w.put("flow.totals", std::vector<double>{totals_.time, totals_.injected, totals_.storage, totals_.deformation,
                                            totals_.outflow, static_cast<double>(totals_.n_steps)});
-  w.put("flow.matrix_values", std::vector<double>(solver_->matrix.valuePtr(),
-                                                  solver_->matrix.valuePtr() + solver_->matrix.nonZeros()));
+  w.put("flow.matrix_values",
+        std::vector<double>(solver_->matrix.valuePtr(), solver_->matrix.valuePtr() + solver_->matrix.nonZeros()));
   w.put("flow.factor_values", solver_->factor_values);
   w.put("flow.factorised_dt", factorised_dt_);
   w.put("flow.factor_stale", factor_stale_);
@@ -425,8 +430,7 @@ void FlowNetwork::restore_state(core::StateReader& r) {
     throw InputError(r.source() + ": at 'flow.crack_weight': a weight outside [0, 1]");
   r.get("flow.crack_opening", crack_opening_);
   if (crack_opening_.size() != 0 && crack_opening_.size() != crack_weight_.size()) fail("flow.crack_opening");
-  if (!crack_opening_.allFinite())
-    throw InputError(r.source() + ": at 'flow.crack_opening': a value not finite");
+  if (!crack_opening_.allFinite()) throw InputError(r.source() + ": at 'flow.crack_opening': a value not finite");
   r.get("flow.pressure", pressure_);
   if (pressure_.size() != n_unknowns()) fail("flow.pressure");
   r.get("flow.charged_ahead", charged_ahead_);
@@ -481,8 +485,8 @@ Eigen::VectorXd FlowNetwork::stabilised(double dt, const Eigen::VectorXd& plain,
   assert(stabiliser.volume_response.cols() == k && stabiliser.volume_response.rows() == n_unknowns() &&
          "one volume response per mode");
   if (stabiliser.solved_dt != dt || stabiliser.solved_conductances != crack_conductance_changes_ ||
-      stabiliser.solved_response.cols() != k ||
-      stabiliser.solved_response.rows() != n_unknowns() || stabiliser.solved.size() != static_cast<std::size_t>(k)) {
+      stabiliser.solved_response.cols() != k || stabiliser.solved_response.rows() != n_unknowns() ||
+      stabiliser.solved.size() != static_cast<std::size_t>(k)) {
     stabiliser.solved_response = Eigen::MatrixXd::Zero(n_unknowns(), k);
     stabiliser.solved.assign(static_cast<std::size_t>(k), 0);
     stabiliser.solved_dt = dt;
@@ -510,8 +514,8 @@ Eigen::VectorXd FlowNetwork::deformation(const Eigen::VectorXd& volume_change) c
   const int n = n_unknowns();
   // The b (V^{n+1} - V^n) terms; the borehole's is dropped when it is a plain flux boundary and not
   // weighted by b when the hole is taken as all fluid.
-  Eigen::VectorXd deformation = volume_change.size() > 0 ? Eigen::VectorXd(parameters_.b * volume_change)
-                                                         : Eigen::VectorXd::Zero(n);
+  Eigen::VectorXd deformation =
+      volume_change.size() > 0 ? Eigen::VectorXd(parameters_.b * volume_change) : Eigen::VectorXd::Zero(n);
   if (parameters_.crack_coupling == CrackCoupling::full && volume_change.size() > 0)
     for (std::size_t e = 0; e < connections_.size(); ++e) {
       // A crack's triangles: the caller's volume is already the crack's (weight 1).
@@ -519,8 +523,9 @@ Eigen::VectorXd FlowNetwork::deformation(const Eigen::VectorXd& volume_change) c
       for (const int u : {connections_[e].s, connections_[e].t})
         if (u >= 0 && u < n_triangles_) deformation[u] = volume_change[u];
     }
-  if (has_borehole_) deformation[n_triangles_] = borehole_deformation_coefficient() *
-                                                 (volume_change.size() > 0 ? volume_change[n_triangles_] : 0.0);
+  if (has_borehole_)
+    deformation[n_triangles_] =
+        borehole_deformation_coefficient() * (volume_change.size() > 0 ? volume_change[n_triangles_] : 0.0);
   return deformation;
 }
 
@@ -529,8 +534,8 @@ namespace {
 // Conjugate gradients on A from x, preconditioned by `solve` (the last factor's), until the residual's
 // norm is at most target or after max_iterations; counts the iterations, returns the residual's norm.
 template <class Solve>
-double preconditioned_cg(const Eigen::SparseMatrix<double>& A, const Solve& solve, const Eigen::VectorXd& rhs, double target,
-                         int max_iterations, Eigen::VectorXd& x, int& iterations) {
+double preconditioned_cg(const Eigen::SparseMatrix<double>& A, const Solve& solve, const Eigen::VectorXd& rhs,
+                         double target, int max_iterations, Eigen::VectorXd& x, int& iterations) {
   Eigen::VectorXd residual = rhs - A * x;
   Eigen::VectorXd z = solve(residual);
   Eigen::VectorXd direction = z;
@@ -563,8 +568,8 @@ FlowStepSummary FlowNetwork::solve(double dt, const Eigen::VectorXd& volume_chan
   const bool factor_current = factorised_dt_ == dt && !factor_stale_;  // reused as it is, no factorisation
   // A stabiliser's A^-1 V comes from the factor at hand, which must know the cracks as they are: with
   // an older factor a changed crack would put A (A^-1 V) far from V, by up to iota times.
-  summary.message = stabiliser && factorised_conductances_ != crack_conductance_changes_ ? factorise(dt)
-                                                                                      : factorise_if_needed(dt);
+  summary.message =
+      stabiliser && factorised_conductances_ != crack_conductance_changes_ ? factorise(dt) : factorise_if_needed(dt);
   if (!summary.message.empty()) return summary;
 
   Eigen::VectorXd storage_coefficient(n);

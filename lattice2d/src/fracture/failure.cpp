@@ -28,7 +28,8 @@ FailureField evaluate_failure(const BeamStress& stress, const BeamStrengths& str
   const FailureCriterion criterion(strengths.friction);
   for (int e = 0; e < n_beams; ++e) {
     if (!is_intact(states, e)) continue;
-    const auto check = criterion.check(stress.sigma_1[e], stress.sigma_3[e], strengths.tensile[e], strengths.compressive[e]);
+    const auto check =
+        criterion.check(stress.sigma_1[e], stress.sigma_3[e], strengths.tensile[e], strengths.compressive[e]);
     assert(!std::isnan(check.ratio) && "failure ratio is NaN: non-finite stress");
     out.ratio[e] = check.ratio;
     out.mode[static_cast<std::size_t>(e)] = check.mode;
@@ -47,7 +48,8 @@ BreakCandidate select_beam_to_break(const BeamStress& stress, const BeamStrength
   bool any_intact = false;
   for (int e = 0; e < n_beams; ++e) {
     if (!is_intact(states, e)) continue;
-    const auto check = criterion.check(stress.sigma_1[e], stress.sigma_3[e], strengths.tensile[e], strengths.compressive[e]);
+    const auto check =
+        criterion.check(stress.sigma_1[e], stress.sigma_3[e], strengths.tensile[e], strengths.compressive[e]);
     assert(!std::isnan(check.ratio) && "failure ratio is NaN: non-finite stress");
     const double r = check.ratio;
     if (!any_intact || r > best.max_ratio) best.max_ratio = r;

@@ -17,7 +17,8 @@ FailureScan::FailureScan(const Lattice& lattice, const DualGraph& dual, const Cr
   assert(dual.particle_area.size() == lattice.n_particles() && "dual graph of another lattice");
   assert(static_cast<int>(states.size()) == lattice.n_beams() && "one state per beam");
   for (std::size_t t = 0; t < triangle_broken_.size(); ++t) {
-    for (int e : lattice.triangle_beams[t]) triangle_broken_[t] += states[static_cast<std::size_t>(e)] != BeamState::intact;
+    for (int e : lattice.triangle_beams[t])
+      triangle_broken_[t] += states[static_cast<std::size_t>(e)] != BeamState::intact;
     if (triangle_broken_[t] == 1)
       for (int e : lattice.triangle_beams[t]) ++tip_triangles_[static_cast<std::size_t>(e)];
   }
@@ -35,8 +36,9 @@ void FailureScan::beam_broken(int beam) {
 }
 
 double FailureScan::crack_tip_factor(int beam) const {
-  return crack_tip_.enabled && tip_triangles_[static_cast<std::size_t>(beam)] > 0 ? crack_tip_.factor(lattice_.length[beam])
-                                                                                    : 1.0;
+  return crack_tip_.enabled && tip_triangles_[static_cast<std::size_t>(beam)] > 0
+             ? crack_tip_.factor(lattice_.length[beam])
+             : 1.0;
 }
 
 FailureScan::Result FailureScan::run(const std::vector<BeamForce>& forces, const BeamStrengths& strengths,
@@ -91,9 +93,10 @@ void FailureScan::scan_beams(int first, int last, const std::vector<BeamForce>& 
       axial = law_->axial_stress(e, forces[static_cast<std::size_t>(e)].normal);
       const double f = law_->strength(e);
       reference = FailureCriterion::combine(axial / f, criterion.shear_ratio(s1, s3, C));
-      judged = stress_scale == 1.0 ? reference
-                                   : FailureCriterion::combine(axial * stress_scale / f,
-                                                               criterion.shear_ratio(s1 * stress_scale, s3 * stress_scale, C));
+      judged = stress_scale == 1.0
+                   ? reference
+                   : FailureCriterion::combine(axial * stress_scale / f,
+                                               criterion.shear_ratio(s1 * stress_scale, s3 * stress_scale, C));
     } else {
       reference = criterion.check(s1, s3, T, C);
       judged = stress_scale == 1.0 ? reference : criterion.check(s1 * stress_scale, s3 * stress_scale, T, C);

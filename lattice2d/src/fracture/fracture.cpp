@@ -96,7 +96,8 @@ BeamStress current_beam_stress(const BeamMechanics& mechanics, const DualGraph& 
 
 Eigen::VectorXd failure_ratios(const BeamMechanics& mechanics, const DualGraph& dual, const BeamStrengths& strengths,
                                const CrackTipOptions& crack_tip, const SawtoothLaw* law) {
-  if (!law) return evaluate_failure(current_beam_stress(mechanics, dual, crack_tip), strengths, mechanics.states()).ratio;
+  if (!law)
+    return evaluate_failure(current_beam_stress(mechanics, dual, crack_tip), strengths, mechanics.states()).ratio;
   const BeamStress stress = current_beam_stress(mechanics, dual, CrackTipOptions{false});
   const std::vector<BeamForce> forces = mechanics.beam_forces();
   const FailureCriterion criterion(strengths.friction);
@@ -104,8 +105,9 @@ Eigen::VectorXd failure_ratios(const BeamMechanics& mechanics, const DualGraph& 
   for (int e = 0; e < ratio.size(); ++e) {
     if (mechanics.states()[static_cast<std::size_t>(e)] != BeamState::intact) continue;
     const double tensile = law->axial_stress(e, forces[static_cast<std::size_t>(e)].normal) / law->strength(e);
-    ratio[e] = FailureCriterion::combine(tensile, criterion.shear_ratio(stress.sigma_1[e], stress.sigma_3[e],
-                                                                        strengths.compressive[e])).ratio;
+    ratio[e] = FailureCriterion::combine(
+                   tensile, criterion.shear_ratio(stress.sigma_1[e], stress.sigma_3[e], strengths.compressive[e]))
+                   .ratio;
   }
   return ratio;
 }
@@ -206,8 +208,7 @@ BreakLoopSummary break_until_stable(BeamMechanics& mechanics, const DualGraph& d
 
 BreakLoopSummary break_until_stable(BeamMechanics& mechanics, const DualGraph& dual, const BeamStrengths& strengths,
                                     SawtoothLaw& law, const BreakLoopOptions& options, double load,
-                                    std::vector<BreakEvent>& log, std::vector<ToothEvent>& teeth,
-                                    double stress_scale) {
+                                    std::vector<BreakEvent>& log, std::vector<ToothEvent>& teeth, double stress_scale) {
   return run_break_loop(mechanics, dual, strengths, &law, options, load, log, &teeth, stress_scale);
 }
 
@@ -226,8 +227,8 @@ LoadingResult run_loading(BeamMechanics& mechanics, const DualGraph& dual, const
   for (int step = 0;; ++step) {
     if (step >= options.max_steps) {
       result.status = LoadingStatus::step_cap;
-      result.message = "step cap reached (load_stepping.max_steps = " + std::to_string(options.max_steps) +
-                       ") at load " + num(load);
+      result.message =
+          "step cap reached (load_stepping.max_steps = " + std::to_string(options.max_steps) + ") at load " + num(load);
       break;
     }
     LoadStep record;
@@ -293,7 +294,8 @@ LoadingResult run_load_stepping(BeamMechanics& mechanics, const DualGraph& dual,
 }
 
 LoadingResult run_load_stepping(BeamMechanics& mechanics, const DualGraph& dual, const BeamStrengths& strengths,
-                                SawtoothLaw& law, const LoadSteppingOptions& options, const LoadStepObserver& observer) {
+                                SawtoothLaw& law, const LoadSteppingOptions& options,
+                                const LoadStepObserver& observer) {
   return run_loading(mechanics, dual, strengths, &law, options, observer);
 }
 
@@ -327,7 +329,8 @@ Eigen::VectorXd crack_face_forces(const Lattice& lattice, const DualGraph& dual,
     const int e = crack_beams[k];
     check_beam_index(lattice, e, "crack_beams[" + std::to_string(k) + "]");
     const auto [i, j] = lattice.beams[static_cast<std::size_t>(e)];
-    if (!std::isfinite(weights[k])) throw hm::InputError("weights[" + std::to_string(k) + "] = " + num(weights[k]) + ", allowed: finite");
+    if (!std::isfinite(weights[k]))
+      throw hm::InputError("weights[" + std::to_string(k) + "] = " + num(weights[k]) + ", allowed: finite");
     const Eigen::Vector2d push = (weights[k] * pressure) * dual.dual_length[e] * lattice.direction.col(e);
     f.segment<2>(dof_index(i, 0)) -= push;
     f.segment<2>(dof_index(j, 0)) += push;

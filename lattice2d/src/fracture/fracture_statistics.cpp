@@ -139,8 +139,10 @@ FractureStatistics compute_fracture_statistics(const Lattice& lattice, const std
       if (!is_broken(e)) continue;
       for (int i : lattice.beams[static_cast<std::size_t>(e)]) {
         int& first = first_at[static_cast<std::size_t>(i)];
-        if (first < 0) first = e;
-        else sets.unite(e, first);
+        if (first < 0)
+          first = e;
+        else
+          sets.unite(e, first);
       }
     }
   }

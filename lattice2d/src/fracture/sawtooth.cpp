@@ -86,8 +86,9 @@ double released_energy_density(const BeamTeeth& teeth, double axial_modulus) {
 BeamTeeth sawtooth_teeth(double axial_modulus, double tensile_strength, double fracture_energy, double length,
                          const SawtoothSpec& spec) {
   spec.validate();
-  for (const auto& [value, name] : {std::pair{axial_modulus, "axial_modulus"}, std::pair{tensile_strength, "tensile_strength"},
-                                     std::pair{fracture_energy, "fracture_energy"}, std::pair{length, "length"}})
+  for (const auto& [value, name] :
+       {std::pair{axial_modulus, "axial_modulus"}, std::pair{tensile_strength, "tensile_strength"},
+        std::pair{fracture_energy, "fracture_energy"}, std::pair{length, "length"}})
     core::require_finite(value, name);
   core::require_positive(axial_modulus, "axial_modulus");
   core::require_positive(tensile_strength, "tensile_strength");

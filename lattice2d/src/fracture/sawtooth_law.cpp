@@ -70,8 +70,10 @@ const BeamTeeth& SawtoothLaw::teeth(int beam) {
   auto it = teeth_.find(beam);
   if (it == teeth_.end()) {
     const auto k = static_cast<std::size_t>(beam);
-    it = teeth_.emplace(beam, sawtooth_teeth(axial_modulus_[k], tensile_[k], options_.fracture_energy,
-                                             lattice_.length[beam], options_.teeth)).first;
+    it = teeth_
+             .emplace(beam, sawtooth_teeth(axial_modulus_[k], tensile_[k], options_.fracture_energy,
+                                           lattice_.length[beam], options_.teeth))
+             .first;
   }
   return it->second;
 }
@@ -84,9 +86,10 @@ double SawtoothLaw::strength(int beam) const {
 
 bool SawtoothLaw::on_last_tooth(int beam) const {
   const int i = tooth(beam);
-  if (i == 0) return options_.teeth.n_teeth == 1 || is_snap_back(axial_modulus_[static_cast<std::size_t>(beam)],
-                                                                  tensile_[static_cast<std::size_t>(beam)],
-                                                                  options_.fracture_energy, lattice_.length[beam]);
+  if (i == 0)
+    return options_.teeth.n_teeth == 1 ||
+           is_snap_back(axial_modulus_[static_cast<std::size_t>(beam)], tensile_[static_cast<std::size_t>(beam)],
+                        options_.fracture_energy, lattice_.length[beam]);
   return i + 1 >= static_cast<int>(teeth_.at(beam).strength.size());
 }
 

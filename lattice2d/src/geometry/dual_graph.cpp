@@ -42,7 +42,8 @@ DualGraph build_dual_graph(const Lattice& lattice, const Eigen::Matrix2Xd& x, co
     const double cross = 2.0 * dual.triangle_area[s];  // exact: the area is half the cross product
     assert(cross > 0.0 && "triangle not counter-clockwise");
     const double uu = u.squaredNorm(), vv = v.squaredNorm();
-    dual.dual_point.col(s) = x.col(a) + Eigen::Vector2d(v.y() * uu - u.y() * vv, u.x() * vv - v.x() * uu) / (2.0 * cross);
+    dual.dual_point.col(s) =
+        x.col(a) + Eigen::Vector2d(v.y() * uu - u.y() * vv, u.x() * vv - v.x() * uu) / (2.0 * cross);
     dual.centroid.col(s) = (x.col(a) + x.col(b) + x.col(c)) / 3.0;
   }
 

@@ -8,9 +8,9 @@
 #include <tuple>
 
 #include "geometry/delaunay.hpp"
+#include "geometry/point_sampling.hpp"
 #include "hm/core/input_error.hpp"
 #include "hm/core/validation.hpp"
-#include "geometry/point_sampling.hpp"
 
 namespace hm::lattice2d {
 
@@ -18,7 +18,8 @@ void LatticeSpec::validate() const {
   using namespace hm::core;
   const int shape = static_cast<int>(domain);
   if (shape < 0 || shape > static_cast<int>(DomainShape::rectangle))
-    throw InputError("domain = " + core::name_of(domain) + ", allowed: " + core::names_list(core::enum_values<DomainShape>()));
+    throw InputError("domain = " + core::name_of(domain) +
+                     ", allowed: " + core::names_list(core::enum_values<DomainShape>()));
   require_closed(static_cast<double>(n_particles), "n_particles", 500.0, 5e6);
   require_closed(bridson_attempts, "bridson_attempts", 5.0, 1000.0);
   require_closed(boundary_spacing_factor, "boundary_spacing_factor", 1.0, 1.35);
@@ -28,8 +29,10 @@ void LatticeSpec::validate() const {
     // strip without interior (a singular stiffness): 3 mean spacings sqrt(area / N).
     const double spacing = std::sqrt(domain_area(*this) / static_cast<double>(n_particles));
     if (1.0 - inner_radius < 3.0 * spacing)
-      throw InputError("inner_radius = " + format_value(inner_radius) + ", allowed: a ring 1 - inner_radius >= 3 particle "
-                       "spacings wide (3 x " + format_value(spacing) + " at n_particles = " + std::to_string(n_particles) + ")");
+      throw InputError("inner_radius = " + format_value(inner_radius) +
+                       ", allowed: a ring 1 - inner_radius >= 3 particle "
+                       "spacings wide (3 x " +
+                       format_value(spacing) + " at n_particles = " + std::to_string(n_particles) + ")");
   }
   if (domain == DomainShape::rectangle) {
     require_positive(width, "width");
@@ -143,7 +146,8 @@ Lattice generate_lattice(const LatticeSpec& spec) {
            "an edge shared by more than two triangles");
     lattice.beam_triangles.push_back(adjacent);
     const BoundaryTag tag_i = lattice.boundary[static_cast<std::size_t>(i)];
-    assert((adjacent[1] >= 0 || (tag_i != BoundaryTag::interior && tag_i == lattice.boundary[static_cast<std::size_t>(j)])) &&
+    assert((adjacent[1] >= 0 ||
+            (tag_i != BoundaryTag::interior && tag_i == lattice.boundary[static_cast<std::size_t>(j)])) &&
            "a boundary edge with an endpoint off the boundary");
     lattice.beam_boundary.push_back(adjacent[1] >= 0 ? BoundaryTag::interior : tag_i);
     h = next;

@@ -30,8 +30,8 @@ class RangeBuilder {
 MeshQuality mesh_quality(const Lattice& lattice, const DualGraph& dual) {
   MeshQuality q;
   q.n_particles = lattice.n_particles();
-  q.n_boundary_particles = static_cast<int>(
-      std::count_if(lattice.boundary.begin(), lattice.boundary.end(), [](BoundaryTag t) { return t != BoundaryTag::interior; }));
+  q.n_boundary_particles = static_cast<int>(std::count_if(lattice.boundary.begin(), lattice.boundary.end(),
+                                                          [](BoundaryTag t) { return t != BoundaryTag::interior; }));
   q.n_beams = lattice.n_beams();
   q.n_triangles = lattice.n_triangles();
   q.min_spacing = lattice.min_spacing;
@@ -88,9 +88,8 @@ std::string to_string(const MeshQuality& q) {
                 q.n_floored, q.sum_particle_area, q.sum_triangle_area, q.domain_area);
   return std::string(buf) + row("triangle angle [deg]", q.triangle_angle_deg) + row("beam length L", q.beam_length) +
          row("d_st (interior)", q.dual_length) + row("d_su (boundary)", q.surface_distance) +
-         row("d_st / L", q.dual_ratio) + row("d_su / L", q.surface_ratio) +
-         row("conductance A/d", q.conductance) + row("particle area V_i", q.particle_area) +
-         row("triangle area V_s", q.triangle_area);
+         row("d_st / L", q.dual_ratio) + row("d_su / L", q.surface_ratio) + row("conductance A/d", q.conductance) +
+         row("particle area V_i", q.particle_area) + row("triangle area V_s", q.triangle_area);
 }
 
 std::ostream& operator<<(std::ostream& out, const MeshQuality& q) { return out << to_string(q); }

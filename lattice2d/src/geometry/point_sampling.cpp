@@ -72,7 +72,9 @@ void add_rectangle(double w, double h, double r, PointSet& out) {
 class SpacingGrid {
  public:
   SpacingGrid(const Box& box, double r)
-      : box_(box), r2_(r * r), cell_(0.999 * r / std::numbers::sqrt2),
+      : box_(box),
+        r2_(r * r),
+        cell_(0.999 * r / std::numbers::sqrt2),
         nx_(static_cast<int>(std::ceil((box.x1 - box.x0) / cell_)) + 1),
         ny_(static_cast<int>(std::ceil((box.y1 - box.y0) / cell_)) + 1),
         cells_(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_), -1) {}

@@ -14,9 +14,9 @@ void write_fracture_table(const std::filesystem::path& path, const std::vector<F
     for (const FractureSnapshot& snap : snapshots)
       for (const Fracture& f : snap.stats.fractures)
         out << csv_number(snap.t) << ',' << f.id << ',' << core::name_of(f.kind) << ',' << f.n_beams() << ','
-            << (f.connected_to_borehole ? 1 : 0) << ',' << (f.reaches_outer ? 1 : 0) << ',' << csv_number(f.r_min) << ','
-            << csv_number(f.r_max) << ',' << csv_number(f.length) << ',' << csv_number(f.angle_deg) << ',' << f.n_tensile << ','
-            << f.n_shear << ',' << csv_number(f.extent) << '\n';
+            << (f.connected_to_borehole ? 1 : 0) << ',' << (f.reaches_outer ? 1 : 0) << ',' << csv_number(f.r_min)
+            << ',' << csv_number(f.r_max) << ',' << csv_number(f.length) << ',' << csv_number(f.angle_deg) << ','
+            << f.n_tensile << ',' << f.n_shear << ',' << csv_number(f.extent) << '\n';
   });
 }
 

@@ -19,8 +19,8 @@ RadialProfile radial_average(const Eigen::Matrix2Xd& centroid, const Eigen::Vect
                              const Eigen::VectorXd& values, const std::vector<double>& edges,
                              const Eigen::Vector2d& centre) {
   assert(edges.size() >= 2 && edges.front() >= 0.0 && "at least one shell, radii >= 0");
-  assert(std::is_sorted(edges.begin(), edges.end()) &&
-         std::adjacent_find(edges.begin(), edges.end()) == edges.end() && "edges strictly increasing");
+  assert(std::is_sorted(edges.begin(), edges.end()) && std::adjacent_find(edges.begin(), edges.end()) == edges.end() &&
+         "edges strictly increasing");
   assert(area.size() == centroid.cols() && values.size() >= centroid.cols() && "one value per triangle");
   const std::size_t n_shells = edges.size() - 1;
   RadialProfile profile;

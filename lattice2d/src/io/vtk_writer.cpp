@@ -3,8 +3,8 @@
 #include <bit>
 #include <charconv>
 #include <cstdint>
-#include <cstring>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <stdexcept>
 #include <system_error>
@@ -105,8 +105,10 @@ class ArrayWriter {
         out_ << "          ";
         for (int c = 0; c < n_components; ++c) {
           if (c) out_ << ' ';
-          if constexpr (std::is_floating_point_v<T>) put(out_, static_cast<T>(value(k, c)));
-          else out_ << static_cast<long long>(value(k, c));
+          if constexpr (std::is_floating_point_v<T>)
+            put(out_, static_cast<T>(value(k, c)));
+          else
+            out_ << static_cast<long long>(value(k, c));
         }
         out_ << '\n';
       }
@@ -153,7 +155,8 @@ void write_vtu(const fs::path& path, const Lattice& lattice, const DualGraph& du
         << "\" header_type=\"UInt64\">\n"
            "  <UnstructuredGrid>\n"
            "    <FieldData>\n";
-    w.array<double>("Float64", "TimeValue", 1, 1, [&](long, int) { return s.time; }, true);
+    w.array<double>(
+        "Float64", "TimeValue", 1, 1, [&](long, int) { return s.time; }, true);
     out << "    </FieldData>\n"
         << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfCells=\"" << n_cells << "\">\n"
         << "      <PointData Vectors=\"displacement\" Tensors=\"stress\">\n";
@@ -161,19 +164,20 @@ void write_vtu(const fs::path& path, const Lattice& lattice, const DualGraph& du
       return (c == 2 || s.displacement.size() == 0) ? 0.0 : s.displacement[3 * i + c];
     });
     w.array<double>("Float64", "rotation", 1, n,
-               [&](long i, int) { return s.displacement.size() == 0 ? 0.0 : s.displacement[3 * i + 2]; });
+                    [&](long i, int) { return s.displacement.size() == 0 ? 0.0 : s.displacement[3 * i + 2]; });
     w.array<double>("Float64", "stress", 9, n, [&](long i, int c) {
       if (s.particle_stress.cols() == 0) return 0.0;
       switch (c) {  // row-major 3 x 3: xx xy xz / yx yy yz / zx zy zz
         case 0: return s.particle_stress(0, i);
         case 4: return s.particle_stress(1, i);
-        case 1: case 3: return s.particle_stress(2, i);
+        case 1:
+        case 3: return s.particle_stress(2, i);
         default: return 0.0;
       }
     });
     w.array<double>("Float64", "particle_area", 1, n, [&](long i, int) { return dual.particle_area[i]; });
     w.array<std::int32_t>("Int32", "boundary", 1, n,
-               [&](long i, int) { return static_cast<int>(lattice.boundary[static_cast<std::size_t>(i)]); });
+                          [&](long i, int) { return static_cast<int>(lattice.boundary[static_cast<std::size_t>(i)]); });
     for (const NamedField& f : s.particle_fields)
       w.array<double>("Float64", f.name, 1, n, [&](long i, int) { return f.values[i]; });
     out << "      </PointData>\n"
@@ -182,19 +186,18 @@ void write_vtu(const fs::path& path, const Lattice& lattice, const DualGraph& du
         << "             contact (normal spring), 2 broken beam open (no force). broken: -1 triangle, 0/1 beam. -->\n";
     w.array<std::int32_t>("Int32", "cell_kind", 1, n_cells, [&](long k, int) { return k < n_tri ? 0 : 1; });
     w.array<double>("Float64", "pressure", 1, n_cells,
-               [&](long k, int) { return (k < n_tri && s.pressure.size() != 0) ? s.pressure[k] : 0.0; });
+                    [&](long k, int) { return (k < n_tri && s.pressure.size() != 0) ? s.pressure[k] : 0.0; });
     w.array<std::int32_t>("Int32", "state", 1, n_cells, [&](long k, int) { return k < n_tri ? -1 : state(k - n_tri); });
     w.array<std::int32_t>("Int32", "broken", 1, n_cells,
-               [&](long k, int) { return k < n_tri ? -1 : (state(k - n_tri) != 0 ? 1 : 0); });
+                          [&](long k, int) { return k < n_tri ? -1 : (state(k - n_tri) != 0 ? 1 : 0); });
     for (const NamedField& f : s.triangle_fields)
       w.array<double>("Float64", f.name, 1, n_cells, [&](long k, int) { return k < n_tri ? f.values[k] : 0.0; });
     for (const NamedField& f : s.beam_fields)
       w.array<double>("Float64", f.name, 1, n_cells,
-                 [&](long k, int) { return k < n_tri ? 0.0 : f.values[k - n_tri]; });
+                      [&](long k, int) { return k < n_tri ? 0.0 : f.values[k - n_tri]; });
     out << "      </CellData>\n"
         << "      <Points>\n";
-    w.array<double>("Float64", "points", 3, n,
-               [&](long i, int c) { return c == 2 ? 0.0 : lattice.points(c, i); });
+    w.array<double>("Float64", "points", 3, n, [&](long i, int c) { return c == 2 ? 0.0 : lattice.points(c, i); });
     out << "      </Points>\n"
         << "      <Cells>\n";
     // Connectivity: 3 indices per triangle, then 2 per beam; offsets are the running ends.
@@ -203,8 +206,9 @@ void write_vtu(const fs::path& path, const Lattice& lattice, const DualGraph& du
       const long b = k - 3 * n_tri;
       return lattice.beams[static_cast<std::size_t>(b / 2)][static_cast<std::size_t>(b % 2)];
     });
-    w.array<std::int64_t>("Int64", "offsets", 1, n_cells,
-               [&](long k, int) -> long { return k < n_tri ? 3 * (k + 1) : 3 * n_tri + 2 * (k - n_tri + 1); });
+    w.array<std::int64_t>("Int64", "offsets", 1, n_cells, [&](long k, int) -> long {
+      return k < n_tri ? 3 * (k + 1) : 3 * n_tri + 2 * (k - n_tri + 1);
+    });
     w.array<std::uint8_t>("UInt8", "types", 1, n_cells, [&](long k, int) { return k < n_tri ? 5 : 3; });
     out << "      </Cells>\n"
         << "    </Piece>\n"

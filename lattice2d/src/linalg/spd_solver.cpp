@@ -35,8 +35,7 @@ void SpdSolver::add_low_rank(const Matrix& W, int sigma) {
   ++report_.matrix_revision;
   for (int c = 0; c < W.outerSize(); ++c)
     for (Matrix::InnerIterator p(W, c); p; ++p)
-      for (Matrix::InnerIterator q(W, c); q; ++q)
-        matrix_.coeffRef(p.row(), q.row()) += sigma * p.value() * q.value();
+      for (Matrix::InnerIterator q(W, c); q; ++q) matrix_.coeffRef(p.row(), q.row()) += sigma * p.value() * q.value();
   if (!matrix_.isCompressed()) matrix_.makeCompressed();
 }
 
@@ -107,7 +106,7 @@ struct CholmodSolver::Impl {
   } common;
   FactorPtr symbolic{nullptr, FactorDeleter{&common.c}};  // from cholmod_analyze, never numeric
   FactorPtr factor{nullptr, FactorDeleter{&common.c}};    // simplicial LDL' (after conversion)
-  std::vector<int> inverse_permutation;                    // row r of A is row pinv[r] of L
+  std::vector<int> inverse_permutation;                   // row r of A is row pinv[r] of L
   // The pattern `symbolic` was analysed on (the matrix of the last compute(); modifications may have
   // grown A's pattern since): a restored solver re-analyses it for the same ordering.
   std::vector<int> analysed_outer, analysed_inner;
@@ -223,9 +222,7 @@ bool CholmodSolver::analyse(const Matrix& A) {
       c->nmethods = 1;
       c->method[0].ordering = CHOLMOD_AMD;
       break;
-    case CholmodOrdering::automatic:
-      c->nmethods = 0;
-      break;
+    case CholmodOrdering::automatic: c->nmethods = 0; break;
   }
   impl_->factor.reset();
   impl_->symbolic.reset();
@@ -337,7 +334,8 @@ void check_factor_arrays(const cholmod_factor& L, Eigen::Index n_rows, const std
   for (long j = 0; j < n; ++j) {
     if (perm[j] < 0 || perm[j] >= n || seen[static_cast<std::size_t>(perm[j])]) fail("L.Perm is not a permutation");
     seen[static_cast<std::size_t>(perm[j])] = true;
-    if (p[j] < 0 || nz[j] < 1 || static_cast<long>(p[j]) + nz[j] > nzmax) fail("column " + std::to_string(j) + " out of L");
+    if (p[j] < 0 || nz[j] < 1 || static_cast<long>(p[j]) + nz[j] > nzmax)
+      fail("column " + std::to_string(j) + " out of L");
     if (i[p[j]] != j) fail("column " + std::to_string(j) + " does not start on its diagonal");
     for (int k = p[j] + 1; k < p[j] + nz[j]; ++k)
       if (i[k] <= j || i[k] >= n) fail("row index out of range in column " + std::to_string(j));
@@ -364,9 +362,9 @@ void CholmodSolver::restore_state(core::StateReader& r) {
   core::check_compressed_pattern(impl_->analysed_outer.data(), impl_->analysed_inner.data(), n_rows, n_rows,
                                  impl_->analysed_inner.size(), r.source(), "cholmod.analysed_inner");
   const std::vector<double> ones(impl_->analysed_inner.size(), 1.0);
-  const Matrix analysed = Eigen::Map<const Matrix>(n_rows, n_rows, static_cast<Eigen::Index>(ones.size()),
-                                                   impl_->analysed_outer.data(), impl_->analysed_inner.data(),
-                                                   ones.data());
+  const Matrix analysed =
+      Eigen::Map<const Matrix>(n_rows, n_rows, static_cast<Eigen::Index>(ones.size()), impl_->analysed_outer.data(),
+                               impl_->analysed_inner.data(), ones.data());
   const SpdSolveReport report = report_;
   if (!analyse(analysed)) throw std::runtime_error("restoring the mechanics solver: " + report_.message);
   report_ = report;
@@ -505,8 +503,8 @@ void CholmodSolver::modify(const Matrix& W, int sigma) {
     // holds a rotation) left the old one, and every update then failed with CHOLMOD_INVALID.
     if (!impl_->zero_delta || impl_->zero_delta->nrow != static_cast<std::size_t>(n))
       impl_->zero_delta.reset(cholmod_zeros(static_cast<std::size_t>(n), 1, CHOLMOD_REAL, c));
-    ok = impl_->zero_delta && cholmod_updown_solve(sigma > 0 ? 1 : 0, C.get(), impl_->factor.get(), impl_->forward.get(),
-                                                   impl_->zero_delta.get(), c);
+    ok = impl_->zero_delta && cholmod_updown_solve(sigma > 0 ? 1 : 0, C.get(), impl_->factor.get(),
+                                                   impl_->forward.get(), impl_->zero_delta.get(), c);
   } else {
     ok = cholmod_updown(sigma > 0 ? 1 : 0, C.get(), impl_->factor.get(), c);
   }
@@ -525,8 +523,8 @@ void CholmodSolver::modify(const Matrix& W, int sigma) {
   // Only the pivots on the modified path change, but an O(n) scan is cheap against a solve.
   if (const PivotRange d = ldl_pivots(*impl_->factor); !d.acceptable(options_.pivot_tolerance)) {
     report_.info = Eigen::NumericalIssue;
-    report_.message = "LDL' pivot " + hm::core::format_value(d.min) +
-                      " after a low-rank modification: matrix singular or indefinite";
+    report_.message =
+        "LDL' pivot " + hm::core::format_value(d.min) + " after a low-rank modification: matrix singular or indefinite";
   } else {
     report_.info = Eigen::Success;
     report_.message.clear();
@@ -605,8 +603,8 @@ Eigen::VectorXd CholmodSolver::parallel_solve(const Eigen::VectorXd& b) {
     impl_->subtree_current = true;
   }
   if (!impl_->forward || impl_->forward_b.size() != n || impl_->forward_b != b) {
-    impl_->forward.reset(cholmod_allocate_dense(static_cast<std::size_t>(n), 1, static_cast<std::size_t>(n), CHOLMOD_REAL,
-                                                impl_->c()));
+    impl_->forward.reset(
+        cholmod_allocate_dense(static_cast<std::size_t>(n), 1, static_cast<std::size_t>(n), CHOLMOD_REAL, impl_->c()));
     if (!impl_->forward) return Eigen::VectorXd::Constant(n, NAN);
     auto* y = static_cast<double*>(impl_->forward->x);
     for (Eigen::Index k = 0; k < n; ++k) y[k] = b[perm[k]];
@@ -731,8 +729,7 @@ Eigen::VectorXd PcgSolver::solve(const Eigen::VectorXd& b) {
   report_.message = info == Eigen::Success
                         ? ""
                         : "CG stopped after " + std::to_string(report_.iterations) +
-                              " iterations at relative residual " +
-                              hm::core::format_value(report_.relative_residual);
+                              " iterations at relative residual " + hm::core::format_value(report_.relative_residual);
   if (info == Eigen::Success) previous_ = x;
   return x;
 }

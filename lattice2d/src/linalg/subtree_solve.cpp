@@ -30,8 +30,8 @@ struct FactorView {
 
 // Longest-processing-time assignment of subtrees (weights w) to kGroups groups; returns each one's group
 // and the largest group load.
-std::pair<std::vector<int>, std::int64_t> assign_groups(const std::vector<int>& roots, const std::vector<std::int64_t>& w,
-                                                        int n_groups) {
+std::pair<std::vector<int>, std::int64_t> assign_groups(const std::vector<int>& roots,
+                                                        const std::vector<std::int64_t>& w, int n_groups) {
   std::vector<int> order(roots.size());
   for (std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<int>(k);
   std::sort(order.begin(), order.end(), [&](int a, int b) {
@@ -95,7 +95,8 @@ TreeWork tree_work(const FactorView& f, const std::vector<int>& parent) {
   t.children.resize(static_cast<std::size_t>(t.child_start[n]));
   std::vector<int> next(t.child_start.begin(), t.child_start.end() - 1);
   for (std::size_t j = 0; j < n; ++j)
-    if (parent[j] >= 0) t.children[static_cast<std::size_t>(next[static_cast<std::size_t>(parent[j])]++)] = static_cast<int>(j);
+    if (parent[j] >= 0)
+      t.children[static_cast<std::size_t>(next[static_cast<std::size_t>(parent[j])]++)] = static_cast<int>(j);
   return t;
 }
 
@@ -119,7 +120,8 @@ std::vector<int> best_top(const FactorView& f, const std::vector<int>& parent, c
         best_time = top_work + max_load;
         best_expansions = expanded.size();
       }
-      if (static_cast<double>(max_load) <= 1.02 * static_cast<double>(t.total - top_work) / SubtreeSolve::kGroups) break;
+      if (static_cast<double>(max_load) <= 1.02 * static_cast<double>(t.total - top_work) / SubtreeSolve::kGroups)
+        break;
     }
     if (top_work > t.total / 10) break;
     const int j = frontier.top().second;
@@ -127,7 +129,8 @@ std::vector<int> best_top(const FactorView& f, const std::vector<int>& parent, c
     expanded.push_back(j);
     top_work += f.nz[j];
     for (int c = t.child_start[static_cast<std::size_t>(j)]; c < t.child_start[static_cast<std::size_t>(j) + 1]; ++c)
-      frontier.emplace(t.work[static_cast<std::size_t>(t.children[static_cast<std::size_t>(c)])], t.children[static_cast<std::size_t>(c)]);
+      frontier.emplace(t.work[static_cast<std::size_t>(t.children[static_cast<std::size_t>(c)])],
+                       t.children[static_cast<std::size_t>(c)]);
   }
   expanded.resize(best_expansions);
   return expanded;
@@ -158,7 +161,8 @@ void SubtreeSolve::update(const cholmod_factor& L) {
   }
   std::vector<int> roots;
   for (std::size_t j = 0; j < n; ++j)
-    if (!is_top[j] && (parent_[j] < 0 || is_top[static_cast<std::size_t>(parent_[j])])) roots.push_back(static_cast<int>(j));
+    if (!is_top[j] && (parent_[j] < 0 || is_top[static_cast<std::size_t>(parent_[j])]))
+      roots.push_back(static_cast<int>(j));
   const auto [group_of_root, max_load] = assign_groups(roots, t.work, kGroups);
 
   // Label every column with its group and its subtree's root (parents before children).

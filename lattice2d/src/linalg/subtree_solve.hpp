@@ -56,13 +56,13 @@ class SubtreeSolve {
   double imbalance() const { return imbalance_; }
 
  private:
-  std::vector<int> parent_;                    // elimination tree the partition was built for
-  std::vector<int> nz_;                        // column counts it was built for
-  std::vector<int> top_;                       // top columns, ascending
-  std::vector<Block> top_blocks_;              // the top's blocks, ascending
-  std::vector<int> top_slot_;                  // row -> position in top_, -1 if not top
-  std::array<std::vector<Block>, kGroups> group_;  // each group's blocks, ascending
-  std::vector<int> subtree_root_;              // column -> root of its cut subtree (rows above are top)
+  std::vector<int> parent_;                          // elimination tree the partition was built for
+  std::vector<int> nz_;                              // column counts it was built for
+  std::vector<int> top_;                             // top columns, ascending
+  std::vector<Block> top_blocks_;                    // the top's blocks, ascending
+  std::vector<int> top_slot_;                        // row -> position in top_, -1 if not top
+  std::array<std::vector<Block>, kGroups> group_;    // each group's blocks, ascending
+  std::vector<int> subtree_root_;                    // column -> root of its cut subtree (rows above are top)
   std::array<std::vector<double>, kGroups> to_top_;  // forward: each group's updates of top rows
   std::vector<double> work_;                         // solve(): the permuted right-hand side
   bool parallel_ = false;                            // L has at least kParallelNonzeros

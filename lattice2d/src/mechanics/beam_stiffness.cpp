@@ -7,8 +7,8 @@
 
 #include <Eigen/Cholesky>
 
-#include "hm/core/validation.hpp"
 #include "hm/core/input_error.hpp"
+#include "hm/core/validation.hpp"
 
 namespace hm::lattice2d {
 
@@ -97,7 +97,7 @@ Eigen::Matrix<double, 3, 6> BeamOperator::strain_matrix() const {
   // Local (u_n,i, u_s,i, omega_i, u_n,j, u_s,j, omega_j); theta = omega - (u_s,j - u_s,i) / L.
   const double L = length_;
   Eigen::Matrix<double, 3, 6> B;
-  B << -1, 0, 0, 1, 0, 0,  //
+  B << -1, 0, 0, 1, 0, 0,         //
       0, 1 / L, 1, 0, -1 / L, 0,  //
       0, 1 / L, 0, 0, -1 / L, 1;
   return B;
@@ -141,7 +141,8 @@ BeamForce beam_force(const Lattice& lattice, int beam, const BeamParameters& par
   BeamForce F;
   if (state == BeamState::open) return F;
   // The force the beam exerts on its particles is minus its internal force K_e u_e.
-  const Vector6d f = -BeamOperator(lattice, beam, parameters, state).internal_force(element_displacements(lattice, beam, u));
+  const Vector6d f =
+      -BeamOperator(lattice, beam, parameters, state).internal_force(element_displacements(lattice, beam, u));
   F.force_on_i = f.head<2>();
   const Eigen::Vector2d n = lattice.direction.col(beam), s(-n.y(), n.x());
   F.normal = F.force_on_i.dot(n);

@@ -64,13 +64,15 @@ ElasticProperties measure_elastic_properties(const Lattice& lattice, const BeamP
     case DomainShape::rectangle: inradius = 0.5 * std::min(lattice.spec.width, lattice.spec.height); break;
     case DomainShape::disk: inradius = 1.0; break;
     case DomainShape::annulus:
-      throw hm::InputError("lattice.spec.domain = 'annulus', allowed: rectangle or disk (a homogeneous-strain "
-                           "test needs a central region without a hole)");
+      throw hm::InputError(
+          "lattice.spec.domain = 'annulus', allowed: rectangle or disk (a homogeneous-strain "
+          "test needs a central region without a hole)");
   }
   const double radius = options.region_fraction * inradius;
   std::vector<int> chosen;
   for (int i = 0; i < lattice.n_particles(); ++i)
-    if (lattice.boundary[static_cast<std::size_t>(i)] == BoundaryTag::interior && lattice.points.col(i).norm() <= radius)
+    if (lattice.boundary[static_cast<std::size_t>(i)] == BoundaryTag::interior &&
+        lattice.points.col(i).norm() <= radius)
       chosen.push_back(i);
   if (chosen.empty())
     throw hm::InputError("elastic_test.region_fraction = " + format_value(options.region_fraction) +
@@ -83,8 +85,10 @@ ElasticProperties measure_elastic_properties(const Lattice& lattice, const BeamP
   out.n_particles_used = static_cast<int>(chosen.size());
   for (int k = 0; k < 3; ++k) {
     Eigen::Matrix2d eps = Eigen::Matrix2d::Zero();  // unit Voigt strain state k (engineering shear)
-    if (k < 2) eps(k, k) = 1.0;
-    else eps(0, 1) = eps(1, 0) = 0.5;
+    if (k < 2)
+      eps(k, k) = 1.0;
+    else
+      eps(0, 1) = eps(1, 0) = 0.5;
     BoundaryConditions conditions;
     conditions.prescribe_boundary_strain = true;
     conditions.boundary_strain = eps;
@@ -187,10 +191,10 @@ std::string calibration_message(const Calibration& out, const CalibrationSpec& s
   msg << "k_n = " << format_value(out.beams.normal_stiffness) << ", a = " << format_value(out.beams.aspect)
       << ", nu0 = " << format_value(out.beams.beam_poisson) << ": E = " << format_value(out.youngs_modulus_mean)
       << " +- " << format_value(out.youngs_modulus_sd) << ", nu = " << format_value(out.poisson_ratio_mean) << " +- "
-      << format_value(out.poisson_ratio_sd) << " over " << spec.seeds.size() << " seed(s); reachable nu at nu0 = "
-      << format_value(spec.beam_poisson) << ": [" << format_value(out.poisson_ratio_at_aspect_max) << ", "
-      << format_value(out.poisson_ratio_at_aspect_min) << "] for a in [" << format_value(spec.aspect_min) << ", "
-      << format_value(spec.aspect_max) << "]";
+      << format_value(out.poisson_ratio_sd) << " over " << spec.seeds.size()
+      << " seed(s); reachable nu at nu0 = " << format_value(spec.beam_poisson) << ": ["
+      << format_value(out.poisson_ratio_at_aspect_max) << ", " << format_value(out.poisson_ratio_at_aspect_min)
+      << "] for a in [" << format_value(spec.aspect_min) << ", " << format_value(spec.aspect_max) << "]";
   for (const auto& p : out.per_seed)
     if (!p.is_converged) msg << "; a measurement did not converge: " << p.message;
   if (!out.target_poisson_reached)
@@ -205,8 +209,8 @@ Calibration calibrate_beams(const CalibrationSpec& spec) {
   const auto start = std::chrono::steady_clock::now();
   spec.validate();
   std::vector<Lattice> lattices;
-  for (auto seed : spec.seeds) lattices.push_back(generate_lattice(calibration_rectangle(spec.n_particles,
-                                                                                          spec.rectangle_side, seed)));
+  for (auto seed : spec.seeds)
+    lattices.push_back(generate_lattice(calibration_rectangle(spec.n_particles, spec.rectangle_side, seed)));
   Calibration out;
   struct Mean {
     double youngs_modulus, poisson_ratio;
@@ -238,8 +242,7 @@ Calibration calibrate_beams(const CalibrationSpec& spec) {
   if (target <= lo.poisson_ratio && target >= hi.poisson_ratio) {
     double f_lo = lo.poisson_ratio - target, f_hi = hi.poisson_ratio - target;
     int side = 0;
-    for (int it = 0; it < spec.max_iterations && std::abs(best.poisson_ratio - target) > spec.poisson_tolerance;
-         ++it) {
+    for (int it = 0; it < spec.max_iterations && std::abs(best.poisson_ratio - target) > spec.poisson_tolerance; ++it) {
       const double log_mid = (log_lo * f_hi - log_hi * f_lo) / (f_hi - f_lo);
       Mean mid = measure(trial_beams(spec, std::exp(log_mid)));
       const double f_mid = mid.poisson_ratio - target;

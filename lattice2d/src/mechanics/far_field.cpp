@@ -25,7 +25,8 @@ void add_far_field_loads(const analytic::FarFieldStress& far, double p0, double 
   // A stress of E strains the rock by order one, far outside the small-strain lattice (a rock's in-situ
   // stresses are ~1e-3 E); 1e300 overflowed the loads into NaN at the first solve.
   if (far.S_H > 1.0)
-    throw hm::InputError("S_H = " + core::format_value(far.S_H) + ", allowed: <= 1 (over E; the lattice is small-strain)");
+    throw hm::InputError("S_H = " + core::format_value(far.S_H) +
+                         ", allowed: <= 1 (over E; the lattice is small-strain)");
   if (p0 > 1.0)
     throw hm::InputError("p0 = " + core::format_value(p0) + ", allowed: <= 1 (over E; the lattice is small-strain)");
   if (!(b >= 0.0 && b <= 1.0)) throw hm::InputError("b = " + core::format_value(b) + ", allowed: 0 <= b <= 1");
@@ -33,7 +34,8 @@ void add_far_field_loads(const analytic::FarFieldStress& far, double p0, double 
   if (domain == DomainShape::annulus) conditions.inner_pressure += (1.0 - b) * p0;
 }
 
-Eigen::VectorXd annulus_displacement(const Lattice& lattice, const analytic::InSituAnnulus& exact, double youngs_modulus) {
+Eigen::VectorXd annulus_displacement(const Lattice& lattice, const analytic::InSituAnnulus& exact,
+                                     double youngs_modulus) {
   Eigen::VectorXd u = Eigen::VectorXd::Zero(3 * lattice.n_particles());
   for (int i = 0; i < lattice.n_particles(); ++i) {
     const Eigen::Vector2d x = lattice.points.col(i);

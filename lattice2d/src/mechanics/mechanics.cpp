@@ -44,8 +44,9 @@ void BoundaryConditions::validate(const Lattice& lattice) const {
       throw hm::InputError("boundary_conditions.boundary_strain(0,1) = " + format_value(boundary_strain(0, 1)) +
                            ", allowed: equal to boundary_strain(1,0) = " + format_value(boundary_strain(1, 0)));
     if (outer == BoundarySupport::fixed || inner == BoundarySupport::fixed)
-      throw hm::InputError("boundary_conditions.prescribe_boundary_strain = true, allowed: only with "
-                           "outer = inner = 'free'");
+      throw hm::InputError(
+          "boundary_conditions.prescribe_boundary_strain = true, allowed: only with "
+          "outer = inner = 'free'");
   }
   for (std::size_t k = 0; k < prescribed.size(); ++k) {
     const std::string name = "boundary_conditions.prescribed[" + std::to_string(k) + "]";
@@ -63,7 +64,8 @@ void BoundaryConditions::validate(const Lattice& lattice) const {
 bool BoundaryConditions::is_unloaded() const {
   return inner_pressure == 0.0 && outer_pressure == 0.0 && outer_stress.isZero(0.0) &&
          !(prescribe_boundary_strain && !boundary_strain.isZero(0.0)) &&
-         std::all_of(prescribed.begin(), prescribed.end(), [](const PrescribedDisplacement& d) { return d.value == 0.0; });
+         std::all_of(prescribed.begin(), prescribed.end(),
+                     [](const PrescribedDisplacement& d) { return d.value == 0.0; });
 }
 
 void MechanicsOptions::validate() const {
@@ -83,7 +85,8 @@ std::array<int, 6> beam_dofs(const Lattice& lattice, int beam) {
 
 // Least-squares rigid motion (translation t at the centroid c, rotation w) of the particles'
 // displacements; returns (t_x, t_y, w, c_x, c_y). A single particle keeps its own rotation.
-Eigen::Matrix<double, 5, 1> rigid_fit(const Lattice& lattice, const Eigen::VectorXd& u, const std::vector<int>& particles) {
+Eigen::Matrix<double, 5, 1> rigid_fit(const Lattice& lattice, const Eigen::VectorXd& u,
+                                      const std::vector<int>& particles) {
   Eigen::Vector2d c = Eigen::Vector2d::Zero(), t = Eigen::Vector2d::Zero();
   for (int p : particles) {
     c += lattice.points.col(p);
@@ -126,21 +129,23 @@ namespace {
 // connection_forces into `forces` (resized; every entry overwritten), with beam e's parameters from
 // parameters_of(e).
 template <class ParametersOf>
-void fill_connection_forces(const Lattice& lattice, const ParametersOf& parameters_of, const std::vector<BeamState>& states,
-                            const Eigen::VectorXd& u, std::vector<BeamForce>& forces) {
+void fill_connection_forces(const Lattice& lattice, const ParametersOf& parameters_of,
+                            const std::vector<BeamState>& states, const Eigen::VectorXd& u,
+                            std::vector<BeamForce>& forces) {
   assert(u.size() == 3 * lattice.n_particles() && "connection_forces: u has 3 entries per particle");
   assert(static_cast<int>(states.size()) == lattice.n_beams() && "connection_forces: one state per beam");
   forces.resize(static_cast<std::size_t>(lattice.n_beams()));
   // Beams independent: on the threads for a large lattice (N ~ 7000 and up), the same bits.
 #pragma omp parallel for schedule(static) if (lattice.n_beams() >= 20000)
   for (int e = 0; e < lattice.n_beams(); ++e)
-    forces[static_cast<std::size_t>(e)] = beam_force(lattice, e, parameters_of(e), states[static_cast<std::size_t>(e)], u);
+    forces[static_cast<std::size_t>(e)] =
+        beam_force(lattice, e, parameters_of(e), states[static_cast<std::size_t>(e)], u);
 }
 
 }  // namespace
 
 std::vector<BeamForce> connection_forces(const Lattice& lattice, const BeamParameters& parameters,
-                                           const std::vector<BeamState>& states, const Eigen::VectorXd& u) {
+                                         const std::vector<BeamState>& states, const Eigen::VectorXd& u) {
   std::vector<BeamForce> forces;
   fill_connection_forces(
       lattice, [&](int e) { return beam_parameters_for(lattice, parameters, e); }, states, u, forces);
@@ -219,16 +224,17 @@ void BeamMechanics::remove_rigid_body_modes() {
     for (int dof = 0; dof < n_dof; ++dof) {
       if (!held_[static_cast<std::size_t>(dof)]) continue;
       const Eigen::Vector2d r = lattice_.points.col(dof / 3) - c;
-      const Eigen::Vector3d row = dof % 3 == 0 ? Eigen::Vector3d(1, 0, -r.y())
+      const Eigen::Vector3d row = dof % 3 == 0   ? Eigen::Vector3d(1, 0, -r.y())
                                   : dof % 3 == 1 ? Eigen::Vector3d(0, 1, r.x())
                                                  : Eigen::Vector3d(0, 0, 1);
       M += row * row.transpose();
     }
     const Eigen::Vector3d ev = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(M).eigenvalues();
     if (!(ev[0] > 1e-12 * ev[2]))  // relative rank test; lattice lengths are O(r_min) to O(1)
-      throw hm::InputError("boundary_conditions: the held degrees of freedom leave a rigid-body motion free, "
-                           "allowed: none held (pure traction, pinned automatically) or held so that x, y "
-                           "translation and rotation are all stopped");
+      throw hm::InputError(
+          "boundary_conditions: the held degrees of freedom leave a rigid-body motion free, "
+          "allowed: none held (pure traction, pinned automatically) or held so that x, y "
+          "translation and rotation are all stopped");
   }
 }
 
@@ -405,7 +411,8 @@ void BeamMechanics::change_state(int beam, BeamState to) {
 
 void BeamMechanics::soften_beam(int beam, double stiffness_factor) {
   if (beam < 0 || beam >= lattice_.n_beams())
-    throw hm::InputError("beam = " + std::to_string(beam) + ", allowed: 0 <= beam < " + std::to_string(lattice_.n_beams()));
+    throw hm::InputError("beam = " + std::to_string(beam) + ", allowed: 0 <= beam < " +
+                         std::to_string(lattice_.n_beams()));
   if (states_[static_cast<std::size_t>(beam)] != BeamState::intact)
     throw hm::InputError("beam " + std::to_string(beam) + " is broken, allowed: an intact beam");
   const double now = softening_[static_cast<std::size_t>(beam)];
@@ -444,7 +451,8 @@ double BeamMechanics::elongation(int beam) const { return normal_elongation(latt
 
 BeamState BeamMechanics::break_beam(int beam) {
   if (beam < 0 || beam >= lattice_.n_beams())
-    throw hm::InputError("beam = " + std::to_string(beam) + ", allowed: 0 <= beam < " + std::to_string(lattice_.n_beams()));
+    throw hm::InputError("beam = " + std::to_string(beam) + ", allowed: 0 <= beam < " +
+                         std::to_string(lattice_.n_beams()));
   if (states_[static_cast<std::size_t>(beam)] != BeamState::intact) return states_[static_cast<std::size_t>(beam)];
   const auto [i, j] = lattice_.beams[static_cast<std::size_t>(beam)];
   change_state(beam, contact_state(BeamState::intact, elongation(beam), 0.0));
@@ -460,7 +468,8 @@ bool BeamMechanics::connected_part(int start, int target, std::vector<char>& see
   seen[static_cast<std::size_t>(start)] = 1;
   for (std::size_t k = 0; k < out.size(); ++k) {
     const int p = out[k];
-    for (int a = adjacency_start_[static_cast<std::size_t>(p)]; a < adjacency_start_[static_cast<std::size_t>(p) + 1]; ++a) {
+    for (int a = adjacency_start_[static_cast<std::size_t>(p)]; a < adjacency_start_[static_cast<std::size_t>(p) + 1];
+         ++a) {
       const int e = adjacency_beam_[static_cast<std::size_t>(a)];
       // A broken beam still connects through its normal spring (the coupling's Eq. 20): the part
       // is then held by the fluid, not loose.
@@ -486,7 +495,9 @@ bool BeamMechanics::is_anchored(const std::vector<int>& part) const {
     for (int k = 0; k < 3; ++k) {
       if (!held_[static_cast<std::size_t>(dof_index(p, k))]) continue;
       const Eigen::Vector2d r = lattice_.points.col(p) - c;
-      const Eigen::Vector3d row = k == 0 ? Eigen::Vector3d(1, 0, -r.y()) : k == 1 ? Eigen::Vector3d(0, 1, r.x()) : Eigen::Vector3d(0, 0, 1);
+      const Eigen::Vector3d row = k == 0   ? Eigen::Vector3d(1, 0, -r.y())
+                                  : k == 1 ? Eigen::Vector3d(0, 1, r.x())
+                                           : Eigen::Vector3d(0, 0, 1);
       M += row * row.transpose();
     }
   const Eigen::Vector3d ev = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(M).eigenvalues();
@@ -505,9 +516,11 @@ void BeamMechanics::freeze_part(const std::vector<int>& part) {
     }
     detached_[static_cast<std::size_t>(p)] = true;
     ++n_detached_;
-    for (int a = adjacency_start_[static_cast<std::size_t>(p)]; a < adjacency_start_[static_cast<std::size_t>(p) + 1]; ++a) {
+    for (int a = adjacency_start_[static_cast<std::size_t>(p)]; a < adjacency_start_[static_cast<std::size_t>(p) + 1];
+         ++a) {
       const int e = adjacency_beam_[static_cast<std::size_t>(a)];
-      if (states_[static_cast<std::size_t>(e)] == BeamState::contact) states_[static_cast<std::size_t>(e)] = BeamState::open;
+      if (states_[static_cast<std::size_t>(e)] == BeamState::contact)
+        states_[static_cast<std::size_t>(e)] = BeamState::open;
     }
   }
 }
@@ -553,8 +566,10 @@ void BeamMechanics::check_detachment(int i, int j) {
 }
 
 bool BeamMechanics::has_intact_beam(int p) const {
-  for (int a = adjacency_start_[static_cast<std::size_t>(p)]; a < adjacency_start_[static_cast<std::size_t>(p) + 1]; ++a)
-    if (states_[static_cast<std::size_t>(adjacency_beam_[static_cast<std::size_t>(a)])] == BeamState::intact) return true;
+  for (int a = adjacency_start_[static_cast<std::size_t>(p)]; a < adjacency_start_[static_cast<std::size_t>(p) + 1];
+       ++a)
+    if (states_[static_cast<std::size_t>(adjacency_beam_[static_cast<std::size_t>(a)])] == BeamState::intact)
+      return true;
   return false;
 }
 
@@ -573,7 +588,8 @@ void BeamMechanics::move_pin() {
     label[static_cast<std::size_t>(s)] = s;
     for (std::size_t k = 0; k < queue.size(); ++k) {
       const int p = queue[k];
-      for (int a = adjacency_start_[static_cast<std::size_t>(p)]; a < adjacency_start_[static_cast<std::size_t>(p) + 1]; ++a) {
+      for (int a = adjacency_start_[static_cast<std::size_t>(p)]; a < adjacency_start_[static_cast<std::size_t>(p) + 1];
+           ++a) {
         const int e = adjacency_beam_[static_cast<std::size_t>(a)];
         if (states_[static_cast<std::size_t>(e)] != BeamState::intact) continue;
         const auto& b = lattice_.beams[static_cast<std::size_t>(e)];
@@ -596,8 +612,10 @@ void BeamMechanics::move_pin() {
       if (label[static_cast<std::size_t>(p)] != body) continue;
       if (all_intact) {
         bool intact = true;
-        for (int a = adjacency_start_[static_cast<std::size_t>(p)]; a < adjacency_start_[static_cast<std::size_t>(p) + 1]; ++a)
-          intact = intact && states_[static_cast<std::size_t>(adjacency_beam_[static_cast<std::size_t>(a)])] == BeamState::intact;
+        for (int a = adjacency_start_[static_cast<std::size_t>(p)];
+             a < adjacency_start_[static_cast<std::size_t>(p) + 1]; ++a)
+          intact = intact &&
+                   states_[static_cast<std::size_t>(adjacency_beam_[static_cast<std::size_t>(a)])] == BeamState::intact;
         if (!intact) continue;
       }
       const double d2 = (lattice_.points.col(p) - c).squaredNorm();
@@ -678,7 +696,8 @@ MechanicsSummary BeamMechanics::solve(bool equilibrium_check) {
     ++summary.contact_iterations;
     summary.info = solver_->info();
     summary.solver_residual = solver_->report().relative_residual;
-    if (summary.info == Eigen::Success && !rank_one_.correct(*solver_, free_dofs_, &held_value_, x)) summary.info = solver_->info();
+    if (summary.info == Eigen::Success && !rank_one_.correct(*solver_, free_dofs_, &held_value_, x))
+      summary.info = solver_->info();
     if (summary.info != Eigen::Success) {
       summary.message = "linear solver: " + solver_->report().message;
       break;
@@ -697,11 +716,13 @@ MechanicsSummary BeamMechanics::solve(bool equilibrium_check) {
   if (summary.info == Eigen::Success && !summary.contact_converged)
     summary.message = "contact set not stable after " + std::to_string(options_.max_contact_iterations) +
                       " iterations (max_contact_iterations); displacement of the last iterate";
-  for (int e : broken_) (states_[static_cast<std::size_t>(e)] == BeamState::contact ? summary.n_contacts : summary.n_open)++;
+  for (int e : broken_)
+    (states_[static_cast<std::size_t>(e)] == BeamState::contact ? summary.n_contacts : summary.n_open)++;
 
   remove_rigid_motion();
   if (summary.info == Eigen::Success)
-    summary.equilibrium_residual = equilibrium_check ? equilibrium_residual() : std::numeric_limits<double>::quiet_NaN();
+    summary.equilibrium_residual =
+        equilibrium_check ? equilibrium_residual() : std::numeric_limits<double>::quiet_NaN();
   summary.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return summary;
 }
@@ -723,14 +744,15 @@ std::vector<BeamMechanics::ContactSwitch> BeamMechanics::contact_switches(double
     const auto [i, j] = lattice_.beams[k];
     if (detached_[static_cast<std::size_t>(i)] || detached_[static_cast<std::size_t>(j)]) continue;
     const double stretch = elongation(e);
-    if ((!closed_[k] && stretch < -tol) || (closed_[k] && stretch > tol)) switches.push_back({e, true, std::abs(stretch)});
+    if ((!closed_[k] && stretch < -tol) || (closed_[k] && stretch > tol))
+      switches.push_back({e, true, std::abs(stretch)});
   }
   // All at once settles in a few iterations, but can cycle (MechanicsOptions::contact_switches_at_once);
   // from then on only the most violated beam switches, one per solve.
   if (iteration >= options_.contact_switches_at_once && switches.size() > 1)
-    switches = {*std::max_element(switches.begin(), switches.end(), [](const ContactSwitch& first, const ContactSwitch& second) {
-      return first.violation < second.violation;
-    })};
+    switches = {*std::max_element(
+        switches.begin(), switches.end(),
+        [](const ContactSwitch& first, const ContactSwitch& second) { return first.violation < second.violation; })};
   return switches;
 }
 
@@ -754,7 +776,8 @@ void BeamMechanics::remove_rigid_motion() {
   for (int p = 0; p < lattice_.n_particles(); ++p)
     if (!detached_[static_cast<std::size_t>(p)]) attached.push_back(p);
   const auto fit = rigid_fit(lattice_, raw_, attached);
-  for (int p = 0; p < lattice_.n_particles(); ++p) displacement_.segment<3>(dof_index(p, 0)) -= rigid_motion(lattice_, fit, p);
+  for (int p = 0; p < lattice_.n_particles(); ++p)
+    displacement_.segment<3>(dof_index(p, 0)) -= rigid_motion(lattice_, fit, p);
 }
 
 double BeamMechanics::equilibrium_residual() const {
@@ -772,7 +795,8 @@ std::vector<BeamForce> BeamMechanics::beam_forces() const {
 }
 
 void BeamMechanics::beam_forces(std::vector<BeamForce>& forces) const {
-  fill_connection_forces(lattice_, [this](int e) { return beam_parameters(e); }, states_, raw_, forces);
+  fill_connection_forces(
+      lattice_, [this](int e) { return beam_parameters(e); }, states_, raw_, forces);
 }
 
 Eigen::VectorXd BeamMechanics::reactions() const {
@@ -781,7 +805,8 @@ Eigen::VectorXd BeamMechanics::reactions() const {
     const BeamState s = states_[static_cast<std::size_t>(e)];
     if (s == BeamState::open) continue;
     const auto d = beam_dofs(lattice_, e);
-    const Vector6d f = BeamOperator(lattice_, e, beam_parameters(e), s).internal_force(element_displacements(lattice_, e, raw_));
+    const Vector6d f =
+        BeamOperator(lattice_, e, beam_parameters(e), s).internal_force(element_displacements(lattice_, e, raw_));
     for (int a = 0; a < 6; ++a) r[d[static_cast<std::size_t>(a)]] += f[a];
   }
   for (int e = 0; e < springs_.size(); ++e)
@@ -819,8 +844,8 @@ namespace {
 
 // The numbering of the free dofs is a function of the held ones (setup_system).
 template <class Check>
-void check_free_numbering(const std::vector<bool>& held, const std::vector<int>& free_index, const std::vector<int>& free_dofs,
-                          const Check& check) {
+void check_free_numbering(const std::vector<bool>& held, const std::vector<int>& free_index,
+                          const std::vector<int>& free_dofs, const Check& check) {
   check(free_index.size() == held.size(), "mechanics.free_index");
   for (std::size_t dof = 0, free = 0; dof < held.size(); ++dof) {
     check(free_index[dof] == (held[dof] ? -1 : static_cast<int>(free)), "mechanics.free_index");
@@ -829,7 +854,8 @@ void check_free_numbering(const std::vector<bool>& held, const std::vector<int>&
       ++free;
     }
   }
-  check(free_dofs.size() == static_cast<std::size_t>(std::count(held.begin(), held.end(), false)), "mechanics.free_dofs");
+  check(free_dofs.size() == static_cast<std::size_t>(std::count(held.begin(), held.end(), false)),
+        "mechanics.free_dofs");
 }
 
 // The broken beams, each once, are exactly those not intact.
@@ -855,7 +881,8 @@ void BeamMechanics::restore_state(core::StateReader& r) {
   // Every count and index is checked against this lattice before it is used: a damaged checkpoint
   // whose checksum still matches must be refused, not followed out of an array.
   const auto check = [&](bool ok, const char* tag) {
-    if (!ok) throw InputError(r.source() + ": at '" + tag + "': not a state of this lattice (damaged or of another case)");
+    if (!ok)
+      throw InputError(r.source() + ": at '" + tag + "': not a state of this lattice (damaged or of another case)");
   };
   const auto sized = [&](const Eigen::VectorXd& v, std::size_t n) { return static_cast<std::size_t>(v.size()) == n; };
   std::string states;

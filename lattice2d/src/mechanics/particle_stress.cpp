@@ -26,7 +26,8 @@ BeamForces compute_beam_forces(const Lattice& lattice, const BeamParameters& par
   const int n_beams = lattice.n_beams();
   BeamForces out{Eigen::Matrix2Xd::Zero(2, n_beams), Eigen::Matrix2Xd::Zero(2, n_beams)};
   for (int e = 0; e < n_beams; ++e) {
-    const BeamForce f = beam_force(lattice, e, beam_parameters_for(lattice, parameters, e), state_of(states, e), displacement);
+    const BeamForce f =
+        beam_force(lattice, e, beam_parameters_for(lattice, parameters, e), state_of(states, e), displacement);
     out.force.col(e) = f.force_on_i;
     out.moment.col(e) << f.moment_i, f.moment_j;
   }
@@ -71,15 +72,17 @@ void virial_stress(const Lattice& lattice, const DualGraph& dual, const ForceOf&
 ParticleStress compute_particle_stress(const Lattice& lattice, const DualGraph& dual, const BeamForces& forces) {
   assert(forces.force.cols() == lattice.n_beams() && "forces of another lattice");
   ParticleStress out;
-  virial_stress(lattice, dual, [&](int e) { return forces.force.col(e); }, out);
+  virial_stress(
+      lattice, dual, [&](int e) { return forces.force.col(e); }, out);
   return out;
 }
 
 void compute_particle_stress(const Lattice& lattice, const DualGraph& dual, const std::vector<BeamForce>& forces,
                              ParticleStress& out) {
   assert(static_cast<int>(forces.size()) == lattice.n_beams() && "forces of another lattice");
-  virial_stress(lattice, dual, [&](int e) -> const Eigen::Vector2d& { return forces[static_cast<std::size_t>(e)].force_on_i; },
-                out);
+  virial_stress(
+      lattice, dual, [&](int e) -> const Eigen::Vector2d& { return forces[static_cast<std::size_t>(e)].force_on_i; },
+      out);
 }
 
 void CrackTipOptions::validate() const { hm::core::require_positive(material_length, "material_length"); }
@@ -108,8 +111,7 @@ BeamStress compute_beam_stress(const Lattice& lattice, const ParticleStress& par
   if (options.enabled) {
     const std::vector<bool> tip = find_crack_tip_beams(lattice, states);
     for (int e = 0; e < n_beams; ++e)
-      if (tip[static_cast<std::size_t>(e)])
-        out.crack_tip_factor[e] = options.factor(lattice.length[e]);
+      if (tip[static_cast<std::size_t>(e)]) out.crack_tip_factor[e] = options.factor(lattice.length[e]);
   }
   for (int e = 0; e < n_beams; ++e) {
     out.stress.col(e) = beam_stress(lattice, particle_stress, e, out.crack_tip_factor[e]);
@@ -168,8 +170,10 @@ AffineStiffness affine_effective_stiffness(const Lattice& lattice, const BeamPar
   out.n_particles_used = static_cast<int>(chosen.size());
   for (int k = 0; k < 3; ++k) {
     Eigen::Matrix2d eps = Eigen::Matrix2d::Zero();  // unit Voigt strain state k (engineering shear)
-    if (k < 2) eps(k, k) = 1.0;
-    else eps(0, 1) = eps(1, 0) = 0.5;
+    if (k < 2)
+      eps(k, k) = 1.0;
+    else
+      eps(0, 1) = eps(1, 0) = 0.5;
     Eigen::VectorXd u = Eigen::VectorXd::Zero(3 * lattice.n_particles());
     for (int i = 0; i < lattice.n_particles(); ++i) u.segment<2>(dof_index(i, 0)) = eps * lattice.points.col(i);
     const ParticleStress stress = compute_particle_stress(lattice, dual, compute_beam_forces(lattice, parameters, u));

@@ -50,8 +50,8 @@ double coulomb_stress(double sigma_1, double sigma_3, double friction);
 /// Failure mode of a stress state against T_u and C_u; `none` if neither criterion is met.
 enum class FailureMode { none, tensile, shear };
 constexpr auto enum_names(FailureMode) {
-  return core::enum_table<FailureMode>({
-      {FailureMode::none, "none"}, {FailureMode::tensile, "tensile"}, {FailureMode::shear, "shear"}});
+  return core::enum_table<FailureMode>(
+      {{FailureMode::none, "none"}, {FailureMode::tensile, "tensile"}, {FailureMode::shear, "shear"}});
 }
 
 /// Which criterion a stress state exceeds, and by how much relative to its strength
@@ -60,7 +60,7 @@ struct FailureCheck {
   FailureMode mode;
   double ratio;  ///< >= 1 means failure
 };
-FailureCheck check_failure(double sigma_1, double sigma_3, double tensile_strength,
-                           double compressive_strength, double friction);
+FailureCheck check_failure(double sigma_1, double sigma_3, double tensile_strength, double compressive_strength,
+                           double friction);
 
 }  // namespace hm::analytic

@@ -7,20 +7,20 @@ namespace hm::analytic {
 
 /// Physical inputs (Table 1). SI units; every field is suffixed _si where it carries a unit.
 struct PhysicalParameters {
-  double E_si = 1e10;        ///< E, Young modulus [Pa] > 0
-  double nu = 0.25;          ///< nu, Poisson ratio, 0 < nu < 0.5
-  double k_si = 1e-14;       ///< k, permeability [m^2] > 0
-  double k_f_si = 1e-14;     ///< k_f, permeability in fractures [m^2] > 0
-  double mu_si = 1e-3;       ///< mu, fluid viscosity [Pa s] > 0
-  double q_si = 1e-3;        ///< q, injection rate per unit axial length [m^2/s] >= 0
-  double R_si = 1.0;         ///< R, domain outer radius [m] > 0
-  double R_i_si = 0.138;     ///< R_i, borehole radius [m], 0 <= R_i < R
-  double porosity = 1e-3;    ///< Phi, porosity, 0 < Phi < 1 and Phi <= b
-  double K_w_si = 2.2e9;     ///< K_w, fluid bulk modulus [Pa] > 0
-  double b = 0.5;            ///< b, Biot coefficient, 0 <= b <= 1
-  double T_u_si = 2e6;       ///< T_u, uniaxial tensile strength [Pa] > 0
-  double C_u_si = 3.33e7;    ///< C_u, uniaxial compressive strength [Pa] > 0
-  double mu_i = 0.9;         ///< mu_i, internal friction coefficient >= 0
+  double E_si = 1e10;      ///< E, Young modulus [Pa] > 0
+  double nu = 0.25;        ///< nu, Poisson ratio, 0 < nu < 0.5
+  double k_si = 1e-14;     ///< k, permeability [m^2] > 0
+  double k_f_si = 1e-14;   ///< k_f, permeability in fractures [m^2] > 0
+  double mu_si = 1e-3;     ///< mu, fluid viscosity [Pa s] > 0
+  double q_si = 1e-3;      ///< q, injection rate per unit axial length [m^2/s] >= 0
+  double R_si = 1.0;       ///< R, domain outer radius [m] > 0
+  double R_i_si = 0.138;   ///< R_i, borehole radius [m], 0 <= R_i < R
+  double porosity = 1e-3;  ///< Phi, porosity, 0 < Phi < 1 and Phi <= b
+  double K_w_si = 2.2e9;   ///< K_w, fluid bulk modulus [Pa] > 0
+  double b = 0.5;          ///< b, Biot coefficient, 0 <= b <= 1
+  double T_u_si = 2e6;     ///< T_u, uniaxial tensile strength [Pa] > 0
+  double C_u_si = 3.33e7;  ///< C_u, uniaxial compressive strength [Pa] > 0
+  double mu_i = 0.9;       ///< mu_i, internal friction coefficient >= 0
 
   /// Throws hm::InputError "field = value, allowed: rule".
   void validate() const;
@@ -61,8 +61,7 @@ struct DimensionlessParameters {
 
 /// The paper's borehole case (Table 1, Section 3.2): nu = 0.25, R_i = 0.138, E/M by Eq. 22 with
 /// Table 1's porosity, K_w and E at this b, strengths and friction of Table 1.
-DimensionlessParameters table1_borehole(double b, double Q = 0.01,
-                                        VolStrain vol_strain = VolStrain::plane_strain);
+DimensionlessParameters table1_borehole(double b, double Q = 0.01, VolStrain vol_strain = VolStrain::plane_strain);
 
 /// The scales that undo the dimensionless form: x = x* R, sigma = sigma* E, t = t* t_s.
 struct Scales {

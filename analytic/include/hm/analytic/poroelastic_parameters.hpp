@@ -17,8 +17,8 @@ namespace hm::analytic {
 /// appendix_a:   eps_v = (eps_r + eps_theta)/3, as printed in the paper's Eq. A5 (see docs/errata.md).
 enum class VolStrain { plane_strain, appendix_a };
 constexpr auto enum_names(VolStrain) {
-  return core::enum_table<VolStrain>({
-      {VolStrain::plane_strain, "plane-strain"}, {VolStrain::appendix_a, "appendix-a"}});
+  return core::enum_table<VolStrain>(
+      {{VolStrain::plane_strain, "plane-strain"}, {VolStrain::appendix_a, "appendix-a"}});
 }
 
 /// Factor multiplying (eps_r + eps_theta) in the fluid equation: 1 or 1/3.

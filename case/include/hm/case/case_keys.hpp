@@ -17,8 +17,8 @@
 /// library's validate() where the struct has one (the table's `check`), by the entry where the
 /// rule is about the file (an integer's range, an enum's names).
 #include <functional>
-#include <type_traits>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -31,13 +31,13 @@ namespace hm::cases {
 template <class Case>
 struct CaseKey {
   std::string name;
-  std::string type;          ///< "real", "integer", "boolean", "string", "list of reals"
-  std::string default_text;  ///< the default as the reference states it; empty: the value of Case{}
-  std::string allowed;       ///< the rule
-  std::string help;          ///< what it means, one line
-  std::function<void(CaseTable&, Case&)> read;      ///< reads the key, or sets its default
+  std::string type;                             ///< "real", "integer", "boolean", "string", "list of reals"
+  std::string default_text;                     ///< the default as the reference states it; empty: the value of Case{}
+  std::string allowed;                          ///< the rule
+  std::string help;                             ///< what it means, one line
+  std::function<void(CaseTable&, Case&)> read;  ///< reads the key, or sets its default
   std::function<std::string(const Case&)> to_toml;  ///< the resolved value as TOML
-  bool required = false;  ///< no default: a case without the key is an error
+  bool required = false;                            ///< no default: a case without the key is an error
 };
 
 /// One [table] of a case file: its keys in order, and what is checked once they are read.
@@ -107,8 +107,7 @@ class CaseKeys {
 
   /// An integer in [lo, hi]; outside, "<name> = v, allowed: <allowed>".
   template <class Field>
-  CaseKeys& integer(std::string name, Field field, long long lo, long long hi, std::string allowed,
-                    std::string help) {
+  CaseKeys& integer(std::string name, Field field, long long lo, long long hi, std::string allowed, std::string help) {
     return key({name, "integer", "", allowed, std::move(help),
                 [name, field, lo, hi, allowed](CaseTable& t, Case& c) {
                   using Int = std::remove_reference_t<decltype(field(c))>;
@@ -142,14 +141,13 @@ class CaseKeys {
                    DefaultOf<Field> default_of = {}, std::string default_text = "") {
     std::string allowed;
     for (const Enum& v : values) allowed += (allowed.empty() ? "" : ", ") + toml_quoted(core::name_of(v));
-    return key({name, "string", std::move(default_text), "one of " + allowed, std::move(help),
-                [name, field, values, default_of](CaseTable& t, Case& c) {
-                  const Enum fallback = default_of ? default_of(c) : field(c);
-                  located(t, [&] {
-                    field(c) = core::from_name(t.get_string(name, core::name_of(fallback)), name, values);
-                  });
-                },
-                [field](const Case& c) { return toml_quoted(core::name_of(field(c))); }});
+    return key(
+        {name, "string", std::move(default_text), "one of " + allowed, std::move(help),
+         [name, field, values, default_of](CaseTable& t, Case& c) {
+           const Enum fallback = default_of ? default_of(c) : field(c);
+           located(t, [&] { field(c) = core::from_name(t.get_string(name, core::name_of(fallback)), name, values); });
+         },
+         [field](const Case& c) { return toml_quoted(core::name_of(field(c))); }});
   }
   /// Any value of the enum.
   template <class Field>
@@ -209,9 +207,10 @@ class CaseKeys {
       out += "### [" + spec.name + "]\n\n| key | type | default | allowed | meaning |\n|---|---|---|---|---|\n";
       for (const CaseKey<Case>& k : spec.keys) {
         // Appended piece by piece: g++ 12 warns (-Wrestrict, falsely) on a literal + string chain here.
-        const std::string default_cell = k.required             ? std::string("required")
-                                         : k.default_text.empty() ? std::string(1, '`').append(k.to_toml(defaults)).append(1, '`')
-                                                                  : k.default_text;
+        const std::string default_cell = k.required ? std::string("required")
+                                         : k.default_text.empty()
+                                             ? std::string(1, '`').append(k.to_toml(defaults)).append(1, '`')
+                                             : k.default_text;
         out.append("| `").append(k.name).append("` | ").append(k.type).append(" | ").append(default_cell);
         out.append(" | ").append(k.allowed).append(" | ").append(k.help).append(" |\n");
       }

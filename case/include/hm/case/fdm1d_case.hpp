@@ -5,9 +5,9 @@
 #include <filesystem>
 #include <string>
 
-#include "hm/fdm1d/fdm1d.hpp"
 #include "hm/case/case_file.hpp"
 #include "hm/case/case_keys.hpp"
+#include "hm/fdm1d/fdm1d.hpp"
 
 namespace hm::cases {
 

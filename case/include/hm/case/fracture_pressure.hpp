@@ -22,9 +22,9 @@ namespace hm::cases {
 struct FracturePressure {
   static constexpr double none = std::numeric_limits<double>::quiet_NaN();
   double mean_all = none, mean_away = none, min_away = none;  ///< NaN without fracture triangles
-  int n_all = 0, n_away = 0;                                    ///< fracture triangles, all and away from the wall
-  double negative_area_fraction = none;  ///< of the `away` triangles' area, the part with p < 0
-  double p_min = none, p_max = none;     ///< over every triangle
+  int n_all = 0, n_away = 0;                                  ///< fracture triangles, all and away from the wall
+  double negative_area_fraction = none;                       ///< of the `away` triangles' area, the part with p < 0
+  double p_min = none, p_max = none;                          ///< over every triangle
   /// Volume per unit time (as Q): the sum of the wall segments' flow into the borehole where it is
   /// positive (0 when all the wall takes fluid from the borehole; NaN without a borehole), the sum
   /// of the outer segments' flow into the domain where it is positive, and its part through broken beams.

@@ -9,15 +9,15 @@
 #include <vector>
 
 #include "hm/analytic/insitu_annulus.hpp"
-#include "hm/lattice2d/mechanics/beam_stiffness.hpp"
+#include "hm/case/case_file.hpp"
+#include "hm/case/case_keys.hpp"
 #include "hm/lattice2d/coupled/coupled_model.hpp"
 #include "hm/lattice2d/flow/flow_network.hpp"
 #include "hm/lattice2d/fracture/fracture_statistics.hpp"
 #include "hm/lattice2d/fracture/notch.hpp"
 #include "hm/lattice2d/geometry/lattice.hpp"
+#include "hm/lattice2d/mechanics/beam_stiffness.hpp"
 #include "hm/lattice2d/mechanics/mechanics.hpp"
-#include "hm/case/case_file.hpp"
-#include "hm/case/case_keys.hpp"
 
 namespace hm::cases {
 
@@ -51,14 +51,14 @@ struct RunCase {
   hm::lattice2d::LatticeSpec lattice;
   /// Which calibrated beams (calibrated_beam_parameters(stiffness_scaling)); default the toolkit's.
   hm::lattice2d::StiffnessScaling stiffness_scaling = hm::lattice2d::StiffnessScaling::voronoi_facet;
-  hm::lattice2d::BoundaryConditions boundary;   ///< only `outer` is read from the case
-  InSituState insitu;                           ///< [mechanics] S_H, S_h, theta_H, p0
-  hm::lattice2d::MechanicsOptions mechanics;    ///< only `solver` is read from the case
+  hm::lattice2d::BoundaryConditions boundary;  ///< only `outer` is read from the case
+  InSituState insitu;                          ///< [mechanics] S_H, S_h, theta_H, p0
+  hm::lattice2d::MechanicsOptions mechanics;   ///< only `solver` is read from the case
   /// [flow]'s options (borehole_deformation read with the default of its borehole_storage); the flow's
   /// physics comes from [physics] (flow_parameters()).
   hm::lattice2d::FlowOptions flow;
   hm::lattice2d::CouplingOptions coupling;
-  hm::lattice2d::TimeStepping stepping;         ///< its output_times are [output] times
+  hm::lattice2d::TimeStepping stepping;  ///< its output_times are [output] times
   bool fracture_enabled = false;
   /// End the run with the accepted step that breaks the first beam: Section 3.5's breakdown pressure
   /// is known then, and the fracture after it is not needed (Fig. 18). That step's state is written

@@ -13,7 +13,18 @@ namespace hm::cases {
 
 struct RunCase;
 
-enum class RunFileId { series, radial, breaks, teeth, breakdown, fractures, fracture_summary, fracture_pressure, vtk, config };
+enum class RunFileId {
+  series,
+  radial,
+  breaks,
+  teeth,
+  breakdown,
+  fractures,
+  fracture_summary,
+  fracture_pressure,
+  vtk,
+  config
+};
 
 /// Which runs write a file.
 enum class RunFileWhen { always, fracture, sawtooth, vtk };

@@ -38,22 +38,22 @@
 #include <memory>
 #include <vector>
 
+#include "hm/case/run_case.hpp"
+#include "hm/case/run_files.hpp"
+#include "hm/core/csv_writer.hpp"
+#include "hm/core/state_archive.hpp"
 #include "hm/lattice2d/coupled/coupled_model.hpp"
 #include "hm/lattice2d/fracture/fracture_statistics.hpp"
 #include "hm/lattice2d/io/vtk_writer.hpp"
-#include "hm/core/csv_writer.hpp"
-#include "hm/core/state_archive.hpp"
-#include "hm/case/run_case.hpp"
-#include "hm/case/run_files.hpp"
 
 namespace hm::cases {
 
 /// Section 3.5's breakdown of a run so far: the first break and the peak borehole pressure p_h.
 struct Breakdown {
   static constexpr double none = std::numeric_limits<double>::quiet_NaN();
-  double t_first = none;   ///< time of the step that broke the first beam (NaN while nothing broke)
-  double p_before = none;  ///< p_h^n of that step
-  double p_first = none;   ///< its converged p_h^{n+1}: the breakdown pressure
+  double t_first = none;                  ///< time of the step that broke the first beam (NaN while nothing broke)
+  double p_before = none;                 ///< p_h^n of that step
+  double p_first = none;                  ///< its converged p_h^{n+1}: the breakdown pressure
   double x_first = none, y_first = none;  ///< midpoint of the first broken beam
   double t_peak = 0.0, p_peak = -std::numeric_limits<double>::infinity();  ///< largest p_h so far
   int n_broken = 0;
@@ -92,11 +92,11 @@ class RunRecorder {
   Breakdown breakdown_;
   double last_p_h_ = 0.0;
   std::vector<hm::lattice2d::BreakEvent> breaks_;
-  bool sawtooth_ = false;                           // law = "sawtooth": teeth.csv
-  std::vector<hm::lattice2d::ToothEvent> teeth_;    // the model's tooth log at the last record()
+  bool sawtooth_ = false;                         // law = "sawtooth": teeth.csv
+  std::vector<hm::lattice2d::ToothEvent> teeth_;  // the model's tooth log at the last record()
   std::vector<hm::lattice2d::FractureSnapshot> fractures_;
   std::vector<std::size_t> fracture_log_sizes_;  // break-log length at each snapshot
-  std::map<RunFileId, std::ofstream> streams_;  // the streamed files, open while the run goes
+  std::map<RunFileId, std::ofstream> streams_;   // the streamed files, open while the run goes
   std::unique_ptr<core::CsvWriter> series_, radial_, pressure_;
   std::unique_ptr<hm::lattice2d::VtkSeries> vtk_;
 };

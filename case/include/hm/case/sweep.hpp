@@ -22,8 +22,8 @@ namespace hm::cases {
 
 /// One swept key.
 struct SweepAxis {
-  std::string key;         ///< "table.key", as in [sweep]
-  std::string short_name;  ///< its part in combination names: `key` after the dot, unless two axes share it
+  std::string key;                  ///< "table.key", as in [sweep]
+  std::string short_name;           ///< its part in combination names: `key` after the dot, unless two axes share it
   std::vector<std::string> values;  ///< each value as it appears in names and index.csv
 };
 
@@ -35,12 +35,12 @@ struct SweepCombination {
 
 /// What expand_sweep() wrote.
 struct SweepExpansion {
-  std::string model;    ///< "lattice2d" or "fdm1d"
-  std::string command;  ///< the hmlattice command that runs each case: "run" or "fdm1d"
-  std::vector<SweepAxis> axes;                  ///< in the order of the [sweep] table in the file
-  std::vector<SweepCombination> combinations;   ///< the first axis varies slowest
-  long long n_planned = 0;                        ///< the product of the lists' sizes
-  bool stopped = false;                           ///< `stop` ended it before the last combination
+  std::string model;                           ///< "lattice2d" or "fdm1d"
+  std::string command;                         ///< the hmlattice command that runs each case: "run" or "fdm1d"
+  std::vector<SweepAxis> axes;                 ///< in the order of the [sweep] table in the file
+  std::vector<SweepCombination> combinations;  ///< the first axis varies slowest
+  long long n_planned = 0;                     ///< the product of the lists' sizes
+  bool stopped = false;                        ///< `stop` ended it before the last combination
 };
 
 /// The largest sweep expand_sweep() writes unless told otherwise (`--max-combinations`).

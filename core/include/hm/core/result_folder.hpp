@@ -101,10 +101,10 @@ class ResultFolder {
   std::filesystem::path shown_, target_, staging_;
   std::string option_, command_line_;
   bool overwrite_;
-  bool resumed_ = false;                       // continues an earlier run's folder in place
-  std::string previous_marker_;                // its marker before, restored if not committed
-  bool done_ = false;                          // committed, or kept after a failed commit
-  std::vector<std::filesystem::path> made_;    // parent folders this object created, deepest last
+  bool resumed_ = false;                     // continues an earlier run's folder in place
+  std::string previous_marker_;              // its marker before, restored if not committed
+  bool done_ = false;                        // committed, or kept after a failed commit
+  std::vector<std::filesystem::path> made_;  // parent folders this object created, deepest last
 };
 
 }  // namespace hm::core

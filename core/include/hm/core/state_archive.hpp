@@ -27,11 +27,16 @@ namespace detail {
 /// The type code stored with each value.
 template <class T>
 constexpr char state_kind() {
-  if constexpr (std::is_same_v<T, double>) return 'd';
-  else if constexpr (std::is_same_v<T, std::int64_t>) return 'l';
-  else if constexpr (std::is_same_v<T, int>) return 'i';
-  else if constexpr (std::is_same_v<T, char>) return 'c';
-  else static_assert(sizeof(T) == 0, "state archive: double, int, std::int64_t or char elements only");
+  if constexpr (std::is_same_v<T, double>)
+    return 'd';
+  else if constexpr (std::is_same_v<T, std::int64_t>)
+    return 'l';
+  else if constexpr (std::is_same_v<T, int>)
+    return 'i';
+  else if constexpr (std::is_same_v<T, char>)
+    return 'c';
+  else
+    static_assert(sizeof(T) == 0, "state archive: double, int, std::int64_t or char elements only");
 }
 }  // namespace detail
 

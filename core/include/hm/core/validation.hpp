@@ -11,10 +11,10 @@ namespace hm::core {
 std::string format_value(double value);
 
 void require_finite(double value, std::string_view name);
-void require_positive(double value, std::string_view name);      ///< value > 0
-void require_non_negative(double value, std::string_view name);  ///< value >= 0
-void require_open(double value, std::string_view name, double lo, double hi);    ///< lo < value < hi
-void require_closed(double value, std::string_view name, double lo, double hi);  ///< lo <= value <= hi
+void require_positive(double value, std::string_view name);                         ///< value > 0
+void require_non_negative(double value, std::string_view name);                     ///< value >= 0
+void require_open(double value, std::string_view name, double lo, double hi);       ///< lo < value < hi
+void require_closed(double value, std::string_view name, double lo, double hi);     ///< lo <= value <= hi
 void require_half_open(double value, std::string_view name, double lo, double hi);  ///< lo <= value < hi
 /// Integer count at least `minimum`.
 void require_at_least(long long value, std::string_view name, long long minimum);

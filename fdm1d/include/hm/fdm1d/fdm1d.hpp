@@ -90,10 +90,10 @@ struct Fdm1dSummary {
 };
 
 struct Fdm1dResult {
-  std::vector<double> r;                   ///< grid nodes, r[0] = R_i, r[n_r] = 1
-  std::vector<Fdm1dSnapshot> snapshots;    ///< at output_times, then t_end if not among them
-  std::vector<BoreholeSample> borehole;    ///< t = 0, then after every step
-  std::vector<double> probe_radii;         ///< copy of Fdm1dNumerics::probe_radii
+  std::vector<double> r;                     ///< grid nodes, r[0] = R_i, r[n_r] = 1
+  std::vector<Fdm1dSnapshot> snapshots;      ///< at output_times, then t_end if not among them
+  std::vector<BoreholeSample> borehole;      ///< t = 0, then after every step
+  std::vector<double> probe_radii;           ///< copy of Fdm1dNumerics::probe_radii
   std::vector<std::vector<double>> probe_p;  ///< probe_p[k][j]: p at probe j at time borehole[k].t
   PressureMinimum min_pressure;
   Fdm1dSummary summary;
@@ -124,12 +124,12 @@ struct RestState {
 /// Runs the Appendix A model from p = u = 0 at t = 0 to numerics.t_end.
 /// Validates both inputs first (throws hm::InputError, also for R_i = 0). Cost: one banded sparse
 /// solve of 2(n_r + 1) unknowns per step.
-Fdm1dResult run_fdm1d(const hm::analytic::DimensionlessParameters& params,
-                      const Fdm1dNumerics& numerics, const ProgressCallback& progress = {},
-                      const StepObserver& observer = {}, const StopPredicate& stop = {});
+Fdm1dResult run_fdm1d(const hm::analytic::DimensionlessParameters& params, const Fdm1dNumerics& numerics,
+                      const ProgressCallback& progress = {}, const StepObserver& observer = {},
+                      const StopPredicate& stop = {});
 /// The same from the rest state `rest` (its stresses and u_r added to every reported one).
 Fdm1dResult run_fdm1d(const hm::analytic::DimensionlessParameters& params, const Fdm1dNumerics& numerics,
-                      const RestState& rest, const ProgressCallback& progress = {},
-                      const StepObserver& observer = {}, const StopPredicate& stop = {});
+                      const RestState& rest, const ProgressCallback& progress = {}, const StepObserver& observer = {},
+                      const StopPredicate& stop = {});
 
 }  // namespace hm::fdm1d

@@ -32,7 +32,7 @@ struct Fdm1dOdeintResult {
 /// Integrates the Appendix A semi-discretisation from p = u = 0 to numerics.t_end with rosenbrock4.
 /// Uses n_r, t_end, output_times of `numerics` (dt_initial only as the first trial step).
 /// Limits: dense linear algebra, O(n_r^3) setup and per step; n_r <= 2000 (checked).
-Fdm1dOdeintResult run_fdm1d_odeint(const hm::analytic::DimensionlessParameters& params,
-                                   const Fdm1dNumerics& numerics, const OdeintTolerances& tolerances = {});
+Fdm1dOdeintResult run_fdm1d_odeint(const hm::analytic::DimensionlessParameters& params, const Fdm1dNumerics& numerics,
+                                   const OdeintTolerances& tolerances = {});
 
 }  // namespace hm::fdm1d

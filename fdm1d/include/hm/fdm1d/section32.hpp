@@ -20,10 +20,10 @@ double time_to_fraction(const Fdm1dResult& result, double p_h_steady, double fra
 /// How the pressure at one probe goes below zero.
 struct ProbeNegativePressure {
   double r = 0.0;
-  double p_min = 0.0;              ///< smallest p at the probe (0 if never negative)
-  double t_min = 0.0;              ///< when
-  double time_negative = 0.0;      ///< total time with p < 0 (zero crossings interpolated)
-  double last_negative_t = 0.0;    ///< end of the last interval with p < 0 (0 if none)
+  double p_min = 0.0;            ///< smallest p at the probe (0 if never negative)
+  double t_min = 0.0;            ///< when
+  double time_negative = 0.0;    ///< total time with p < 0 (zero crossings interpolated)
+  double last_negative_t = 0.0;  ///< end of the last interval with p < 0 (0 if none)
 };
 
 /// sigma_CC/sigma_1 at the wall. Failure is by shear before tension when C_u/T_u is below it
@@ -32,8 +32,8 @@ struct ProbeNegativePressure {
 double wall_coulomb_ratio(const BoreholeSample& wall);
 
 struct Section32Diagnostics {
-  double p_h_steady = 0.0;  ///< Eq. 23
-  double t_99 = 0.0;        ///< time_to_fraction(0.99); NaN if not reached
+  double p_h_steady = 0.0;       ///< Eq. 23
+  double t_99 = 0.0;             ///< time_to_fraction(0.99); NaN if not reached
   PressureMinimum min_pressure;  ///< over every step and node (copied from the result)
   std::vector<ProbeNegativePressure> probes;
   double wall_ratio_steady = 0.0;  ///< of the analytic steady state (Appendix B, SteadyBorehole)

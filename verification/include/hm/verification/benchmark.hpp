@@ -16,9 +16,7 @@ namespace hm::verification {
 
 /// quick: seconds, runs in CI on every change. paper: paper resolution, runs on request.
 enum class Tier { quick, paper };
-constexpr auto enum_names(Tier) {
-  return core::enum_table<Tier>({{Tier::quick, "quick"}, {Tier::paper, "paper"}});
-}
+constexpr auto enum_names(Tier) { return core::enum_table<Tier>({{Tier::quick, "quick"}, {Tier::paper, "paper"}}); }
 
 /// How a metric's value is judged against its reference and tolerance.
 enum class Comparison {
@@ -32,10 +30,10 @@ enum class Comparison {
 /// (e.g. the paper's own reading of its figures) are reported beside the paper's value but never
 /// fail the run, so nothing is tuned to hit them.
 struct Metric {
-  std::string name;           ///< what is measured, e.g. "max |p - p_B3| / p_h"
-  double value = 0.0;         ///< what the toolkit computed
-  double reference = 0.0;     ///< what it is compared with (analytic, 1D, paper)
-  double tolerance = 0.0;     ///< see Comparison
+  std::string name;        ///< what is measured, e.g. "max |p - p_B3| / p_h"
+  double value = 0.0;      ///< what the toolkit computed
+  double reference = 0.0;  ///< what it is compared with (analytic, 1D, paper)
+  double tolerance = 0.0;  ///< see Comparison
   Comparison comparison = Comparison::abs_error;
   std::string justification;  ///< where the tolerance comes from
   bool gating = true;
@@ -54,8 +52,8 @@ struct Table {
 /// The script is called as: python3 figures/<script> --data <data_dir>/<data_subdir> --out <figure_dir>,
 /// and must write <figure_dir>/<file> (PNG; PDF beside it).
 struct Figure {
-  std::string script;   ///< e.g. "verify_borehole_steady.py"
-  std::string file;     ///< e.g. "verify_borehole_steady.png"
+  std::string script;  ///< e.g. "verify_borehole_steady.py"
+  std::string file;    ///< e.g. "verify_borehole_steady.png"
   std::string caption;
   std::string data_subdir = "";  ///< e.g. a run folder written like `hmlattice fdm1d` writes it
 };

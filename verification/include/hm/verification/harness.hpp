@@ -28,8 +28,8 @@ struct HarnessOptions {
 struct HarnessSummary {
   int n_benchmarks = 0;
   int n_metrics = 0;
-  int n_failed = 0;           ///< gating metrics that failed
-  int n_benchmark_errors = 0; ///< benchmarks that threw
+  int n_failed = 0;            ///< gating metrics that failed
+  int n_benchmark_errors = 0;  ///< benchmarks that threw
   int n_missing_figures = 0;
   std::filesystem::path report;
   bool ok() const { return n_failed == 0 && n_benchmark_errors == 0; }
@@ -55,15 +55,13 @@ RunFolderCheck check_run_folders(const std::vector<const Benchmark*>& selected, 
 /// DIR/<label>.toml (the resolved case, rerunnable with `hmlattice run`) and DIR/index.csv (name,
 /// benchmark; the names a workflow runs into <runs>/<name>/), as a result folder
 /// (hm/core/result_folder.hpp). Returns the number of cases.
-int write_planned_cases(const std::vector<const Benchmark*>& selected, const std::filesystem::path& dir,
-                        bool overwrite, const std::string& command_line);
+int write_planned_cases(const std::vector<const Benchmark*>& selected, const std::filesystem::path& dir, bool overwrite,
+                        const std::string& command_line);
 
 /// Runs the selected benchmarks (progress on `log`), then their figure scripts, then writes
 /// out_dir/report.md and out_dir/metrics.json. The output folder appears (or replaces an earlier
 /// result) only when the run completes, so a crashed run leaves no half-written report; a refused
 /// out_dir throws hm::InputError before any benchmark runs.
-HarnessSummary run_harness(const std::vector<Benchmark>& benchmarks, const HarnessOptions& options,
-                           std::ostream& log);
-
+HarnessSummary run_harness(const std::vector<Benchmark>& benchmarks, const HarnessOptions& options, std::ostream& log);
 
 }  // namespace hm::verification

@@ -15,17 +15,17 @@
 
 #include <Eigen/Core>
 
-#include "hm/lattice2d/mechanics/beam_stiffness.hpp"
+#include "hm/core/enum_names.hpp"
 #include "hm/lattice2d/coupled/coupling.hpp"
 #include "hm/lattice2d/coupled/relaxation.hpp"
-#include "hm/lattice2d/geometry/dual_graph.hpp"
-#include "hm/lattice2d/fracture/failure.hpp"
 #include "hm/lattice2d/flow/flow_network.hpp"
+#include "hm/lattice2d/fracture/failure.hpp"
 #include "hm/lattice2d/fracture/fracture.hpp"
-#include "hm/lattice2d/geometry/lattice.hpp"
-#include "hm/lattice2d/mechanics/mechanics.hpp"
 #include "hm/lattice2d/fracture/strength.hpp"
-#include "hm/core/enum_names.hpp"
+#include "hm/lattice2d/geometry/dual_graph.hpp"
+#include "hm/lattice2d/geometry/lattice.hpp"
+#include "hm/lattice2d/mechanics/beam_stiffness.hpp"
+#include "hm/lattice2d/mechanics/mechanics.hpp"
 
 namespace hm::lattice2d {
 
@@ -35,10 +35,9 @@ enum class CouplingSplit {
   drained,    ///< the mechanical step sees the last pressure only (Psi = 0)
 };
 constexpr auto enum_names(CouplingSplit) {
-  return core::enum_table<CouplingSplit>({
-      {CouplingSplit::undrained, "undrained"}, {CouplingSplit::drained, "drained"}});
+  return core::enum_table<CouplingSplit>(
+      {{CouplingSplit::undrained, "undrained"}, {CouplingSplit::drained, "drained"}});
 }
-
 
 /// When the coupling loop looks for failing beams (with fracture enabled).
 enum class FractureCheck {
@@ -51,8 +50,8 @@ enum class FractureCheck {
   at_convergence,
 };
 constexpr auto enum_names(FractureCheck) {
-  return core::enum_table<FractureCheck>({
-      {FractureCheck::every_pass, "every_pass"}, {FractureCheck::at_convergence, "at_convergence"}});
+  return core::enum_table<FractureCheck>(
+      {{FractureCheck::every_pass, "every_pass"}, {FractureCheck::at_convergence, "at_convergence"}});
 }
 
 /// Where the first pass of a step starts.
@@ -65,8 +64,8 @@ enum class CouplingPredictor {
   linear,
 };
 constexpr auto enum_names(CouplingPredictor) {
-  return core::enum_table<CouplingPredictor>({
-      {CouplingPredictor::previous, "previous"}, {CouplingPredictor::linear, "linear"}});
+  return core::enum_table<CouplingPredictor>(
+      {{CouplingPredictor::previous, "previous"}, {CouplingPredictor::linear, "linear"}});
 }
 
 /// What the flow solve of a pass knows of the cracks' compliance (FlowStabiliser, flow_network.hpp).
@@ -182,19 +181,20 @@ struct TimeStepping {
 
 /// How a step or a run ended.
 enum class CoupledStatus {
-  converged,       ///< both residuals below tolerance
+  converged,             ///< both residuals below tolerance
   accepted_unconverged,  ///< max_iterations hit and accept_unconverged set
-  not_converged,   ///< max_iterations hit: the step was not taken
-  solver_failure,  ///< the mechanics or the flow solve failed: the step was not taken
-  interrupted,     ///< run() stopped: between steps (its stop request) or within one, undone (set_interrupt)
-  overshoot,       ///< its first break was above 1 + overshoot_tolerance: the step was not taken
+  not_converged,         ///< max_iterations hit: the step was not taken
+  solver_failure,        ///< the mechanics or the flow solve failed: the step was not taken
+  interrupted,           ///< run() stopped: between steps (its stop request) or within one, undone (set_interrupt)
+  overshoot,             ///< its first break was above 1 + overshoot_tolerance: the step was not taken
 };
 constexpr auto enum_names(CoupledStatus) {
-  return core::enum_table<CoupledStatus>({
-      {CoupledStatus::converged, "converged"}, {CoupledStatus::accepted_unconverged, "accepted unconverged"},
-      {CoupledStatus::not_converged, "not converged"}, {CoupledStatus::solver_failure, "solver failure"},
-      {CoupledStatus::overshoot, "overshoot"},
-      {CoupledStatus::interrupted, "interrupted"}});
+  return core::enum_table<CoupledStatus>({{CoupledStatus::converged, "converged"},
+                                          {CoupledStatus::accepted_unconverged, "accepted unconverged"},
+                                          {CoupledStatus::not_converged, "not converged"},
+                                          {CoupledStatus::solver_failure, "solver failure"},
+                                          {CoupledStatus::overshoot, "overshoot"},
+                                          {CoupledStatus::interrupted, "interrupted"}});
 }
 
 /// What one coupled time step did (Ceres' Summary in small).
@@ -207,23 +207,23 @@ struct CoupledStepSummary {
   double displacement_residual = 0.0;  ///< max|u^k - u^{k-1}| / max|u^k| at the last pass
   /// The pressure residual after each pass (for the Psi study, Fig. 8).
   std::vector<double> pressure_history;
-  FlowStepSummary flow;                ///< the last flow solve (volumes of this step, balance)
-  int n_breaks = 0;                    ///< beams broken in this step (all passes)
-  int n_teeth = 0;                     ///< saw-tooth law: teeth given way in this step (breaks not included)
-  double first_event_ratio = 0.0;      ///< failure ratio of the step's first break or tooth (0 if none)
-  int n_broken = 0;                    ///< beams broken since t = 0, after this step
-  double seconds = 0.0;             ///< wall time of the step, of which:
-  double mechanics_seconds = 0.0;   ///< BeamMechanics::solve (back-substitutions), also inside break loops
-  double stress_seconds = 0.0;      ///< break loops: beam stresses and failure checks
-  double break_seconds = 0.0;       ///< break loops: BeamMechanics::break_beam (factor downdates)
-  int n_mechanics_solves = 0;       ///< mechanical solves (one per pass plus one per break)
-  int n_contact_changes = 0;        ///< open <-> contact switches of broken beams (each a factor modification)
-  int n_mechanics_factorizations = 0;  ///< full refactorisations of the mechanical factor (after
-                                       ///< max_modifications modifications, or a failed update)
+  FlowStepSummary flow;                 ///< the last flow solve (volumes of this step, balance)
+  int n_breaks = 0;                     ///< beams broken in this step (all passes)
+  int n_teeth = 0;                      ///< saw-tooth law: teeth given way in this step (breaks not included)
+  double first_event_ratio = 0.0;       ///< failure ratio of the step's first break or tooth (0 if none)
+  int n_broken = 0;                     ///< beams broken since t = 0, after this step
+  double seconds = 0.0;                 ///< wall time of the step, of which:
+  double mechanics_seconds = 0.0;       ///< BeamMechanics::solve (back-substitutions), also inside break loops
+  double stress_seconds = 0.0;          ///< break loops: beam stresses and failure checks
+  double break_seconds = 0.0;           ///< break loops: BeamMechanics::break_beam (factor downdates)
+  int n_mechanics_solves = 0;           ///< mechanical solves (one per pass plus one per break)
+  int n_contact_changes = 0;            ///< open <-> contact switches of broken beams (each a factor modification)
+  int n_mechanics_factorizations = 0;   ///< full refactorisations of the mechanical factor (after
+                                        ///< max_modifications modifications, or a failed update)
   int n_mechanics_update_failures = 0;  ///< of which after a failed low-rank update (cholmod_updown)
-  double geometry_seconds = 0.0;    ///< deformed dual graph and FlowNetwork::update_geometry
-  double flow_seconds = 0.0;        ///< FlowNetwork::solve (refactorisation and solve)
-  std::string message;  ///< empty when converged
+  double geometry_seconds = 0.0;        ///< deformed dual graph and FlowNetwork::update_geometry
+  double flow_seconds = 0.0;            ///< FlowNetwork::solve (refactorisation and solve)
+  std::string message;                  ///< empty when converged
   bool is_ok() const { return status == CoupledStatus::converged || status == CoupledStatus::accepted_unconverged; }
 };
 
@@ -238,8 +238,8 @@ struct CoupledRunSummary {
   double max_balance_error = 0.0;
   std::string message;
   /// The accepted steps' time split and counters (CoupledStepSummary's), summed.
-  double step_seconds = 0.0, mechanics_seconds = 0.0, stress_seconds = 0.0, break_seconds = 0.0,
-         geometry_seconds = 0.0, flow_seconds = 0.0;
+  double step_seconds = 0.0, mechanics_seconds = 0.0, stress_seconds = 0.0, break_seconds = 0.0, geometry_seconds = 0.0,
+         flow_seconds = 0.0;
   long long n_mechanics_solves = 0, n_contact_changes = 0, n_mechanics_factorizations = 0,
             n_mechanics_update_failures = 0;
   bool is_ok() const { return status == CoupledStatus::converged || status == CoupledStatus::accepted_unconverged; }
@@ -336,7 +336,8 @@ class CoupledModel {
 
   /// Called after every pass of step() with the pass number (1-based), that pass's flow pressure
   /// (trial, size n_unknowns) and displacement: for studies of the iteration itself (Fig. 8).
-  using PassObserver = std::function<void(int pass, const Eigen::VectorXd& pressure, const Eigen::VectorXd& displacement)>;
+  using PassObserver =
+      std::function<void(int pass, const Eigen::VectorXd& pressure, const Eigen::VectorXd& displacement)>;
   void set_pass_observer(PassObserver observer) { pass_observer_ = std::move(observer); }
   /// Asked between coupling passes and between the break loop's solves (empty: never): when it returns
   /// true, the step in progress is undone (as a failed attempt is) and run() ends as interrupted at

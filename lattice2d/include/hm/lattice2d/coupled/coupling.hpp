@@ -91,8 +91,8 @@ inline double face_pressure_share(double b, double w) { return w == 0.0 ? b : w 
 /// (pressure_forces with b = 0, xi = 1: sum_s p_s dV_s = f . du, tested), so that the flow charges the
 /// crack the volume the mechanics opens. A triangle's area would not be: an opening w of one beam changes the two
 /// triangles' areas by w (h_k + h_l) / 2, 1.5 w d_e on an equilateral lattice.
-Eigen::VectorXd crack_opening_volumes(const Lattice& lattice, const DualGraph& dual, const Eigen::VectorXd& crack_weight,
-                                      const Eigen::VectorXd& u);
+Eigen::VectorXd crack_opening_volumes(const Lattice& lattice, const DualGraph& dual,
+                                      const Eigen::VectorXd& crack_weight, const Eigen::VectorXd& u);
 
 /// The borehole's volume gradient dV_h/du (3 n_particles; zero off the wall): for each wall beam, half
 /// its length times the normal into the solid on each end, the wall traction of pressure_forces per

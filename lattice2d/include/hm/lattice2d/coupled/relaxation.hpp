@@ -17,14 +17,14 @@ namespace hm::lattice2d {
 
 /// How the pressure guess of the next pass is formed from the flow's result.
 enum class CouplingRelaxation {
-  none,    ///< the flow's pressure as it is (the paper's Fig. 5)
-  aitken,  ///< Aitken's dynamic relaxation of the pressure update (same fixed point; our addition)
+  none,      ///< the flow's pressure as it is (the paper's Fig. 5)
+  aitken,    ///< Aitken's dynamic relaxation of the pressure update (same fixed point; our addition)
   anderson,  ///< Anderson acceleration of the pressure update (same fixed point; our addition)
 };
 constexpr auto enum_names(CouplingRelaxation) {
-  return core::enum_table<CouplingRelaxation>({
-      {CouplingRelaxation::none, "none"}, {CouplingRelaxation::aitken, "aitken"},
-      {CouplingRelaxation::anderson, "anderson"}});
+  return core::enum_table<CouplingRelaxation>({{CouplingRelaxation::none, "none"},
+                                               {CouplingRelaxation::aitken, "aitken"},
+                                               {CouplingRelaxation::anderson, "anderson"}});
 }
 
 /// One strategy, with the history it keeps within a time step.

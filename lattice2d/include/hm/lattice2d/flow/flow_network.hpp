@@ -14,10 +14,10 @@
 #include <Eigen/Core>
 
 #include "hm/analytic/physical_parameters.hpp"
-#include "hm/lattice2d/geometry/dual_graph.hpp"
-#include "hm/lattice2d/geometry/lattice.hpp"
 #include "hm/core/enum_names.hpp"
 #include "hm/core/state_archive.hpp"
+#include "hm/lattice2d/geometry/dual_graph.hpp"
+#include "hm/lattice2d/geometry/lattice.hpp"
 
 namespace hm::lattice2d {
 
@@ -40,9 +40,8 @@ enum class BoreholeDeformation {
   full,  ///< -(V_h^{n+1} - V_h^n): the hole holds only fluid, so all of its area change is fluid volume
 };
 constexpr auto enum_names(BoreholeDeformation) {
-  return core::enum_table<BoreholeDeformation>({{BoreholeDeformation::biot, "biot"},
-                                                {BoreholeDeformation::none, "none"},
-                                                {BoreholeDeformation::full, "full"}});
+  return core::enum_table<BoreholeDeformation>(
+      {{BoreholeDeformation::biot, "biot"}, {BoreholeDeformation::none, "none"}, {BoreholeDeformation::full, "full"}});
 }
 
 /// The Biot coefficient that couples a crack to its fluid: the weight of the volume change of the
@@ -155,8 +154,9 @@ struct FlowParameters : FlowOptions {
 };
 
 /// The borehole deformation term that goes with a borehole storage: Eq. 16's b dV_h with its storage,
-/// the full dV_h with the water-filled hole's (fluid), none without. With no storage p_h is set by b dV_h alone and the coupling loop through the borehole
-/// node does not converge (docs/coupling.md, section 3), so a case reader takes this as the default.
+/// the full dV_h with the water-filled hole's (fluid), none without. With no storage p_h is set by b dV_h alone and the
+/// coupling loop through the borehole node does not converge (docs/coupling.md, section 3), so a case reader takes this
+/// as the default.
 BoreholeDeformation default_borehole_deformation(BoreholeStorage storage);
 
 /// The flow parameters of a shared dimensionless parameter set (Q, iota, E/M, E/K_w, b) with time step
@@ -182,13 +182,13 @@ FlowParameters flow_parameters_of(const hm::analytic::DimensionlessParameters& p
 /// conductances (iota != 1) refactorises and solves every column again: an older Z would put A Z far
 /// from V, by up to iota times a facet's conductance.
 struct FlowStabiliser {
-  Eigen::MatrixXd volume_response;        ///< V: n_unknowns x n_modes
-  std::vector<std::vector<int>> modes;    ///< the unknowns of each mode
-  Eigen::VectorXd reference_pressure;     ///< p_ref: the pressure the mechanics was solved with
-  Eigen::MatrixXd solved_response;        ///< Z: n_unknowns x n_modes where solved
-  std::vector<char> solved;               ///< per mode: its column of Z is A_f^-1 V for solved_dt
-  double solved_dt = -1.0;                ///< the dt of those solves (another dt solves again)
-  long solved_conductances = -1;          ///< FlowNetwork::crack_conductance_changes() at those solves
+  Eigen::MatrixXd volume_response;      ///< V: n_unknowns x n_modes
+  std::vector<std::vector<int>> modes;  ///< the unknowns of each mode
+  Eigen::VectorXd reference_pressure;   ///< p_ref: the pressure the mechanics was solved with
+  Eigen::MatrixXd solved_response;      ///< Z: n_unknowns x n_modes where solved
+  std::vector<char> solved;             ///< per mode: its column of Z is A_f^-1 V for solved_dt
+  double solved_dt = -1.0;              ///< the dt of those solves (another dt solves again)
+  long solved_conductances = -1;        ///< FlowNetwork::crack_conductance_changes() at those solves
 };
 
 struct FlowStepSummary {
@@ -208,10 +208,10 @@ struct FlowStepSummary {
   /// |injected - storage - deformation - outflow| / (|injected| + |storage| + |deformation| + |outflow|),
   /// 0 when all four vanish. Round-off, plus the last step's charged_ahead.
   double balance_error = 0.0;
-  bool solved = false;  ///< the factorisation and solve succeeded
+  bool solved = false;      ///< the factorisation and solve succeeded
   bool factorised = false;  ///< this solve factorised the matrix (else it reused the last factor)
   int refinements = 0;      ///< preconditioned CG iterations with a reused factor
-  std::string message;  ///< empty when solved, else what went wrong (numerical trouble, not thrown)
+  std::string message;      ///< empty when solved, else what went wrong (numerical trouble, not thrown)
   bool is_ok() const { return solved; }
 };
 
@@ -259,8 +259,8 @@ struct FlowSteadyState {
 ///
 /// Limits: the pattern is that of the initial triangulation (no re-meshing); p = 0 on the whole
 /// outer boundary (no other boundary conditions yet); at most one source (borehole or one point);
-/// fracture aperture is ignored (constant iota as the paper, or a constant transmissivity); the borehole node has no volume of
-/// its own unless borehole_storage says so.
+/// fracture aperture is ignored (constant iota as the paper, or a constant transmissivity); the borehole node has no
+/// volume of its own unless borehole_storage says so.
 class FlowNetwork {
  public:
   /// Validates `parameters` (hm::InputError) and builds the network on `lattice` with the geometry
@@ -383,12 +383,12 @@ class FlowNetwork {
   int source_triangle_ = -1;
   std::vector<Connection> connections_;
   std::vector<std::array<int, 2>> wall_beams_;  // particle pairs of the borehole wall
-  Eigen::VectorXd triangle_area_;              // V_s^{n+1}
-  Eigen::VectorXd base_conductance_;           // A/d_flow per beam
-  Eigen::VectorXd inverse_flow_distance_;      // 1/d_flow per beam: a crack's T/d is T times it
+  Eigen::VectorXd triangle_area_;               // V_s^{n+1}
+  Eigen::VectorXd base_conductance_;            // A/d_flow per beam
+  Eigen::VectorXd inverse_flow_distance_;       // 1/d_flow per beam: a crack's T/d is T times it
   double borehole_volume_ = 0.0;
-  Eigen::VectorXd crack_weight_;               // per beam, 0 rock ... 1 broken
-  Eigen::VectorXd crack_opening_;              // per beam with the cubic law (else empty)
+  Eigen::VectorXd crack_weight_;   // per beam, 0 rock ... 1 broken
+  Eigen::VectorXd crack_opening_;  // per beam with the cubic law (else empty)
 
   Eigen::VectorXd pressure_;
   Eigen::VectorXd trial_pressure_;
@@ -401,9 +401,9 @@ class FlowNetwork {
   FlowTotals totals_;
 
   std::unique_ptr<Solver> solver_;
-  double factorised_dt_ = -1.0;  // dt of the current numeric factorisation; < 0: none
-  bool factor_stale_ = false;    // geometry or iota changed since: refine with the old factor
-  bool refresh_factor_ = false;  // the last refinement was slow: refactorise at the next solve
+  double factorised_dt_ = -1.0;         // dt of the current numeric factorisation; < 0: none
+  bool factor_stale_ = false;           // geometry or iota changed since: refine with the old factor
+  bool refresh_factor_ = false;         // the last refinement was slow: refactorise at the next solve
   long crack_conductance_changes_ = 0;  // never restored: a count that only grows never repeats
   long factorised_conductances_ = 0;    // that count at the last factorisation (else the cracks changed)
 };

@@ -20,10 +20,10 @@
 #include <Eigen/Core>
 
 #include "hm/analytic/failure_criteria.hpp"
-#include "hm/lattice2d/mechanics/beam_stiffness.hpp"
-#include "hm/lattice2d/geometry/lattice.hpp"
-#include "hm/lattice2d/mechanics/particle_stress.hpp"
 #include "hm/lattice2d/fracture/strength.hpp"
+#include "hm/lattice2d/geometry/lattice.hpp"
+#include "hm/lattice2d/mechanics/beam_stiffness.hpp"
+#include "hm/lattice2d/mechanics/particle_stress.hpp"
 
 namespace hm::lattice2d {
 
@@ -68,10 +68,10 @@ FailureField evaluate_failure(const BeamStress& stress, const BeamStrengths& str
 
 /// The beam to break next.
 struct BreakCandidate {
-  int beam = -1;                        ///< -1 if no intact beam has ratio >= 1
+  int beam = -1;  ///< -1 if no intact beam has ratio >= 1
   FailureMode mode = FailureMode::none;
-  double ratio = 0.0;                   ///< its failure ratio (>= 1 when found)
-  double max_ratio = 0.0;               ///< largest ratio over the intact beams (< 1 when none found)
+  double ratio = 0.0;      ///< its failure ratio (>= 1 when found)
+  double max_ratio = 0.0;  ///< largest ratio over the intact beams (< 1 when none found)
 
   bool found() const { return beam >= 0; }
 };
@@ -83,16 +83,16 @@ BreakCandidate select_beam_to_break(const BeamStress& stress, const BeamStrength
 
 /// One line of the break log.
 struct BreakEvent {
-  int sequence = 0;                    ///< 0, 1, ... in the order of breaking
-  int beam = -1;                       ///< beam index
-  int particle_i = -1;                 ///< its particles (i < j)
+  int sequence = 0;     ///< 0, 1, ... in the order of breaking
+  int beam = -1;        ///< beam index
+  int particle_i = -1;  ///< its particles (i < j)
   int particle_j = -1;
   Eigen::Vector2d position = Eigen::Vector2d::Zero();  ///< beam midpoint, undeformed, over R
-  double load = 0.0;                   ///< load factor or time (t/t_s) at the break; the caller's choice
-  double sigma_1 = 0.0;                ///< beam stress at breaking (crack-tip factor included)
+  double load = 0.0;     ///< load factor or time (t/t_s) at the break; the caller's choice
+  double sigma_1 = 0.0;  ///< beam stress at breaking (crack-tip factor included)
   double sigma_3 = 0.0;
-  double ratio = 0.0;                  ///< failure ratio, >= 1
-  double crack_tip_factor = 1.0;       ///< 1 unless the beam was at a crack tip
+  double ratio = 0.0;             ///< failure ratio, >= 1
+  double crack_tip_factor = 1.0;  ///< 1 unless the beam was at a crack tip
   FailureMode mode = FailureMode::none;
 };
 

@@ -21,14 +21,14 @@
 
 #include <Eigen/Core>
 
-#include "hm/lattice2d/geometry/dual_graph.hpp"
+#include "hm/core/enum_names.hpp"
 #include "hm/lattice2d/fracture/failure.hpp"
 #include "hm/lattice2d/fracture/sawtooth_law.hpp"
+#include "hm/lattice2d/fracture/strength.hpp"
+#include "hm/lattice2d/geometry/dual_graph.hpp"
 #include "hm/lattice2d/geometry/lattice.hpp"
 #include "hm/lattice2d/mechanics/mechanics.hpp"
 #include "hm/lattice2d/mechanics/particle_stress.hpp"
-#include "hm/lattice2d/fracture/strength.hpp"
-#include "hm/core/enum_names.hpp"
 
 namespace hm::lattice2d {
 
@@ -59,18 +59,19 @@ enum class BreakLoopStatus {
   interrupted,   ///< BreakLoopOptions::interrupted said so: the loop stopped between two solves
 };
 constexpr auto enum_names(BreakLoopStatus) {
-  return core::enum_table<BreakLoopStatus>({
-      {BreakLoopStatus::stable, "stable"}, {BreakLoopStatus::break_cap, "break_cap"},
-      {BreakLoopStatus::solve_failed, "solve_failed"}, {BreakLoopStatus::interrupted, "interrupted"}});
+  return core::enum_table<BreakLoopStatus>({{BreakLoopStatus::stable, "stable"},
+                                            {BreakLoopStatus::break_cap, "break_cap"},
+                                            {BreakLoopStatus::solve_failed, "solve_failed"},
+                                            {BreakLoopStatus::interrupted, "interrupted"}});
 }
 
 /// What one break loop did (Ceres' Summary in small).
 struct BreakLoopSummary {
   BreakLoopStatus status = BreakLoopStatus::stable;
-  int n_breaks = 0;              ///< beams broken by this call
-  int n_teeth = 0;               ///< teeth given way by this call (saw-tooth law; a beam's last is also a break)
-  double first_ratio = 0.0;      ///< failure ratio of the call's first break or tooth (0 if none)
-  int n_solves = 0;              ///< BeamMechanics::solve() calls (n_breaks + 1 when stable)
+  int n_breaks = 0;          ///< beams broken by this call
+  int n_teeth = 0;           ///< teeth given way by this call (saw-tooth law; a beam's last is also a break)
+  double first_ratio = 0.0;  ///< failure ratio of the call's first break or tooth (0 if none)
+  int n_solves = 0;          ///< BeamMechanics::solve() calls (n_breaks + 1 when stable)
   /// Largest failure ratio max(sigma_1/T_u, sigma_CC/C_u) over intact beams at the last solve, at
   /// the judged stress (stress_scale x reference): < 1 when stable.
   double max_ratio = 0.0;
@@ -189,10 +190,11 @@ enum class LoadingStatus {
   solve_failed,      ///< a solve did not converge; see message
 };
 constexpr auto enum_names(LoadingStatus) {
-  return core::enum_table<LoadingStatus>({
-      {LoadingStatus::reached_max_load, "reached_max_load"}, {LoadingStatus::stopped, "stopped"},
-      {LoadingStatus::step_cap, "step_cap"}, {LoadingStatus::break_cap, "break_cap"},
-      {LoadingStatus::solve_failed, "solve_failed"}});
+  return core::enum_table<LoadingStatus>({{LoadingStatus::reached_max_load, "reached_max_load"},
+                                          {LoadingStatus::stopped, "stopped"},
+                                          {LoadingStatus::step_cap, "step_cap"},
+                                          {LoadingStatus::break_cap, "break_cap"},
+                                          {LoadingStatus::solve_failed, "solve_failed"}});
 }
 
 /// Result of run_load_stepping.
@@ -203,7 +205,7 @@ struct LoadingResult {
   std::vector<ToothEvent> teeth;   ///< under the saw-tooth law, every tooth that gave way, in order
   int n_solves = 0;
   double seconds = 0.0;
-  std::string message;             ///< why, when not reached_max_load
+  std::string message;  ///< why, when not reached_max_load
 };
 
 /// Quasi-static loading: lambda = initial_load, then + load_increment per step (snapped to the next

@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "hm/lattice2d/mechanics/beam_stiffness.hpp"
+#include "hm/core/enum_names.hpp"
 #include "hm/lattice2d/fracture/failure.hpp"
 #include "hm/lattice2d/geometry/lattice.hpp"
-#include "hm/core/enum_names.hpp"
+#include "hm/lattice2d/mechanics/beam_stiffness.hpp"
 
 namespace hm::lattice2d {
 
@@ -28,8 +28,8 @@ enum class FractureLink {
   shared_triangle,
 };
 constexpr auto enum_names(FractureLink) {
-  return core::enum_table<FractureLink>({
-      {FractureLink::shared_particle, "particle"}, {FractureLink::shared_triangle, "triangle"}});
+  return core::enum_table<FractureLink>(
+      {{FractureLink::shared_particle, "particle"}, {FractureLink::shared_triangle, "triangle"}});
 }
 
 /// Options of compute_fracture_statistics.
@@ -75,37 +75,37 @@ constexpr auto enum_names(FractureKind) {
 
 /// One fracture: a connected cluster of broken beams (FractureStatisticsOptions::link).
 struct Fracture {
-  int id = 0;                            ///< 0, 1, ... in order of the smallest beam index
+  int id = 0;                                   ///< 0, 1, ... in order of the smallest beam index
   FractureKind kind = FractureKind::secondary;  ///< radial iff connected_to_borehole
-  std::vector<int> beams;                ///< beam indices, ascending
-  bool connected_to_borehole = false;    ///< contains a broken borehole-wall beam (BoundaryTag::inner)
-  bool reaches_outer = false;            ///< contains a broken outer-boundary beam (BoundaryTag::outer)
-  double r_min = 0.0;                    ///< smallest radius of a beam midpoint (undeformed, over R)
-  double r_max = 0.0;                    ///< largest radius of a beam midpoint
-  double length = 0.0;                   ///< radial extent r_max - r_min (not the path length)
-  double angle_deg = 0.0;                ///< atan2 of the mean unit midpoint direction, in [0, 360)
-  double extent = 0.0;                   ///< diagonal of the bounding box of the beam midpoints
-  int n_tensile = 0;                     ///< beams whose break-log mode is tensile (0 without a log)
-  int n_shear = 0;                       ///< beams whose break-log mode is shear (0 without a log)
+  std::vector<int> beams;                       ///< beam indices, ascending
+  bool connected_to_borehole = false;           ///< contains a broken borehole-wall beam (BoundaryTag::inner)
+  bool reaches_outer = false;                   ///< contains a broken outer-boundary beam (BoundaryTag::outer)
+  double r_min = 0.0;                           ///< smallest radius of a beam midpoint (undeformed, over R)
+  double r_max = 0.0;                           ///< largest radius of a beam midpoint
+  double length = 0.0;                          ///< radial extent r_max - r_min (not the path length)
+  double angle_deg = 0.0;                       ///< atan2 of the mean unit midpoint direction, in [0, 360)
+  double extent = 0.0;                          ///< diagonal of the bounding box of the beam midpoints
+  int n_tensile = 0;                            ///< beams whose break-log mode is tensile (0 without a log)
+  int n_shear = 0;                              ///< beams whose break-log mode is shear (0 without a log)
 
   int n_beams() const { return static_cast<int>(beams.size()); }
 };
 
 /// All fractures of one broken pattern and their summary.
 struct FractureStatistics {
-  std::vector<Fracture> fractures;   ///< ordered by id
-  int n_broken = 0;                  ///< broken beams (= sum of the fractures' n_beams)
+  std::vector<Fracture> fractures;  ///< ordered by id
+  int n_broken = 0;                 ///< broken beams (= sum of the fractures' n_beams)
   int n_fractures = 0;
-  int n_radial = 0;                  ///< fractures connected to the borehole
-  int n_radial_reaching_outer = 0;   ///< radial fractures that also reach the outer boundary
+  int n_radial = 0;                 ///< fractures connected to the borehole
+  int n_radial_reaching_outer = 0;  ///< radial fractures that also reach the outer boundary
   int n_secondary = 0;
-  int n_secondary_sizable = 0;       ///< secondary fractures with extent >= options.sizable_extent
-  int n_tensile = 0;                 ///< summed over the fractures
+  int n_secondary_sizable = 0;  ///< secondary fractures with extent >= options.sizable_extent
+  int n_tensile = 0;            ///< summed over the fractures
   int n_shear = 0;
-  double arm_radius = 0.0;           ///< radius of the arm-counting circle (options.arm_radius_fraction)
-  int n_arms = 0;                    ///< count_crossings at arm_radius, gap arm_gap_beams mean beam lengths
-  int n_arms_fixed_gap = 0;          ///< count_crossings at arm_radius, gap arm_gap (over R)
-  double max_radial_extent = 0.0;    ///< largest r_max of a radial fracture, 0 if none
+  double arm_radius = 0.0;         ///< radius of the arm-counting circle (options.arm_radius_fraction)
+  int n_arms = 0;                  ///< count_crossings at arm_radius, gap arm_gap_beams mean beam lengths
+  int n_arms_fixed_gap = 0;        ///< count_crossings at arm_radius, gap arm_gap (over R)
+  double max_radial_extent = 0.0;  ///< largest r_max of a radial fracture, 0 if none
 };
 
 /// The radius r = R_i + arm_radius_fraction (R_o - R_i) of the arm-counting circle of `lattice`.

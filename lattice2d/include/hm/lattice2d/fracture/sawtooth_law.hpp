@@ -60,10 +60,10 @@ double calibrated_sawtooth_strength_factor();
 /// One tooth of a beam giving way; the last one (stiffness_factor 0) breaks the beam and is also its
 /// BreakEvent. The energies of a beam's events sum to G_f d.
 struct ToothEvent {
-  int sequence = 0;        ///< 0, 1, ... in order, counted apart from the breaks
+  int sequence = 0;  ///< 0, 1, ... in order, counted apart from the breaks
   int beam = -1;
-  double load = 0.0;       ///< load factor or time, the caller's choice (as BreakEvent::load)
-  int tooth = 0;           ///< the tooth that gave way (0 = the intact beam)
+  double load = 0.0;              ///< load factor or time, the caller's choice (as BreakEvent::load)
+  int tooth = 0;                  ///< the tooth that gave way (0 = the intact beam)
   double stiffness_factor = 1.0;  ///< the beam's stiffness over its intact one after the step (0: broken)
   double axial_stress = 0.0;      ///< N / d at the step (judged scale)
   double ratio = 0.0;             ///< axial stress over the tooth's strength, >= 1
@@ -114,11 +114,11 @@ class SawtoothLaw {
  private:
   const Lattice& lattice_;
   SawtoothLawOptions options_;
-  std::vector<double> section_;         // d per beam
-  std::vector<double> axial_modulus_;   // E_n = k_n,beam L / d per beam
-  std::vector<double> tensile_;         // f_t per beam
-  std::vector<double> first_strength_;  // strength of tooth 0 (f_t, or the reduced one of a brittle beam)
-  std::vector<int> tooth_;     // current tooth per beam
+  std::vector<double> section_;               // d per beam
+  std::vector<double> axial_modulus_;         // E_n = k_n,beam L / d per beam
+  std::vector<double> tensile_;               // f_t per beam
+  std::vector<double> first_strength_;        // strength of tooth 0 (f_t, or the reduced one of a brittle beam)
+  std::vector<int> tooth_;                    // current tooth per beam
   std::unordered_map<int, BeamTeeth> teeth_;  // of the beams that have been asked for them
   double dissipated_ = 0.0;
   int n_brittle_ = 0;

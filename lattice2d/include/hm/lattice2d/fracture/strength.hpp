@@ -26,11 +26,10 @@ enum class StrengthDistribution {
   weibull,  ///< Weibull with modulus m, scaled so the mean is T_u (C_u): unbounded below, weakest-link size effect
 };
 constexpr auto enum_names(StrengthDistribution) {
-  return core::enum_table<StrengthDistribution>({
-      {StrengthDistribution::none, "none"}, {StrengthDistribution::uniform, "uniform"},
-      {StrengthDistribution::weibull, "weibull"}});
+  return core::enum_table<StrengthDistribution>({{StrengthDistribution::none, "none"},
+                                                 {StrengthDistribution::uniform, "uniform"},
+                                                 {StrengthDistribution::weibull, "weibull"}});
 }
-
 
 /// Failure parameters of the beams (Section 2.1, Eq. 11, Table 1) and their heterogeneity.
 struct StrengthSpec {

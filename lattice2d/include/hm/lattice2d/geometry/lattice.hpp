@@ -23,10 +23,9 @@ enum class DomainShape {
   rectangle,  ///< [-width/2, width/2] x [-height/2, height/2], for calibration and unit tests
 };
 constexpr auto enum_names(DomainShape) {
-  return core::enum_table<DomainShape>({
-      {DomainShape::disk, "disk"}, {DomainShape::annulus, "annulus"}, {DomainShape::rectangle, "rectangle"}});
+  return core::enum_table<DomainShape>(
+      {{DomainShape::disk, "disk"}, {DomainShape::annulus, "annulus"}, {DomainShape::rectangle, "rectangle"}});
 }
-
 
 /// Which boundary a particle or a boundary beam lies on.
 enum class BoundaryTag : std::uint8_t {
@@ -82,8 +81,8 @@ struct Lattice {
   double min_spacing = 0.0;
 
   // --- particles ---------------------------------------------------------------------------------
-  Eigen::Matrix2Xd points;             ///< column i = position of particle i
-  std::vector<BoundaryTag> boundary;   ///< boundary tag of particle i
+  Eigen::Matrix2Xd points;            ///< column i = position of particle i
+  std::vector<BoundaryTag> boundary;  ///< boundary tag of particle i
 
   // --- triangles (fluid cells, Section 2.2) ------------------------------------------------------
   std::vector<std::array<int, 3>> triangles;       ///< particle indices, counter-clockwise
@@ -108,7 +107,9 @@ struct Lattice {
   /// The force a pressure p on boundary beam `beam`'s face puts on each of its two ends, -p L m / 2
   /// (positive p pushes into the solid): half to each end is exact for a constant traction (the
   /// segment's force and moment). With p = 1, the wall's area gradient per end.
-  Eigen::Vector2d lumped_pressure_force(int beam, double p) const { return -0.5 * p * length[beam] * outward_normal(beam); }
+  Eigen::Vector2d lumped_pressure_force(int beam, double p) const {
+    return -0.5 * p * length[beam] * outward_normal(beam);
+  }
 };
 
 /// Generates the lattice of `spec` (validated first; throws hm::InputError).

@@ -18,8 +18,8 @@ struct RadialShell {
   /// Area-weighted mean centroid radius of the triangles in the shell (NaN if empty). For a field
   /// that is affine in r at the centroids, mean = f(r_mean) exactly; prefer it to the midpoint.
   double r_mean = 0.0;
-  double mean = 0.0;   ///< area-weighted mean of the values (NaN if empty)
-  double area = 0.0;   ///< total area of the triangles in the shell
+  double mean = 0.0;    ///< area-weighted mean of the values (NaN if empty)
+  double area = 0.0;    ///< total area of the triangles in the shell
   int n_triangles = 0;  ///< triangles whose centroid lies in the shell
 };
 

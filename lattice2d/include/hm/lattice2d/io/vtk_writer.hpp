@@ -26,9 +26,9 @@
 
 #include <Eigen/Core>
 
-#include "hm/lattice2d/mechanics/beam_stiffness.hpp"
 #include "hm/lattice2d/geometry/dual_graph.hpp"
 #include "hm/lattice2d/geometry/lattice.hpp"
+#include "hm/lattice2d/mechanics/beam_stiffness.hpp"
 
 namespace hm::lattice2d {
 
@@ -40,11 +40,11 @@ struct NamedField {
 
 /// The fields of one snapshot. Empty members are written as zeros (states: all intact).
 struct LatticeSnapshot {
-  double time = 0.0;                    ///< load factor or t/t_s; goes to the .pvd and the TimeValue field
-  Eigen::VectorXd displacement;         ///< size 3 n (dof = 3 i + component) or empty
-  Eigen::Matrix3Xd particle_stress;     ///< 3 x n, columns (sigma_xx, sigma_yy, sigma_xy), or empty
-  std::vector<BeamState> beam_states;   ///< one per beam, or empty
-  Eigen::VectorXd pressure;             ///< one per triangle (p/E), or empty
+  double time = 0.0;                        ///< load factor or t/t_s; goes to the .pvd and the TimeValue field
+  Eigen::VectorXd displacement;             ///< size 3 n (dof = 3 i + component) or empty
+  Eigen::Matrix3Xd particle_stress;         ///< 3 x n, columns (sigma_xx, sigma_yy, sigma_xy), or empty
+  std::vector<BeamState> beam_states;       ///< one per beam, or empty
+  Eigen::VectorXd pressure;                 ///< one per triangle (p/E), or empty
   std::vector<NamedField> particle_fields;  ///< extra point data, n values each
   std::vector<NamedField> beam_fields;      ///< extra cell data on the beams, n_beams values each
   std::vector<NamedField> triangle_fields;  ///< extra cell data on the triangles, n_triangles values each

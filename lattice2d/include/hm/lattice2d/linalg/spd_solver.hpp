@@ -97,17 +97,17 @@ struct SpdSolverOptions {
 /// What the last operation did (Ceres' Summary in small).
 struct SpdSolveReport {
   Eigen::ComputationInfo info = Eigen::Success;
-  double relative_residual = 0.0;  ///< ||A x - b|| / ||b|| of the last solve (0 for b = 0)
-  int iterations = 0;              ///< CG iterations of the last solve (0 for CHOLMOD)
-  bool refactorized = false;       ///< the last solve rebuilt the factor (residual too large)
-  int n_factorizations = 0;        ///< numeric factorisations since construction (compute() keeps the count)
-  int n_modifications = 0;         ///< modify() calls since the last factorisation
-  int n_update_failures = 0;       ///< modify() calls whose factor update failed and fell back to refactorize(),
-                                   ///< since construction
-  int matrix_revision = 0;         ///< changes of A (compute, modify) since construction: a solve A^-1 g kept
-                                   ///< by a caller is current while this is unchanged
-  std::string last_update_failure; ///< the last such failure: CHOLMOD's status, rank, sign, modifications before it
-  std::string message;             ///< human-readable reason when info != Success
+  double relative_residual = 0.0;   ///< ||A x - b|| / ||b|| of the last solve (0 for b = 0)
+  int iterations = 0;               ///< CG iterations of the last solve (0 for CHOLMOD)
+  bool refactorized = false;        ///< the last solve rebuilt the factor (residual too large)
+  int n_factorizations = 0;         ///< numeric factorisations since construction (compute() keeps the count)
+  int n_modifications = 0;          ///< modify() calls since the last factorisation
+  int n_update_failures = 0;        ///< modify() calls whose factor update failed and fell back to refactorize(),
+                                    ///< since construction
+  int matrix_revision = 0;          ///< changes of A (compute, modify) since construction: a solve A^-1 g kept
+                                    ///< by a caller is current while this is unchanged
+  std::string last_update_failure;  ///< the last such failure: CHOLMOD's status, rank, sign, modifications before it
+  std::string message;              ///< human-readable reason when info != Success
 };
 
 /// Abstract sparse SPD solver. Usage: compute(A); x = solve(b); modify(W, -1); x = solve(b); ...

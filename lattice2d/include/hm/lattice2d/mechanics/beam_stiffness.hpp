@@ -22,8 +22,8 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
-#include "hm/lattice2d/geometry/lattice.hpp"
 #include "hm/core/enum_names.hpp"
+#include "hm/lattice2d/geometry/lattice.hpp"
 
 namespace hm::lattice2d {
 
@@ -40,10 +40,9 @@ enum class StiffnessScaling : std::uint8_t {
   voronoi_facet,
 };
 constexpr auto enum_names(StiffnessScaling) {
-  return core::enum_table<StiffnessScaling>({
-      {StiffnessScaling::uniform, "uniform"}, {StiffnessScaling::voronoi_facet, "voronoi_facet"}});
+  return core::enum_table<StiffnessScaling>(
+      {{StiffnessScaling::uniform, "uniform"}, {StiffnessScaling::voronoi_facet, "voronoi_facet"}});
 }
-
 
 /// Beam constants of Eqs. 3-4. The defaults are generic unit values; the calibrated constants
 /// (E = 1, nu = 0.2236 measured on the lattice, docs/lattice.md "Calibration") come from
@@ -178,8 +177,8 @@ class BeamOperator {
 
  private:
   double c_, s_, length_;
-  double normal_;                  // k_n, 0 when open
-  double bending_;                 // 2 k_w L^2, 0 unless intact
+  double normal_;                   // k_n, 0 when open
+  double bending_;                  // 2 k_w L^2, 0 unless intact
   double diagonal_, off_diagonal_;  // D_b / bending_: gamma + 1/3 and 1/6 - gamma
   BeamState state_;
 };
@@ -248,8 +247,8 @@ inline double normal_elongation(const Lattice& lattice, const Eigen::VectorXd& u
 /// on j. The one copy of this arithmetic for the mechanics' assembly, downdate and reactions and the
 /// coupling's preload (each passes the stiffness k it holds).
 struct NormalSpring {
-  std::array<int, 4> dofs;     ///< global dofs x_i, y_i, x_j, y_j
-  std::array<double, 4> g;     ///< d(elongation)/d(dofs) = (-n_x, -n_y, n_x, n_y)
+  std::array<int, 4> dofs;  ///< global dofs x_i, y_i, x_j, y_j
+  std::array<double, 4> g;  ///< d(elongation)/d(dofs) = (-n_x, -n_y, n_x, n_y)
 
   NormalSpring(const Lattice& lattice, int beam) {
     const auto [i, j] = lattice.beams[static_cast<std::size_t>(beam)];

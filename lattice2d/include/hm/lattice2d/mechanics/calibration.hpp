@@ -14,8 +14,8 @@
 
 #include <Eigen/Core>
 
-#include "hm/lattice2d/mechanics/beam_stiffness.hpp"
 #include "hm/lattice2d/geometry/lattice.hpp"
+#include "hm/lattice2d/mechanics/beam_stiffness.hpp"
 
 namespace hm::lattice2d {
 
@@ -45,9 +45,9 @@ struct ElasticProperties {
   /// Particle-to-particle standard deviation (unweighted) of the region's stresses, entry-wise:
   /// a random lattice with uniform beam constants is not elastically uniform.
   Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
-  double c11 = 0.0;  ///< (C(0,0) + C(1,1)) / 2
-  double c12 = 0.0;  ///< (C(0,1) + C(1,0)) / 2
-  double c66 = 0.0;  ///< C(2,2), the shear modulus mu
+  double c11 = 0.0;             ///< (C(0,0) + C(1,1)) / 2
+  double c12 = 0.0;             ///< (C(0,1) + C(1,0)) / 2
+  double c66 = 0.0;             ///< C(2,2), the shear modulus mu
   double youngs_modulus = 0.0;  ///< plane strain, from c11, c12: (C11 - C12)(C11 + 2 C12)/(C11 + C12)
   double poisson_ratio = 0.0;   ///< plane strain, C12/(C11 + C12)
   /// Isotropy check: (c66 - (c11 - c12)/2) / ((c11 - c12)/2); 0 for an isotropic lattice.
@@ -120,10 +120,10 @@ struct CalibrationSpec {
 
 /// Result of calibrate_beams: the constants, and what they give (Ceres' Summary in small).
 struct Calibration {
-  BeamParameters beams;                  ///< k_n, a (searched), nu0 (fixed)
+  BeamParameters beams;                     ///< k_n, a (searched), nu0 (fixed)
   std::vector<ElasticProperties> per_seed;  ///< measured with `beams`, one per spec.seeds
-  double youngs_modulus_mean = 0.0;      ///< over seeds
-  double youngs_modulus_sd = 0.0;        ///< sample standard deviation over seeds (0 for one seed)
+  double youngs_modulus_mean = 0.0;         ///< over seeds
+  double youngs_modulus_sd = 0.0;           ///< sample standard deviation over seeds (0 for one seed)
   double poisson_ratio_mean = 0.0;
   double poisson_ratio_sd = 0.0;
   /// The seed-mean nu is within poisson_tolerance of the target. If false, `beams` gives the closest
@@ -134,7 +134,7 @@ struct Calibration {
   double poisson_ratio_at_aspect_max = 0.0;
   int n_measurements = 0;  ///< measure_elastic_properties calls
   double seconds = 0.0;
-  std::string message;     ///< human-readable summary
+  std::string message;  ///< human-readable summary
 };
 
 /// Searches a (at nu0 = spec.beam_poisson) for the target nu on the spec's rectangles, then sets

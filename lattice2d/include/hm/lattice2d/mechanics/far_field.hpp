@@ -26,7 +26,8 @@ void add_far_field_loads(const analytic::FarFieldStress& far, double p0, double 
 /// The finite annulus' displacement (`exact`, for E = 1) at the particles for Young's modulus E, in
 /// the gauge of a free lattice's solve (without_rigid_motion), 3 entries per particle: what a dry
 /// lattice under the far field should show. Radii are clamped to the annulus R_i <= r <= 1.
-Eigen::VectorXd annulus_displacement(const Lattice& lattice, const analytic::InSituAnnulus& exact, double youngs_modulus);
+Eigen::VectorXd annulus_displacement(const Lattice& lattice, const analytic::InSituAnnulus& exact,
+                                     double youngs_modulus);
 
 /// A displacement field against a reference, both 3 entries per particle, over the particles'
 /// translations: the RMS and the largest |u - u_ref|, each over max |u_ref|.

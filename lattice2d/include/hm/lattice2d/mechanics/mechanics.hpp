@@ -15,11 +15,11 @@
 
 #include <Eigen/Core>
 
-#include "hm/lattice2d/mechanics/beam_stiffness.hpp"
-#include "hm/lattice2d/mechanics/rank_one_stiffness.hpp"
+#include "hm/core/enum_names.hpp"
 #include "hm/lattice2d/geometry/lattice.hpp"
 #include "hm/lattice2d/linalg/spd_solver.hpp"
-#include "hm/core/enum_names.hpp"
+#include "hm/lattice2d/mechanics/beam_stiffness.hpp"
+#include "hm/lattice2d/mechanics/rank_one_stiffness.hpp"
 
 namespace hm::lattice2d {
 
@@ -105,23 +105,23 @@ struct MechanicsOptions {
 /// its BeamForces layout; this one adds the normal and shear components. Limits: like the stiffness,
 /// geometrically linear.
 std::vector<BeamForce> connection_forces(const Lattice& lattice, const BeamParameters& parameters,
-                                           const std::vector<BeamState>& states, const Eigen::VectorXd& u);
+                                         const std::vector<BeamState>& states, const Eigen::VectorXd& u);
 
 /// What one BeamMechanics::solve did (Ceres' Summary in small).
 struct MechanicsSummary {
   Eigen::ComputationInfo info = Eigen::Success;  ///< linear solver status (Success, NumericalIssue, ...)
-  bool contact_converged = false;   ///< the contact set was stable at the last iteration
-  int contact_iterations = 0;       ///< linear solves in the active-set loop
-  int n_contact_changes = 0;        ///< open <-> contact switches in this solve
-  int n_contacts = 0;               ///< broken beams in contact after the solve
-  int n_open = 0;                   ///< broken beams open after the solve
-  int n_detached_particles = 0;     ///< particles held because they lost their anchoring (all so far)
-  double solver_residual = 0.0;     ///< ||A x - b|| / ||b|| of the last linear solve
+  bool contact_converged = false;                ///< the contact set was stable at the last iteration
+  int contact_iterations = 0;                    ///< linear solves in the active-set loop
+  int n_contact_changes = 0;                     ///< open <-> contact switches in this solve
+  int n_contacts = 0;                            ///< broken beams in contact after the solve
+  int n_open = 0;                                ///< broken beams open after the solve
+  int n_detached_particles = 0;                  ///< particles held because they lost their anchoring (all so far)
+  double solver_residual = 0.0;                  ///< ||A x - b|| / ||b|| of the last linear solve
   /// max |K u - f| over free degrees of freedom, over max |f| (f the loads incl. held-DOF terms).
   /// NaN after solve(false), which skips it.
   double equilibrium_residual = 0.0;
-  double solve_seconds = 0.0;       ///< wall time of this solve()
-  std::string message;              ///< why, when not converged
+  double solve_seconds = 0.0;  ///< wall time of this solve()
+  std::string message;         ///< why, when not converged
   bool is_converged() const { return info == Eigen::Success && contact_converged; }
 };
 
@@ -143,7 +143,8 @@ Eigen::VectorXd without_rigid_motion(const Lattice& lattice, Eigen::VectorXd u);
 ///    beam (springs and contacts carry no moment: the body could turn about it), the pin moves, at
 ///    its current displacement, to the particle nearest the centroid with all beams intact in the
 ///    largest intact-connected part; pinned_particle() is then that particle.
-///  - Detachment: a particle or cluster whose intact (or sprung, set_normal_springs) beams no longer connect it to held degrees of
+///  - Detachment: a particle or cluster whose intact (or sprung, set_normal_springs) beams no longer connect it to held
+///  degrees of
 ///    freedom that stop all three rigid motions (a particle with only contacts left has a free
 ///    rotation) is frozen at the least-squares rigid motion of its last displacement (so it carries no
 ///    force), all its broken beams are forced open, and the system is re-assembled and refactorised.
@@ -246,7 +247,7 @@ class BeamMechanics {
   void remove_rigid_body_modes();
   void lump_boundary_loads();
   void build_adjacency();
-  void setup_system();  // free-DOF map, reduced matrix, held-term vector, factorisation
+  void setup_system();                             // free-DOF map, reduced matrix, held-term vector, factorisation
   BeamParameters beam_parameters(int beam) const;  // = beam_parameters_for(lattice_, parameters_, beam), cached k_n
   void change_state(int beam, BeamState to);
   double elongation(int beam) const;  // (u_j - u_i).n of the last solve: the contact active set's measure
@@ -257,7 +258,7 @@ class BeamMechanics {
   // if `target` is among them (`out` then partial).
   bool connected_part(int start, int target, std::vector<char>& seen, std::vector<int>& out) const;
   bool is_anchored(const std::vector<int>& part) const;  // its held dofs stop its three rigid motions
-  void freeze_part(const std::vector<int>& part);  // held at its nearest rigid motion, its contacts open
+  void freeze_part(const std::vector<int>& part);        // held at its nearest rigid motion, its contacts open
   bool has_intact_beam(int particle) const;
   void move_pin();  // pure traction: re-pin on the intact body (check_detachment)
   // One change of the contact active set: a broken beam between open and contact, or a softened one
@@ -269,7 +270,7 @@ class BeamMechanics {
   };
   std::vector<ContactSwitch> contact_switches(double tol, int iteration) const;
   void apply(const std::vector<ContactSwitch>& switches, double tol);
-  void remove_rigid_motion();  // displacement_ = raw_ less its least-squares rigid motion (the gauge)
+  void remove_rigid_motion();           // displacement_ = raw_ less its least-squares rigid motion (the gauge)
   double equilibrium_residual() const;  // from every beam's state, independent of the factor
   Eigen::VectorXd full_vector(const Eigen::VectorXd& x_free) const;
 
@@ -282,20 +283,20 @@ class BeamMechanics {
   std::vector<double> softening_;         // per beam: stiffness over the unsoftened one (soften_beam)
   std::vector<bool> closed_;              // per beam: softened, intact and shortened (normal unsoftened)
   std::vector<int> softened_;             // the intact softened beams, in index order (the closure loop's)
-  std::vector<bool> held_;       // per dof
-  Eigen::VectorXd held_value_;   // per dof (0 where free)
-  std::vector<bool> detached_;   // per particle
+  std::vector<bool> held_;                // per dof
+  Eigen::VectorXd held_value_;            // per dof (0 where free)
+  std::vector<bool> detached_;            // per particle
   int n_detached_ = 0;
   int pinned_particle_ = -1;
   std::vector<int> free_index_;  // per dof: index in the reduced system or -1
   std::vector<int> free_dofs_;
   std::vector<int> adjacency_start_, adjacency_beam_;  // CSR particle -> beams
   Eigen::VectorXd pressure_loads_, extra_loads_;
-  Eigen::VectorXd held_term_;    // K u_h (3 n), kept current under state changes
-  Eigen::VectorXd raw_;          // last solution incl. held values, before the gauge shift
+  Eigen::VectorXd held_term_;  // K u_h (3 n), kept current under state changes
+  Eigen::VectorXd raw_;        // last solution incl. held values, before the gauge shift
   Eigen::VectorXd displacement_;
-  std::vector<int> broken_;      // beams not intact
-  Eigen::VectorXd springs_;      // set_normal_springs, per beam (empty: none)
+  std::vector<int> broken_;            // beams not intact
+  Eigen::VectorXd springs_;            // set_normal_springs, per beam (empty: none)
   mutable RankOneStiffness rank_one_;  // mutable: it keeps K^-1 g of the current matrix for linear_response
   BrokenBeamSpring broken_spring_ = BrokenBeamSpring::keep;
   void remove_normal_spring(int beam);  // a rank-1 downdate of k n n^T

@@ -17,9 +17,9 @@
 #include <Eigen/Core>
 
 #include "hm/analytic/failure_criteria.hpp"
-#include "hm/lattice2d/mechanics/beam_stiffness.hpp"
 #include "hm/lattice2d/geometry/dual_graph.hpp"
 #include "hm/lattice2d/geometry/lattice.hpp"
+#include "hm/lattice2d/mechanics/beam_stiffness.hpp"
 
 namespace hm::lattice2d {
 
@@ -42,8 +42,7 @@ struct BeamForces {
 ///  - open: zero.
 /// Validates `parameters` (throws hm::InputError).
 BeamForces compute_beam_forces(const Lattice& lattice, const BeamParameters& parameters,
-                               const Eigen::VectorXd& displacement,
-                               const std::vector<BeamState>& states = {});
+                               const Eigen::VectorXd& displacement, const std::vector<BeamState>& states = {});
 
 /// Per-particle stress tensors.
 struct ParticleStress {
@@ -61,8 +60,7 @@ struct ParticleStress {
 /// symmetrised, with V_i = dual.particle_area and the sum over all intact and contact connections of i.
 /// Boundary particles get the same formula; their stress is one-sided (missing neighbours) and not a
 /// continuum stress.
-ParticleStress compute_particle_stress(const Lattice& lattice, const DualGraph& dual,
-                                       const BeamForces& forces);
+ParticleStress compute_particle_stress(const Lattice& lattice, const DualGraph& dual, const BeamForces& forces);
 /// The same from connection_forces' layout (F_ij = force_on_i) into `out`, whose storage is reused:
 /// the form of the break loop, which evaluates it after every broken beam.
 void compute_particle_stress(const Lattice& lattice, const DualGraph& dual, const std::vector<BeamForce>& forces,
@@ -114,8 +112,7 @@ using hm::analytic::PrincipalPair;
 /// that it connects", times the crack-tip factor). Computed for every beam, broken ones included
 /// (they are simply not candidates for breaking; see failure.hpp). Validates `options`.
 BeamStress compute_beam_stress(const Lattice& lattice, const ParticleStress& particle_stress,
-                               const std::vector<BeamState>& states = {},
-                               const CrackTipOptions& options = {});
+                               const std::vector<BeamState>& states = {}, const CrackTipOptions& options = {});
 
 // ---------------------------------------------------------------------------------------------------
 // Affine (kinematic) estimate of the effective stiffness

@@ -49,8 +49,8 @@ class RankOneStiffness {
   Eigen::VectorXd g_;
   double k_ = 0.0;
   double reference_volume_ = 0.0;  // g.u_r
-  Eigen::VectorXd z_;       // K^-1 g on the free degrees of freedom
-  int z_revision_ = -1;     // SpdSolveReport::matrix_revision of K when z was solved
+  Eigen::VectorXd z_;              // K^-1 g on the free degrees of freedom
+  int z_revision_ = -1;            // SpdSolveReport::matrix_revision of K when z was solved
 };
 
 }  // namespace hm::lattice2d
