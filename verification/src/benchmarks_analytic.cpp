@@ -127,9 +127,6 @@ BenchmarkResult steady_borehole(const BenchmarkContext& ctx) {
   res.figures.push_back({"verify_steady_borehole.py", "verify_steady_borehole.png",
                          "Steady borehole (corrected Appendix B), Q = 0.01, nu = 0.25, R_i = 0.138: p, u_r and "
                          "effective stresses for b = 0.2, 0.5, 0.8."});
-  res.notes.push_back(
-      "The printed B5-B9 contain misprints; the implemented forms are re-derived and listed in "
-      "`docs/errata.md`. This benchmark checks the implemented forms against B2 itself.");
   core::close_checked(csv, csv_path);
   return res;
 }

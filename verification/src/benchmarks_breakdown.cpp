@@ -473,36 +473,6 @@ void add_fig18_figure_and_notes(const Plan& p, const borehole_fracture::RunSourc
                              "seeds), the converged 1D model (solid), the 1D model at the lattice's spacing (thin), "
                              "the closed-form limits (dashed: slow, dash-dotted: fast) and T_u/E (dotted).",
                          p.id});
-  res.notes.push_back(
-      "Three models of one breakdown. The lattice's is p_h of the step that breaks its first beam (Section 3.5), "
-      "with the borehole node of cases/sweep_fig18_quick.toml: Eq. 16 as printed, with storage (E/M) V_h and b dV_h "
-      "(errata E15). The 1D model's is p_h when its wall's effective hoop stress first reaches T_u "
-      "(first_wall_failure), "
-      "with a flux-boundary borehole, no storage; the limits are that 1D model's closed forms (docs/breakdown.md). "
-      "All three use the calibrated lattice's nu and Eq. 22's E/M at each b. Steps: the lattice's scale with 1/Q "
-      "(the case's volume per step at Q = 0.01), the 1D model's with the half-space failure time "
-      "(breakdown_1d.hpp); the grid study holds the steps fixed, so its order is the grid's alone.");
-  res.notes.push_back(
-      "Why the lattice breaks below the 1D model (column lattice / 1D): its wall row over-reads the hoop stress "
-      "by ~1.2-1.4 (docs/lattice.md, 'Why the wall over-reads'), and with uniform strengths of width 0.05 the "
-      "weakest, most loaded of the ~15-60 wall beams (N = 1000 to 2e4) goes first; both lower p_b by tens of percent, "
-      "and neither is "
-      "a property of the continuum. The 1D model on a grid of the lattice's own spacing (n_r = (1 - R_i)/h) does "
-      "not reproduce it: it shows what the wall layer's under-resolution alone does to a continuum's p_b. The "
-      "borehole nodes differ too: Eq. 16's storage holds the lattice's p_h 70% below the 1D model's before the "
-      "break at Q = 0.01 (column p_h/p_h,1D - 1 of the node table), so the lattice reaches its breaking pressure "
-      "later, while the 1D model's flux node is what the lattice with borehole_storage = \"none\" has: that node "
-      "breaks in the very first step (t* = dt_initial) at Q >= 0.01, because the undrained first step's p_h "
-      "already exceeds the breaking pressure (the sweep case's comment, errata E15): its p_b is the first step's, "
-      "not a breakdown. Neither lattice node is the 1D model's situation exactly.");
-  res.notes.push_back(
-      "Against the paper (Section 3.5, Fig. 18; no values read from the figure): the 1D model and the limits have "
-      "no fracture below q_min and p_b rising from p_b_slow at q_min to p_b_fast, most of the rise within a decade "
-      "of q_min, then level; everything below T_u and below p_b_jacketed = T_u (1 - R_i^2)/(1 + R_i^2), and lower "
-      "for higher b at every Q. The paper's values above T_u at high Q, and its high-Q ordering (highest for high b), "
-      "cannot come from the continuum with a tensile criterion at the wall (docs/breakdown.md sections 4-5): if "
-      "the lattice shows them, they come from what it adds (the discrete wall, the crack-tip factor, the "
-      "strength scatter).");
   if (const std::string read = source.note(); !read.empty()) res.notes.push_back(read);
 }
 

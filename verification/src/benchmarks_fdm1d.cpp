@@ -246,13 +246,6 @@ BenchmarkResult section32(const BenchmarkContext&) {
   res.tables.push_back(table);
   res.tables.push_back(probe_table);
   res.metrics.push_back(fdm1d_balance_metric("Section 3.2 runs", worst_balance));
-  res.notes.push_back(
-      "The C_u/T_u threshold is sigma_CC/sigma_1 at the borehole wall: shear failure comes first when C_u/T_u is "
-      "below it. The paper quotes one value, ≈ 5.5, for all b; we find it depends on b (6.00 at b = 0 falling to "
-      "5.04 at b = 1 at steady state; K = [(1+mu_i^2)^(1/2)+mu_i]^2 = 5.04 is the b = 1 limit). The transient "
-      "minimum is taken over all steps with sigma_1 > 0; the earliest steps resolve the wall field poorly, so treat "
-      "it as indicative. docs/errata.md E8 explains why the paper's t99 for b = 0 and 1 cannot be matched with Eq. "
-      "22's E/M.");
   return res;
 }
 

@@ -438,10 +438,6 @@ BenchmarkResult psi_study(const BenchmarkContext& ctx) {
                           fmt(run_seconds[k] / s13), std::to_string(step_passes[k])});
   res.tables.push_back(table);
   add_psi_metrics(run_passes, step_passes, sign_changes, res.metrics);
-  res.notes.push_back(
-      "psi_study/passes.csv: the area-weighted mean pressure in the shell 0.02 < r* < 0.03 (Fig. 6's "
-      "Gamma) after every pass of one implicit step dt = 3e-4 from rest, for each Psi (Fig. 8's "
-      "quantity; our step choice, the paper does not say which step it shows).");
   res.figures.push_back({"fig08_psi_study.py", "fig08_psi_study.png",
                          "Fig. 8: mean pressure in the shell 0.02 < r* < 0.03 against the coupling pass, one implicit "
                          "step dt = 3e-4 from rest, for each Psi (Psi = 0: the drained split); right, its relative "

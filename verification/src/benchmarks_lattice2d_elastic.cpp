@@ -446,11 +446,6 @@ BenchmarkResult lattice_lame(const BenchmarkContext& ctx) {
   }
   res.tables.push_back(table);
   add_lame_metrics(runs, res.metrics);
-  res.notes.push_back(
-      "The lattice is stiffer than the continuum next to the borehole (u_r low by 2.7% in the innermost shell at "
-      "N = 1e4, seed 1): the wall is one row of boundary particles, a boundary layer of O(spacing), so the error "
-      "falls like the spacing (table). With the paper's uniform beams and the denser boundary row (spacing r_min) "
-      "the same error was 3.6% at N = 1e4 and 1.1% at 1e5 (docs/lattice.md).");
   res.figures.push_back({"verify_lattice_lame.py", "verify_lattice_lame.png",
                          "Lame cylinder: radially averaged u_r and sigma_theta of the lattice (markers, two "
                          "resolutions) against the plane-strain solution with the calibrated E, nu (lines), free and "

@@ -154,13 +154,6 @@ BenchmarkResult fracture_energy(const BenchmarkContext& ctx) {
   add_booked_metrics(sizes, booked_mean, booked_all, res.metrics);
   if (paper) add_extrapolated_metrics(spacing, rock_mean, k_mean, booked_all, res.metrics);
   res.tables.push_back(table);
-  res.notes.push_back(
-      "The growth of lattice2d.griffith_growth (a notch |x| < 0.05 in a free disk, its volume raised, the process zone "
-      "pressurised by its damage as the coupled model wets it), with the law's calibrated strength. Booked: G_f "
-      "times the facet of each beam taken through all its teeth, and the teeth given way of the others; rock's "
-      "dissipation: the pressure's work on the solid less pV/2; cost: W - pV/2, larger by the fluid filling facets "
-      "that opened before they were wetted. Each is the slope against the crack's length 2c over c in [0.1, 0.3]. "
-      "The brittle law has no fracture energy: its energies are over the same G_f, for comparison.");
   res.figures.push_back({"verify_fracture_energy.py", "verify_fracture_energy.png",
                          "Energy per unit crack length against N (each seed a point, the mean a line): the saw-tooth "
                          "law's booked energy and the rock's dissipation, and the brittle law's dissipation."});

@@ -327,16 +327,6 @@ BenchmarkResult kgd_toughness(const BenchmarkContext& ctx) {
       add_kgd_metrics(at, sawtooth, run, fluid_in_crack, m.toughness, d.toughness, k_c, res.metrics);
     }
   res.tables.push_back(table);
-  res.notes.push_back(
-      "Water is pumped at the centre of a notch |x| < 0.05 in a free disk: b = 0 (no poroelastic coupling), a "
-      "fluid-filled crack (crack_coupling = \"full\"), iota = 1e12 (Q/iota = 1e-9 against pressures ~1e-4: a "
-      "uniform pressure in the crack), Q = 1e3 in a rock of E/M = 3e-3 (leak-off ~1%). Toughness-dominated, the "
-      "crack then grows as Griffith's: c = (E' V / (2 sqrt(pi) K_c))^(2/3), p sqrt(pi c) = K_c. The fluid "
-      "reaching the crack and the crack's K against the same crack grown dry by its volume "
-      "(lattice2d.griffith_growth's "
-      "driver, on the same lattice and law, its process zone pressurised by damage as the coupled model wets it) "
-      "check the coupling; K against K_c = sqrt(E' G_f) checks the law, and fails as the dry "
-      "benchmark does (docs/fracture_law.md).");
   core::close_checked(out, out_path);
   return res;
 }

@@ -11,6 +11,7 @@
 #include <string_view>
 #include <thread>
 
+#include "benchmark_notes.hpp"
 #include "figure_runner.hpp"
 #include "hm/core/file_output.hpp"
 #include "hm/core/input_error.hpp"
@@ -80,6 +81,7 @@ BenchmarkOutcome run_one(const Benchmark& benchmark, Tier tier, const fs::path& 
   const auto start = std::chrono::steady_clock::now();
   try {
     o.result = benchmark.run(BenchmarkContext{tier, data_dir, progress, runs_dir});
+    for (std::string& note : benchmark_notes(benchmark.id)) o.result.notes.push_back(std::move(note));
   } catch (const std::exception& e) {
     o.error = e.what();
   }
