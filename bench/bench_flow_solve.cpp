@@ -7,6 +7,8 @@
 //   - CHOLMOD through Eigen's CholmodSupport: symbolic analysis once, then cholmod_factorize with new
 //     values per repeat, supernodal LL' and simplicial LDL', each with nested dissection and AMD, and
 //     CHOLMOD's own supernodal/simplicial choice,
+//   - linalg's CholmodSolver with the flow network's options (its front end today), beside Eigen's
+//     CholmodSupport simplicial LDL' (its front end before), the ratio printed,
 // and a whole FlowNetwork::solve after update_geometry() (assembly, factorisation and solve with
 // whatever flow_network.cpp uses). Medians over the repeats, in seconds; OpenBLAS with its default
 // threads (the supernodal factorisation's BLAS-3 kernels).
@@ -27,6 +29,7 @@
 #include "hm/lattice2d/flow/flow_network.hpp"
 #include "hm/lattice2d/geometry/dual_graph.hpp"
 #include "hm/lattice2d/geometry/lattice.hpp"
+#include "hm/lattice2d/linalg/spd_solver.hpp"
 
 using namespace hm::lattice2d;
 using Matrix = Eigen::SparseMatrix<double>;
@@ -105,6 +108,17 @@ Timing time_solver(const std::vector<Matrix>& matrices, const Eigen::VectorXd& b
   return t;
 }
 
+// The flow network's front end, linalg's CholmodSolver with the flow's options (simplicial LDL',
+// nested dissection, solves on all threads), in Eigen's calls: compute() is its analysis (with a first
+// factorisation), update_values() its factorisation with new values.
+struct FlowFront {
+  hm::lattice2d::CholmodSolver solver{flow_solver_options()};
+  void analyzePattern(const Matrix& a) { solver.compute(a); }
+  void factorize(const Matrix& a) { solver.update_values(a); }
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) { return solver.solve(b); }
+  Eigen::ComputationInfo info() const { return solver.info(); }
+};
+
 template <typename Solver>
 void cholmod_ordering(Solver& s, int ordering) {
   s.cholmod().nmethods = 1;
@@ -162,9 +176,16 @@ void run(long long n_particles, int repeats) {
   print("CHOLMOD supernodal LL' (AMD)",
         time_solver<Super>(
             matrices, b, [](Super& s) { cholmod_ordering(s, CHOLMOD_AMD); }, cholmod_nnz<Super>));
-  print("CHOLMOD simplicial LDL' (NESDIS)",
-        time_solver<Simplicial>(
-            matrices, b, [](Simplicial& s) { cholmod_ordering(s, CHOLMOD_NESDIS); }, cholmod_nnz<Simplicial>));
+  const Timing eigen_front = time_solver<Simplicial>(
+      matrices, b, [](Simplicial& s) { cholmod_ordering(s, CHOLMOD_NESDIS); }, cholmod_nnz<Simplicial>);
+  print("CHOLMOD simplicial LDL' (NESDIS)", eigen_front);
+  const Timing flow_front = time_solver<FlowFront>(
+      matrices, b, [](FlowFront&) {}, [](FlowFront& f) { return f.solver.factor_nonzeros(); });
+  print("  the same, linalg's CholmodSolver", flow_front);
+  std::printf(
+      "  (the flow's front end, linalg's CholmodSolver, over Eigen's CholmodSupport before it: factorise %.2fx, "
+      "solve %.2fx, its solves on all threads against CHOLMOD's one)\n",
+      flow_front.factorise / eigen_front.factorise, flow_front.solve / eigen_front.solve);
   print("CHOLMOD simplicial LDL' (AMD)",
         time_solver<Simplicial>(
             matrices, b, [](Simplicial& s) { cholmod_ordering(s, CHOLMOD_AMD); }, cholmod_nnz<Simplicial>));
@@ -201,7 +222,8 @@ void run(long long n_particles, int repeats) {
     balance = std::max(balance, s.balance_error);
   }
   std::printf(
-      "  FlowNetwork: construction (analysis) %.4f s, step after update_geometry %.4f s (median), "
+      "  FlowNetwork: construction %.4f s (the analysis comes with the first factorisation), step after "
+      "update_geometry %.4f s (median), "
       "balance error <= %.1e, p_h = %.6e\n",
       construct, median(pass), balance, network.borehole_pressure());
 }

@@ -138,7 +138,8 @@ void run(long long n, bool variants, bool with_pcg) {
     return median(t);
   };
   SpdSolverOptions full_options, serial_options;
-  full_options.reuse_forward_solve = false;          // full forward + backward solve each time (CHOLMOD's)
+  full_options.reuse_forward_solve = false;  // full forward + backward solve each time (CHOLMOD's)
+  full_options.parallel_triangular_solve = false;
   serial_options.parallel_triangular_solve = false;  // CHOLMOD's one-thread backward solve
   const double t_resolve_full = resolve_with(full_options), t_resolve_serial = resolve_with(serial_options);
   std::printf("  minimum over repeats: repeated solve %.4f s, re-solve %.4f s (4 solves, %d breaks; medians below)\n",

@@ -9,7 +9,6 @@
 #include <stdexcept>
 #include <utility>
 
-#include <Eigen/CholmodSupport>
 #include <Eigen/LU>
 
 #include <Eigen/SparseCore>
@@ -18,7 +17,6 @@
 #include "hm/core/state_archive.hpp"
 #include "hm/core/validation.hpp"
 #include "hm/lattice2d/linalg/spd_solver.hpp"
-#include "linalg/subtree_solve.hpp"
 
 namespace hm::lattice2d {
 
@@ -120,54 +118,40 @@ FlowParameters flow_parameters_of(const hm::analytic::DimensionlessParameters& p
   return flow;
 }
 
-// The one place that names the sparse factorisation: CHOLMOD's simplicial LDL' (through Eigen's
-// CholmodSupport) with CHOLMOD's nested-dissection ordering; ordering and symbolic analysis once per
-// pattern, a numeric refactorisation with the new values on every factorise(). Measured with
-// bench_flow_solve on the Fig. 12 annulus (medians, seconds per factorisation + solve): N = 1e5
-// (2e5 unknowns) 0.20 against 0.29 for Eigen's SimplicialLDLT (AMD ordering, 20% more nonzeros in L);
-// N = 1e4 0.008, the same as Eigen. The gain is the ordering: CHOLMOD's supernodal LL' with the same
-// ordering factorises as fast at N = 1e5 but solves 1.7x slower and factorises 2x slower at N = 1e4.
-// The matrix keeps the full symmetric pattern (both triangles) so that matrix-vector products need no
-// symmetry handling; the factorisation reads the lower half.
+// The flow's matrix on its fixed pattern (storage on the diagonal, one symmetric pair per connection)
+// and the linalg solver that factorises it: CHOLMOD's simplicial LDL' with nested dissection, the
+// ordering and symbolic analysis once, a numeric refactorisation with the new values whenever the
+// matrix changes (every coupling pass with a deforming lattice). Measured with bench_flow_solve on the
+// Fig. 12 annulus: at N = 1e5 (2e5 unknowns) 0.20 s a factorisation and solve against 0.29 s for
+// Eigen's SimplicialLDLT (AMD ordering, 20% more nonzeros in L), as fast at N = 1e4; CHOLMOD's
+// supernodal LL' with the same ordering factorises as fast at N = 1e5 but solves 1.7x slower and
+// factorises 2x slower at N = 1e4. Triangular solves on all threads (SubtreeSolve, bitwise the same x
+// on any number of them). The solver does not check residuals: a solve with an older factor
+// (reuse_factorisation) is refined by conjugate gradients against the current matrix here.
+// The matrix keeps both triangles so that matrix-vector products need no symmetry handling.
+SpdSolverOptions flow_solver_options() {
+  SpdSolverOptions o;
+  o.ordering = CholmodOrdering::nested_dissection;
+  o.supernodal_factorization = false;
+  o.reuse_forward_solve = false;  // every right-hand side is new
+  o.check_residual = false;
+  o.pivot_tolerance = 0.0;  // pivots of a diffusion matrix span its conductances' range (iota up to 1e12)
+  return o;
+}
+
 struct FlowNetwork::Solver {
   using Matrix = Eigen::SparseMatrix<double>;
-  // Eigen's wrapper, opened to hand its CHOLMOD factor to SubtreeSolve.
-  struct Factorisation : Eigen::CholmodSimplicialLDLT<Matrix, Eigen::Lower> {
-    const cholmod_factor& factor() const { return *m_cholmodFactor; }
-  };
-
   Matrix matrix;
   std::vector<int> diagonal_slot;                   // value index of (k, k)
   std::vector<std::array<int, 4>> connection_slot;  // (s,s), (t,t), (s,t), (t,s); -1 where absent
-  Factorisation factorisation;
-  Eigen::VectorXd factor_values;  // the matrix `factorisation` holds, for a restored network to refactorise
-  SubtreeSolve subtree;
+  CholmodSolver factor{flow_solver_options()};
+  Eigen::VectorXd factor_values;  // the matrix `factor` holds, for a restored network to refactorise
 
-  // factorisation.solve(b), with the triangular solves on all threads (bitwise the same x on any
-  // number of them; subtree_solve.hpp): the flow's share of a run halves with the mechanics'.
-  Eigen::VectorXd solve(const Eigen::VectorXd& b) {
-    Eigen::VectorXd x(b.size());
-    subtree.solve(factorisation.factor(), b.data(), x.data());
-    return x;
-  }
-
-  // Ordering and symbolic analysis on `matrix`'s pattern (once).
-  void analyse(Factorisation& f) const {
-    cholmod_common& c = f.cholmod();
-    c.print = 0;  // trouble is reported through info() and the summary's message, not printed
-    c.nmethods = 1;
-    c.method[0].ordering = CHOLMOD_NESDIS;
-    c.postorder = 1;
-    const std::lock_guard<std::mutex> lock(cholmod_analysis_mutex());  // METIS's generator (spd_solver.hpp)
-    f.analyzePattern(matrix);
-    if (c.status < CHOLMOD_OK)  // out of memory: nothing to factorise later
-      throw std::runtime_error("flow matrix: cholmod_analyze failed (status " + std::to_string(c.status) + ")");
-  }
-  // Numeric factorisation with `values` (same pattern); an empty string on success.
-  std::string factorise(Factorisation& f, Matrix& a, const Eigen::VectorXd& values) const {
-    std::copy(values.data(), values.data() + values.size(), a.valuePtr());
-    f.factorize(a);
-    if (f.info() != Eigen::Success) return "flow matrix factorisation failed (not positive definite?)";
+  // A numeric factorisation of `matrix` with `values`; an empty string on success.
+  std::string factorise(const Eigen::VectorXd& values) {
+    std::copy(values.data(), values.data() + values.size(), matrix.valuePtr());
+    factor.update_values(matrix);
+    if (factor.info() != Eigen::Success) return "flow matrix factorisation failed (not positive definite?)";
     return {};
   }
 };
@@ -231,8 +215,6 @@ FlowNetwork::FlowNetwork(const Lattice& lattice, const DualGraph& dual, const Fl
         c.t >= 0 ? std::array<int, 4>{slot(c.s, c.s), slot(c.t, c.t), slot(c.s, c.t), slot(c.t, c.s)}
                  : std::array<int, 4>{slot(c.s, c.s), -1, -1, -1};
   }
-  solver_->analyse(solver_->factorisation);
-
   update_geometry(dual, lattice.points);
   pressure_ = Eigen::VectorXd::Zero(n);
   trial_pressure_ = pressure_;
@@ -384,7 +366,7 @@ void FlowNetwork::assemble_values(double dt, double storage_scale, Eigen::Vector
 std::string FlowNetwork::factorise(double dt) {
   Eigen::VectorXd values;
   assemble_values(dt, 1.0, values);
-  const std::string error = solver_->factorise(solver_->factorisation, solver_->matrix, values);
+  const std::string error = solver_->factorise(values);
   solver_->factor_values = std::move(values);
   factorised_dt_ = error.empty() ? dt : -1.0;
   factor_stale_ = false;
@@ -456,7 +438,7 @@ void FlowNetwork::restore_state(core::StateReader& r) {
   // The factor is a function of the matrix it was computed from: refactorising those values gives it
   // bitwise (a reused factor may be older than the current matrix, which is restored after it).
   if (factorised_dt_ >= 0.0) {
-    const std::string error = solver_->factorise(solver_->factorisation, solver_->matrix, factor_values);
+    const std::string error = solver_->factorise(factor_values);
     if (!error.empty()) throw std::runtime_error("restoring the flow network: " + error);
   }
   solver_->factor_values = std::move(factor_values);
@@ -494,7 +476,7 @@ Eigen::VectorXd FlowNetwork::stabilised(double dt, const Eigen::VectorXd& plain,
   }
   for (Eigen::Index c = 0; c < k; ++c) {
     if (stabiliser.solved[static_cast<std::size_t>(c)]) continue;
-    stabiliser.solved_response.col(c) = solver_->solve(Eigen::VectorXd(stabiliser.volume_response.col(c)));
+    stabiliser.solved_response.col(c) = solver_->factor.solve(Eigen::VectorXd(stabiliser.volume_response.col(c)));
     stabiliser.solved[static_cast<std::size_t>(c)] = 1;
   }
   const Eigen::MatrixXd& Z = stabiliser.solved_response;
@@ -585,21 +567,21 @@ FlowStepSummary FlowNetwork::solve(double dt, const Eigen::VectorXd& volume_chan
   }
 
   summary.factorised = !factor_current && !factor_stale_;
-  trial_pressure_ = solver_->solve(rhs);
+  trial_pressure_ = solver_->factor.solve(rhs);
   if (factor_stale_) {
     // Conjugate gradients on the current matrix, preconditioned by the last factor
     // (reuse_factorisation): fewer iterations than plain iterative refinement at tolerance 1e-10
     // (~8 against ~12 on a fracturing annulus at N = 1e4, with fewer fallbacks).
     const double target = parameters_.refinement_tolerance * rhs.norm();
     const double residual = preconditioned_cg(
-        solver_->matrix, [&](const Eigen::VectorXd& r) { return solver_->solve(r); }, rhs, target,
+        solver_->matrix, [&](const Eigen::VectorXd& r) { return solver_->factor.solve(r); }, rhs, target,
         parameters_.max_refinements, trial_pressure_, summary.refinements);
     refresh_factor_ = summary.refinements > parameters_.refresh_after_refinements;
     if (!(residual <= target)) {  // too far from the factor: a fresh one
       summary.message = factorise(dt);
       if (!summary.message.empty()) return summary;
       summary.factorised = true;
-      trial_pressure_ = solver_->solve(rhs);
+      trial_pressure_ = solver_->factor.solve(rhs);
     }
   }
   trial_charged_ahead_.resize(0);
@@ -608,7 +590,7 @@ FlowStepSummary FlowNetwork::solve(double dt, const Eigen::VectorXd& volume_chan
     trial_charged_ahead_ = rhs - solver_->matrix * trial_pressure_;
     summary.charged_ahead = trial_charged_ahead_.sum();
   }
-  if (solver_->factorisation.info() != Eigen::Success || !trial_pressure_.allFinite()) {
+  if (solver_->factor.info() != Eigen::Success || !trial_pressure_.allFinite()) {
     summary.message = "flow solve failed";
     return summary;
   }
@@ -652,17 +634,16 @@ FlowStepSummary FlowNetwork::step(double dt, const Eigen::VectorXd& volume_chang
 FlowSteadyState FlowNetwork::solve_steady_state() const {
   FlowSteadyState steady;
   steady.injected_rate = parameters_.Q;
-  Solver::Matrix a = solver_->matrix;
-  Solver::Factorisation f;
-  solver_->analyse(f);
+  Solver steady_solver;  // the transient factor stays as it is
+  steady_solver.matrix = solver_->matrix;
   Eigen::VectorXd values;
   assemble_values(1.0, 0.0, values);
-  steady.message = solver_->factorise(f, a, values);
+  steady.message = steady_solver.factorise(values);
   if (!steady.message.empty()) return steady;
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n_unknowns());
   rhs[has_borehole_ ? n_triangles_ : source_triangle_] = parameters_.Q;
-  steady.pressure = f.solve(rhs);
-  if (f.info() != Eigen::Success || !steady.pressure.allFinite()) {
+  steady.pressure = steady_solver.factor.solve(rhs);
+  if (steady_solver.factor.info() != Eigen::Success || !steady.pressure.allFinite()) {
     steady.message = "steady flow solve failed";
     return steady;
   }

@@ -199,6 +199,18 @@ void CholmodSolver::compute(const Matrix& A) {
   if (analyse(matrix_)) refactorize();
 }
 
+void CholmodSolver::update_values(const Matrix& A) {
+  const bool same_pattern = impl_->symbolic && A.isCompressed() && A.rows() == matrix_.rows() &&
+                            A.cols() == matrix_.cols() &&
+                            static_cast<std::size_t>(A.nonZeros()) == impl_->analysed_inner.size() &&
+                            std::equal(impl_->analysed_outer.begin(), impl_->analysed_outer.end(), A.outerIndexPtr()) &&
+                            std::equal(impl_->analysed_inner.begin(), impl_->analysed_inner.end(), A.innerIndexPtr());
+  if (!same_pattern) return compute(A);
+  matrix_ = A;  // the analysed pattern (a modification may have grown the stored one since)
+  report_ = report_keeping_totals(report_);
+  refactorize();
+}
+
 std::mutex& cholmod_analysis_mutex() {
   static std::mutex m;
   return m;
@@ -551,10 +563,10 @@ Eigen::VectorXd CholmodSolver::solve(const Eigen::VectorXd& b) {
     B.xtype = CHOLMOD_REAL;
     B.dtype = CHOLMOD_DOUBLE;
     DensePtr X{nullptr, DenseDeleter{c}};
-    if (!options_.reuse_forward_solve) {
-      X.reset(cholmod_solve(CHOLMOD_A, impl_->factor.get(), &B, c));
-    } else if (options_.parallel_triangular_solve) {
+    if (options_.parallel_triangular_solve) {
       return parallel_solve(b);
+    } else if (!options_.reuse_forward_solve) {
+      X.reset(cholmod_solve(CHOLMOD_A, impl_->factor.get(), &B, c));
     } else {
       // x = P^T (D L^T)^-1 y with y = L^-1 P b, y kept for the next re-solve with the same b.
       if (!impl_->forward || impl_->forward_b.size() != b.size() || impl_->forward_b != b) {
@@ -575,6 +587,7 @@ Eigen::VectorXd CholmodSolver::solve(const Eigen::VectorXd& b) {
   Eigen::VectorXd x = run();
   report_.info = Eigen::Success;
   report_.message.clear();
+  if (!options_.check_residual) return x;
   report_.relative_residual = relative_residual(x, b);
   if (!(report_.relative_residual <= options_.residual_tolerance)) {
     // Round-off accumulated by many updates/downdates: rebuild the factor from A and try once more.
@@ -602,7 +615,7 @@ Eigen::VectorXd CholmodSolver::parallel_solve(const Eigen::VectorXd& b) {
     impl_->subtree.update(L);
     impl_->subtree_current = true;
   }
-  if (!impl_->forward || impl_->forward_b.size() != n || impl_->forward_b != b) {
+  if (!options_.reuse_forward_solve || !impl_->forward || impl_->forward_b.size() != n || impl_->forward_b != b) {
     impl_->forward.reset(
         cholmod_allocate_dense(static_cast<std::size_t>(n), 1, static_cast<std::size_t>(n), CHOLMOD_REAL, impl_->c()));
     if (!impl_->forward) return Eigen::VectorXd::Constant(n, NAN);
@@ -653,6 +666,14 @@ void PcgSolver::compute(const Matrix& A) {
   matrix_.makeCompressed();
   report_ = report_keeping_totals(report_);
   previous_.resize(0);
+  refactorize();
+}
+
+void PcgSolver::update_values(const Matrix& A) {
+  if (A.rows() != matrix_.rows() || A.nonZeros() != matrix_.nonZeros()) return compute(A);
+  matrix_ = A;
+  matrix_.makeCompressed();
+  ++report_.matrix_revision;
   refactorize();
 }
 

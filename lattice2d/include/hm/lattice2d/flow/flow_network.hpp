@@ -18,6 +18,7 @@
 #include "hm/core/state_archive.hpp"
 #include "hm/lattice2d/geometry/dual_graph.hpp"
 #include "hm/lattice2d/geometry/lattice.hpp"
+#include "hm/lattice2d/linalg/spd_solver.hpp"
 
 namespace hm::lattice2d {
 
@@ -158,6 +159,9 @@ struct FlowParameters : FlowOptions {
 /// coupling loop through the borehole node does not converge (docs/coupling.md, section 3), so a case reader takes this
 /// as the default.
 BoreholeDeformation default_borehole_deformation(BoreholeStorage storage);
+
+/// The options of the flow network's CholmodSolver (flow_network.cpp says why each).
+SpdSolverOptions flow_solver_options();
 
 /// The flow parameters of a shared dimensionless parameter set (Q, iota, E/M, E/K_w, b) with time step
 /// dt and the given options.

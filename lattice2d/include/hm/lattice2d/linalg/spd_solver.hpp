@@ -1,9 +1,9 @@
 #pragma once
 /// \file
 /// One small interface for the sparse symmetric positive definite systems of the lattice model (the
-/// beam mechanics of Section 2.1 and, later, the flow network of Section 2.2): factorise or set up a
-/// matrix A, solve A x = b, and apply a symmetric low-rank modification A <- A + sigma W W^T
-/// (sigma = +1 update, -1 downdate) when a beam breaks or a contact opens or closes.
+/// beam mechanics of Section 2.1 and the flow network of Section 2.2): factorise or set up a matrix A,
+/// give it new values on the same pattern, solve A x = b, and apply a symmetric low-rank modification
+/// A <- A + sigma W W^T (sigma = +1 update, -1 downdate) when a beam breaks or a contact opens or closes.
 ///
 /// Two implementations behind it (docs/lattice.md, "Solving"):
 ///  - CholmodSolver (default): CHOLMOD's sparse LDL' with a fill-reducing ordering, kept for the
@@ -66,6 +66,9 @@ struct SpdSolverOptions {
   /// rebuilt and the solve repeated once (CholmodSolver), or the solve is reported as failed.
   /// Allowed: 0 < residual_tolerance < 1.
   double residual_tolerance = 1e-8;
+  /// Whether solve() checks that residual (CholmodSolver). false: the caller checks its solves, as the
+  /// flow network does when it refines a solve with an older factor against a newer matrix.
+  bool check_residual = true;
   /// A pivot D_kk <= pivot_tolerance * max_k D_kk of the (modified) LDL' factor is reported as
   /// Eigen::NumericalIssue (a singular or indefinite matrix). Allowed: 0 <= pivot_tolerance < 1.
   double pivot_tolerance = 1e-13;
@@ -73,8 +76,8 @@ struct SpdSolverOptions {
   /// modification (cholmod_updown_solve); a re-solve with the same b then needs only the backward
   /// half (D L^T x = y), about half the solve. Our choice by measurement (docs/lattice.md).
   bool reuse_forward_solve = true;
-  /// With reuse_forward_solve: do the two triangular solves on all OpenMP threads (OMP_NUM_THREADS),
-  /// the elimination tree cut into independent subtrees; false uses CHOLMOD's one-thread solves.
+  /// Do the two triangular solves on all OpenMP threads (OMP_NUM_THREADS), the elimination tree cut
+  /// into independent subtrees; false uses CHOLMOD's one-thread solves.
   /// The result does not depend on the number of threads (bitwise). Our choice by measurement
   /// (docs/lattice.md).
   bool parallel_triangular_solve = true;
@@ -120,6 +123,10 @@ class SpdSolver {
 
   /// Analyse (ordering, symbolic) and factorise / set up for A. A square, symmetric, both triangles.
   virtual void compute(const Matrix& A) = 0;
+  /// New values on the pattern of the last compute(): the factor / preconditioner is rebuilt for A with
+  /// the ordering kept (a matrix assembled anew on a fixed pattern, as the flow network's every pass).
+  /// Without an earlier compute(), or for another pattern, it is compute(A).
+  virtual void update_values(const Matrix& A) = 0;
   /// x with A x = b for the current A. On failure info() != Success and x is unspecified.
   virtual Eigen::VectorXd solve(const Eigen::VectorXd& b) = 0;
   /// A <- A + sigma W W^T, sigma = +1 or -1, W n x k (k small, e.g. <= 3; any k works).
@@ -168,6 +175,7 @@ class CholmodSolver final : public SpdSolver {
   CholmodSolver& operator=(const CholmodSolver&) = delete;
 
   void compute(const Matrix& A) override;
+  void update_values(const Matrix& A) override;
   Eigen::VectorXd solve(const Eigen::VectorXd& b) override;
   void modify(const Matrix& W, int sigma) override;
   void refactorize() override;
@@ -198,6 +206,7 @@ class PcgSolver final : public SpdSolver {
   PcgSolver& operator=(const PcgSolver&) = delete;
 
   void compute(const Matrix& A) override;
+  void update_values(const Matrix& A) override;
   Eigen::VectorXd solve(const Eigen::VectorXd& b) override;
   void modify(const Matrix& W, int sigma) override;
   void refactorize() override;
