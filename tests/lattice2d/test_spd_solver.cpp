@@ -445,6 +445,19 @@ TEST_CASE("A singular or indefinite matrix is reported by info(), not thrown", "
     restored.solve(s.b);
     CHECK(restored.info() != Eigen::Success);
   }
+  SECTION("without the pivot check (the flow network's option), CHOLMOD's simplicial LDL' is the judge") {
+    Matrix B = s.A;
+    B.coeffRef(5, 5) = -1.0;
+    SpdSolverOptions options;
+    options.supernodal_factorization = false;
+    options.check_pivots = false;
+    options.check_residual = false;
+    CholmodSolver solver(options);
+    solver.compute(B);
+    CHECK(solver.info() == Eigen::Success);  // LDL' factorises an indefinite matrix: a negative pivot
+    const Eigen::VectorXd x = solver.solve(s.b);
+    CHECK((B * x - s.b).norm() < 1e-8 * s.b.norm());  // and solves it
+  }
 }
 
 TEST_CASE("A solver restored from its saved state continues bitwise as the original", "[lattice2d][solver]") {

@@ -72,6 +72,10 @@ struct SpdSolverOptions {
   /// A pivot D_kk <= pivot_tolerance * max_k D_kk of the (modified) LDL' factor is reported as
   /// Eigen::NumericalIssue (a singular or indefinite matrix). Allowed: 0 <= pivot_tolerance < 1.
   double pivot_tolerance = 1e-13;
+  /// Whether a factorisation checks its pivots against pivot_tolerance. false: only CHOLMOD's own
+  /// verdict counts (its LDL' factorises an indefinite matrix without one), for a caller that detects a
+  /// bad matrix by what it means, as the flow network's small-strain check does for inverted triangles.
+  bool check_pivots = true;
   /// Keep the forward solution y = L^-1 P b of the last right-hand side and carry it through every
   /// modification (cholmod_updown_solve); a re-solve with the same b then needs only the backward
   /// half (D L^T x = y), about half the solve. Our choice by measurement (docs/lattice.md).
