@@ -140,13 +140,7 @@ RudnickiOutcome run_variant(const RudnickiVariant& v, const BenchmarkContext& ct
 
 Metric error_metric(const std::string& what, double value, bool gating, const std::string& why,
                     double tolerance = 0.10) {
-  return {.name = what,
-          .value = value,
-          .reference = 0.0,
-          .tolerance = tolerance,
-          .comparison = Comparison::at_most,
-          .justification = why,
-          .gating = gating};
+  return at_most_metric(what, value, tolerance, gating, why);
 }
 
 Metric flow_balance_metric(const std::string& label, double worst) {

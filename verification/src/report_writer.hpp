@@ -27,4 +27,16 @@ std::string format_number(double value);
 /// The benchmarks' short name for format_number, in the prose they build.
 inline std::string fmt(double value) { return format_number(value); }
 
+/// A metric that passes when `value` is at most `tolerance` (an error against a reference of 0).
+inline Metric at_most_metric(const std::string& name, double value, double tolerance, bool gating,
+                             const std::string& why) {
+  return {.name = name,
+          .value = value,
+          .reference = 0.0,
+          .tolerance = tolerance,
+          .comparison = Comparison::at_most,
+          .justification = why,
+          .gating = gating};
+}
+
 }  // namespace hm::verification
