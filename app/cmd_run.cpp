@@ -61,6 +61,23 @@ struct RunArgs {
   int stop_after_steps = -1;
 };
 
+// What usually cures a step that does not converge or a solve that fails (docs/coupling.md), as
+// "; to try: ..." (empty: nothing to suggest).
+std::string what_to_try_after(const cases::RunCase& c, const lattice2d::CoupledRunSummary& run) {
+  // A lattice nearly cut through by one pass's breaks: only letting the fluid answer each break helps.
+  if (run.near_mechanism)
+    return c.coupling.events_per_check == 1 ? std::string() : std::string("; to try: [coupling] events_per_check = 1");
+  std::string remedies = "; to try: ";
+  if (c.coupling.relaxation != lattice2d::CouplingRelaxation::anderson)
+    remedies += "[coupling] relaxation = \"anderson\", ";
+  // A fluid-filled crack whose pressure is far from uniform (docs/coupling.md).
+  if (c.flow.crack_coupling == lattice2d::CrackCoupling::full &&
+      c.coupling.crack_stabiliser == lattice2d::CrackStabiliser::uniform_pressure &&
+      (c.flow.fracture_flow.law != lattice2d::FractureFlow::permeability || c.physics.parameters.iota < 1e6))
+    remedies += "[coupling] crack_stabiliser = \"crack_unknowns\", ";
+  return remedies + "a smaller [numerics] dt_initial or dt_max";
+}
+
 void run_case(const RunArgs& a, int& exit_code, const std::string& command_line) {
   // 1. Read and validate everything, the output folder and a checkpoint to resume included, before
   //    computing. A resumed run reads its folder's config.toml and continues in that folder.
@@ -198,21 +215,7 @@ void run_case(const RunArgs& a, int& exit_code, const std::string& command_line)
     core::write_stopped_status(out->path() / "status.toml", "run", why, step, model->time(), c.stepping.t_end, kept,
                                {checkpoint_step, checkpoint_t});
     out->commit(why);
-    // What usually cures a step that does not converge or a solve that fails (docs/coupling.md).
-    const std::string what_to_try =
-        interrupted ? std::string()
-                    : std::string("; to try: ") +
-                          (c.coupling.relaxation == lattice2d::CouplingRelaxation::anderson
-                               ? ""
-                               : "[coupling] relaxation = \"anderson\", ") +
-                          // A fluid-filled crack whose pressure is far from uniform (docs/coupling.md).
-                          (c.flow.crack_coupling == lattice2d::CrackCoupling::full &&
-                                   c.coupling.crack_stabiliser == lattice2d::CrackStabiliser::uniform_pressure &&
-                                   (c.flow.fracture_flow.law != lattice2d::FractureFlow::permeability ||
-                                    c.physics.parameters.iota < 1e6)
-                               ? "[coupling] crack_stabiliser = \"crack_unknowns\", "
-                               : "") +
-                          "a smaller [numerics] dt_initial or dt_max";
+    const std::string what_to_try = interrupted ? std::string() : what_to_try_after(c, run);
     std::cerr << "hmlattice run: " << core::one_line(why, 300) << what_to_try << "; the " << step
               << " steps done (t = " << model->time() << " of " << c.stepping.t_end << ") are in " << kept.string()
               << ", marked incomplete (status.toml)"

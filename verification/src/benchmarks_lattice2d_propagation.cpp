@@ -193,6 +193,15 @@ KgdRun run_kgd(const cases::RunCase& c) {
   return r;
 }
 
+// The crack's volume over the injected volume at the last state with c up to the growth window's end:
+// a crack grown further may break through the disk's drained rim (the brittle law's does at N = 3000,
+// t = 4.3e-8, c = 0.55) and lose its fluid there, which says nothing of the coupling.
+double fluid_in_crack_while_growing(const KgdRun& run) {
+  const auto last = std::find_if(run.points.rbegin(), run.points.rend(),
+                                 [](const KgdPoint& p) { return p.half_length <= kGrowthFitTo; });
+  return last == run.points.rend() ? 0.0 : last->crack_volume / last->injected;
+}
+
 struct KgdMeasures {
   int n = 0;                  // growth states with c in [kGrowthFitFrom, kGrowthFitTo]
   double toughness = 0.0;     // median p sqrt(pi c)
@@ -232,7 +241,7 @@ void add_kgd_metrics(const std::string& at, bool sawtooth, const KgdRun& run, do
                      .comparison = Comparison::at_least,
                      .justification = run.ok ? "the fluid-driven crack runs to its end" : run.message,
                      .gating = sawtooth});
-  metrics.push_back({.name = "fluid in the crack / injected at t_end (" + at + ")",
+  metrics.push_back({.name = "fluid in the crack / injected, c <= 0.3 (" + at + ")",
                      .value = fluid_in_crack,
                      .reference = 1.0,
                      .tolerance = 0.02,
@@ -254,8 +263,11 @@ void add_kgd_metrics(const std::string& at, bool sawtooth, const KgdRun& run, do
                      .reference = 1.0,
                      .tolerance = 0.10,
                      .comparison = Comparison::rel_error,
-                     .justification = "the goal (10%); not met: the law's own overshoot, as in "
-                                      "lattice2d.griffith_growth; shown, not gated",
+                     .justification = sawtooth ? "the goal (10%); not met: the law's own overshoot, as in "
+                                                 "lattice2d.griffith_growth; shown, not gated"
+                                               : "the paper's beam has no fracture energy: its K against the saw-tooth "
+                                                 "law's K_c for comparison (it rises with N, "
+                                                 "lattice2d.fracture_energy); shown, not gated",
                      .gating = false});
 }
 
@@ -294,7 +306,7 @@ BenchmarkResult kgd_toughness(const BenchmarkContext& ctx) {
                   "), measured over c in [0.1, 0.3]; the dry crack grown by its volume on the same lattice "
                   "and law beside it",
               {"law", "N", "growth states", "K / K_c (fluid)", "K / K_c (dry)", "c / c_Griffith(V)",
-               "fluid in the crack", "max balance error", "steps", "passes", "seconds"},
+               "fluid in the crack (c <= 0.3)", "max balance error", "steps", "passes", "seconds"},
               {}};
   // By size, both laws at each: a paper-tier run stopped part-way has whole comparisons.
   for (long long n : sizes)
@@ -302,7 +314,14 @@ BenchmarkResult kgd_toughness(const BenchmarkContext& ctx) {
       cases::RunCase c = base;
       c.lattice.n_particles = n;
       if (!sawtooth) {
-        c = cases::read_run_case(case_file, {"fracture.law=\"brittle\"", "fracture.fracture_energy=0"});
+        // The brittle law under the saw-tooth law's event control: one break per converged state, each
+        // step's first within 2% of its threshold, so that the crack grows at its volume as the dry twin
+        // does. With the brittle law's own (every break of a pass at the pass's pressures) the crack runs
+        // through the disk in one pass at t ~ 1.3e-8 at every N (103 to 647 breaks), which nearly cuts
+        // the free disk in two and ends the run.
+        c = cases::read_run_case(
+            case_file, {"fracture.law=\"brittle\"", "fracture.fracture_energy=0", "coupling.events_per_check=1",
+                        "coupling.fracture_check=\"at_convergence\"", "numerics.overshoot_tolerance=0.02"});
         c.lattice.n_particles = n;
       }
       const std::string law = sawtooth ? "sawtooth" : "brittle";
@@ -313,8 +332,7 @@ BenchmarkResult kgd_toughness(const BenchmarkContext& ctx) {
                  p.half_length, static_cast<double>(p.n_broken)});
       const KgdMeasures m = measure(run, e_prime, k_c);
       const GrowthMeasures d = measure_growth(grow_pressurised_crack(dry_twin(c, sawtooth ? g_f : 0.0)));
-      const double fluid_in_crack =
-          run.points.empty() ? 0.0 : run.points.back().crack_volume / run.points.back().injected;
+      const double fluid_in_crack = fluid_in_crack_while_growing(run);
       table.rows.push_back({law, std::to_string(n), std::to_string(m.n), fmt(m.toughness / k_c), fmt(d.toughness / k_c),
                             fmt(m.length_ratio), fmt(fluid_in_crack), fmt(run.max_balance), std::to_string(run.n_steps),
                             std::to_string(run.passes), fmt(run.seconds)});

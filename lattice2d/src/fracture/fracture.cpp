@@ -142,6 +142,7 @@ BreakLoopSummary run_break_loop(BeamMechanics& mechanics, const DualGraph& dual,
     summary.n_contact_changes += solved.n_contact_changes;
     if (!solved.is_converged()) {
       summary.status = BreakLoopStatus::solve_failed;
+      summary.near_mechanism = solved.near_mechanism;
       summary.message = "mechanical solve " + std::to_string(summary.n_solves) + " after " +
                         std::to_string(summary.n_breaks) + " breaks: " + solved.message;
       break;

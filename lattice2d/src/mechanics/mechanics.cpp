@@ -700,6 +700,14 @@ MechanicsSummary BeamMechanics::solve(bool equilibrium_check) {
       summary.info = solver_->info();
     if (summary.info != Eigen::Success) {
       summary.message = "linear solver: " + solver_->report().message;
+      // A solve that fails its residual check far outside the small-strain range is not round-off: a part
+      // of the lattice hangs on a ligament of a few beams, and the factor's conditioning goes with it.
+      const double u_max = full_vector(x).cwiseAbs().maxCoeff();
+      if (u_max > kMaxSmallStrainDisplacement) {
+        summary.near_mechanism = true;
+        summary.message = "the lattice is nearly cut through: displacements up to " + format_value(u_max) +
+                          " R, a part hanging on a few beams (" + summary.message + ")";
+      }
       break;
     }
     raw_ = full_vector(x);

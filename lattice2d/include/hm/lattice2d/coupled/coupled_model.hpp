@@ -224,6 +224,9 @@ struct CoupledStepSummary {
   double geometry_seconds = 0.0;        ///< deformed dual graph and FlowNetwork::update_geometry
   double flow_seconds = 0.0;            ///< FlowNetwork::solve (refactorisation and solve)
   std::string message;                  ///< empty when converged
+  /// A solver_failure with the lattice nearly cut through by the breaks of one pass at physical pressures
+  /// (BreakLoopSummary's): one event per check lets the fluid answer each break.
+  bool near_mechanism = false;
   bool is_ok() const { return status == CoupledStatus::converged || status == CoupledStatus::accepted_unconverged; }
 };
 
@@ -237,6 +240,7 @@ struct CoupledRunSummary {
   double seconds = 0.0;
   double max_balance_error = 0.0;
   std::string message;
+  bool near_mechanism = false;  ///< the last step's (CoupledStepSummary's)
   /// The accepted steps' time split and counters (CoupledStepSummary's), summed.
   double step_seconds = 0.0, mechanics_seconds = 0.0, stress_seconds = 0.0, break_seconds = 0.0, geometry_seconds = 0.0,
          flow_seconds = 0.0;

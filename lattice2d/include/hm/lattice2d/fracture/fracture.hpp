@@ -85,6 +85,7 @@ struct BreakLoopSummary {
   double stress_seconds = 0.0;   ///< beam stresses and the failure check
   double break_seconds = 0.0;    ///< BeamMechanics::break_beam (factor downdates, detachment)
   std::string message;           ///< why, when not stable
+  bool near_mechanism = false;   ///< solve_failed with the lattice nearly cut through (MechanicsSummary's)
   bool is_stable() const { return status == BreakLoopStatus::stable; }
 };
 

@@ -107,6 +107,10 @@ struct MechanicsOptions {
 std::vector<BeamForce> connection_forces(const Lattice& lattice, const BeamParameters& parameters,
                                          const std::vector<BeamState>& states, const Eigen::VectorXd& u);
 
+/// The largest displacement (over R; rotations in rad) the small-strain lattice stands for: 1e3 times a
+/// rock's strain at failure. Beyond it a state means nothing, whatever its residuals.
+inline constexpr double kMaxSmallStrainDisplacement = 0.1;
+
 /// What one BeamMechanics::solve did (Ceres' Summary in small).
 struct MechanicsSummary {
   Eigen::ComputationInfo info = Eigen::Success;  ///< linear solver status (Success, NumericalIssue, ...)
@@ -122,6 +126,9 @@ struct MechanicsSummary {
   double equilibrium_residual = 0.0;
   double solve_seconds = 0.0;  ///< wall time of this solve()
   std::string message;         ///< why, when not converged
+  /// A failed solve whose displacements pass kMaxSmallStrainDisplacement: parts of the lattice held by
+  /// a few beams move almost freely (the lattice nearly cut through), and the matrix is near-singular.
+  bool near_mechanism = false;
   bool is_converged() const { return info == Eigen::Success && contact_converged; }
 };
 
