@@ -48,6 +48,17 @@ std::string StateWriter::bytes() const {
   return out;
 }
 
+void StateWriter::clear() { buffer_.assign(header); }
+
+StateReader StateReader::of_snapshot(const StateWriter& w, std::string source) {
+  StateReader r;
+  r.snapshot_ = &w.buffer_;
+  r.source_ = std::move(source);
+  r.end_ = w.buffer_.size();
+  r.position_ = header.size();
+  return r;
+}
+
 StateReader::StateReader(std::string bytes, std::string source) : bytes_(std::move(bytes)), source_(std::move(source)) {
   if (bytes_.size() < header.size() + 4 || bytes_.compare(0, header.size(), header) != 0)
     throw InputError(source_ + ": not a state file of this toolkit (or of another format version)");
@@ -68,7 +79,7 @@ std::size_t StateReader::next_count(std::string_view tag, char kind, std::size_t
   std::size_t at = position_;
   auto take = [&](void* out, std::size_t n) {
     if (at + n > end_) fail(tag, "the file ends early");
-    std::memcpy(out, bytes_.data() + at, n);
+    std::memcpy(out, data() + at, n);
     at += n;
   };
   std::uint16_t length = 0;
@@ -89,7 +100,7 @@ void StateReader::get_raw(std::string_view tag, char kind, std::size_t element_s
   const std::size_t stored = next_count(tag, kind, element_size);
   if (stored != n) fail(tag, std::to_string(stored) + " values, expected " + std::to_string(n));
   position_ += sizeof(std::uint16_t) + tag.size() + 1 + sizeof(std::uint64_t);
-  if (n > 0) std::memcpy(data, bytes_.data() + position_, n * element_size);
+  if (n > 0) std::memcpy(data, this->data() + position_, n * element_size);
   position_ += n * element_size;
 }
 

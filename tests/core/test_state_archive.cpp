@@ -86,3 +86,28 @@ TEST_CASE("The state archive refuses another tag, another type, a truncated or a
   CHECK_THROWS_AS(StateReader(altered, "f"), hm::InputError);
   CHECK_THROWS_WITH(StateReader("not a checkpoint", "f"), Catch::Contains("not a state file"));
 }
+
+TEST_CASE("A snapshot kept in memory is read in place, and its writer is cleared for the next", "[core]") {
+  const double third = 1.0 / 3.0;
+  StateWriter w;
+  w.put("old", 1.0);
+  w.clear();  // the next step's snapshot: nothing of the last one is left
+  w.put("third", third);
+  w.put("ints", std::vector<int>{-7, 0, 2147483647});
+  StateReader r = StateReader::of_snapshot(w, "snapshot");
+  double x = 0.0;
+  std::vector<int> ints;
+  r.get("third", x);
+  r.get("ints", ints);
+  CHECK(bits(x) == bits(third));
+  CHECK(ints == std::vector<int>{-7, 0, 2147483647});
+  CHECK(r.at_end());
+  // The same tags and types are checked as in a file: a snapshot read in another order is refused.
+  StateReader wrong = StateReader::of_snapshot(w, "snapshot");
+  std::vector<int> none;
+  CHECK_THROWS_WITH(wrong.get("ints", none), Catch::Contains("snapshot: at 'ints'"));
+  // The writer's bytes for a file are unchanged by the in-place reading.
+  StateReader file(w.bytes(), "file");
+  file.get("third", x);
+  CHECK(bits(x) == bits(third));
+}

@@ -262,14 +262,15 @@ CoupledStepSummary CoupledModel::step(double dt, double overshoot_tolerance) {
   // A failed attempt must leave no trace: the beams it broke, the contacts it changed, the factor's
   // updates and the strengths it used are undone from this snapshot, so that a retry with a shorter
   // step starts from t^n exactly as a run that took the shorter step in the first place.
-  core::StateWriter at_start;
-  save_model_state(at_start);
+  step_start_.clear();
+  save_model_state(step_start_);
   PassGuess guess = predict(dt);
   DualGraph dual;
   const bool converged = iterate(dt, overshoot_tolerance, guess, dual, summary);
   finish_step(dt, converged, std::move(dual), summary);
   if (!summary.is_ok()) {
-    core::StateReader snapshot(at_start.bytes(), "the state at t = " + hm::core::format_value(time()));
+    core::StateReader snapshot =
+        core::StateReader::of_snapshot(step_start_, "the state at t = " + hm::core::format_value(time()));
     restore_model_state(snapshot);
   }
   summary.n_broken = n_broken();

@@ -73,8 +73,11 @@ class StateWriter {
 
   /// The content with its checksum.
   std::string bytes() const;
+  /// Empties the writer for the next state, keeping its memory (a snapshot taken every step).
+  void clear();
 
  private:
+  friend class StateReader;
   template <class T>
   void put_array(std::string_view tag, const T* data, std::size_t n);
   void put_raw(std::string_view tag, char kind, std::size_t element_size, const void* data, std::size_t n);
@@ -87,6 +90,9 @@ class StateReader {
  public:
   /// Checks the header and the checksum of `bytes`.
   StateReader(std::string bytes, std::string source);
+  /// Reads what `w` holds now, in place and without a checksum (a snapshot this process took and
+  /// keeps in memory, where nothing can damage it): `w` must outlive the reader and not change.
+  static StateReader of_snapshot(const StateWriter& w, std::string source);
   void get(std::string_view tag, double& value) { get_array(tag, &value, 1); }
   void get(std::string_view tag, std::int64_t& value) { get_array(tag, &value, 1); }
   void get(std::string_view tag, int& value);
@@ -124,7 +130,10 @@ class StateReader {
   std::size_t next_count(std::string_view tag, char kind, std::size_t element_size) const;
   void get_raw(std::string_view tag, char kind, std::size_t element_size, void* data, std::size_t n);
   [[noreturn]] void fail(std::string_view tag, const std::string& why) const;
+  StateReader() = default;
+  const char* data() const { return snapshot_ ? snapshot_->data() : bytes_.data(); }
   std::string bytes_, source_;
+  const std::string* snapshot_ = nullptr;  // of_snapshot's writer buffer, read in place of bytes_
   std::size_t position_ = 0, end_ = 0;
 };
 

@@ -16,6 +16,7 @@
 #include <Eigen/Core>
 
 #include "hm/core/enum_names.hpp"
+#include "hm/core/state_archive.hpp"
 #include "hm/lattice2d/coupled/coupling.hpp"
 #include "hm/lattice2d/coupled/relaxation.hpp"
 #include "hm/lattice2d/flow/flow_network.hpp"
@@ -448,6 +449,9 @@ class CoupledModel {
   bool at_rest_ = false;  // settle() has run
   int n_cut_ = 0;         // pre-cut beams (cut_beams), the head of break_log_
   RunCursor cursor_;
+  // The state at the start of the step being taken, restored if the attempt fails; one buffer for
+  // every step (its memory kept: at N = 1e4 a snapshot holds the factors, ~10 MB).
+  core::StateWriter step_start_;
 };
 
 }  // namespace hm::lattice2d
