@@ -78,6 +78,48 @@ std::string what_to_try_after(const cases::RunCase& c, const lattice2d::CoupledR
   return remedies + "a smaller [numerics] dt_initial or dt_max";
 }
 
+// The case's defining numbers, one line before anything is computed.
+void print_case(const cases::RunCase& c) {
+  const auto& p = c.physics.parameters;
+  std::cout << "run: Q = " << p.Q << ", b = " << p.material.b << ", E/M = " << p.material.E_over_M
+            << ", iota = " << p.iota << "; " << core::name_of(c.lattice.domain) << ", N = " << c.lattice.n_particles
+            << ", seed = " << c.lattice.seed << ", outer " << core::name_of(c.boundary.outer);
+  if (!c.insitu.is_zero())
+    std::cout << " (S_H = " << c.insitu.S_H << ", S_h = " << c.insitu.S_h << " at " << c.insitu.theta_H_deg
+              << " deg, p0 = " << c.insitu.p0 << ")";
+  std::cout << "; split " << core::name_of(c.coupling.split) << ", Psi = " << c.coupling.terms.psi
+            << ", xi = " << c.coupling.terms.xi << "; t_end = " << c.stepping.t_end << "\n";
+}
+
+// The lattice built, and the saw-tooth law's teeth where it is on.
+void print_model(const lattice2d::CoupledModel& model) {
+  std::cout << "lattice: " << model.lattice().n_particles() << " particles, " << model.lattice().n_beams() << " beams, "
+            << model.lattice().n_triangles() << " triangles\n";
+  if (const lattice2d::SawtoothLaw* law = model.sawtooth_law())
+    std::cout << "saw-tooth law: G_f/(E R) = " << core::format_value(law->options().fracture_energy) << ", "
+              << law->options().teeth.n_teeth << " teeth of ratio "
+              << core::format_value(law->options().teeth.reduction) << "; " << law->n_brittle_beams() << " of "
+              << model.lattice().n_beams()
+              << " beams are too long for their G_f and have one tooth at the strength that dissipates it\n";
+}
+
+// The run's counters and its time split, for the progress line's last word.
+std::string summary_line(const lattice2d::CoupledRunSummary& run, const lattice2d::CoupledModel& model,
+                         double setup_seconds) {
+  char summary[500];
+  std::snprintf(summary, sizeof summary,
+                "%d steps (%d halved), %d coupling iterations (= flow factorisations and solves), %d beams broken "
+                "(= factor downdates), %lld mechanical solves, %lld contact switches, %lld mechanical "
+                "refactorisations (%lld after failed updates), max volume-balance error %.2e; set-up %.1f s, "
+                "mechanics solves %.1f s, stresses and failure checks %.1f s, downdates %.1f s, geometry %.1f s, "
+                "flow %.1f s; peak memory %.0f MB",
+                run.n_steps, run.n_step_halvings, run.total_iterations, model.n_broken(), run.n_mechanics_solves,
+                run.n_contact_changes, run.n_mechanics_factorizations, run.n_mechanics_update_failures,
+                run.max_balance_error, setup_seconds, run.mechanics_seconds, run.stress_seconds, run.break_seconds,
+                run.geometry_seconds, run.flow_seconds, core::peak_memory_bytes() / 1e6);
+  return summary;
+}
+
 void run_case(const RunArgs& a, int& exit_code, const std::string& command_line) {
   // 1. Read and validate everything, the output folder and a checkpoint to resume included, before
   //    computing. A resumed run reads its folder's config.toml and continues in that folder.
@@ -89,15 +131,7 @@ void run_case(const RunArgs& a, int& exit_code, const std::string& command_line)
   const cases::RunCase c = resuming ? cases::read_run_case(cases::run_file_path(out->path(), cases::RunFileId::config))
                                     : cases::read_run_case(a.case_file, a.set);
   const std::string case_text = cases::run_case_to_toml(c, "");
-  const auto& p = c.physics.parameters;
-  std::cout << "run: Q = " << p.Q << ", b = " << p.material.b << ", E/M = " << p.material.E_over_M
-            << ", iota = " << p.iota << "; " << core::name_of(c.lattice.domain) << ", N = " << c.lattice.n_particles
-            << ", seed = " << c.lattice.seed << ", outer " << core::name_of(c.boundary.outer);
-  if (!c.insitu.is_zero())
-    std::cout << " (S_H = " << c.insitu.S_H << ", S_h = " << c.insitu.S_h << " at " << c.insitu.theta_H_deg
-              << " deg, p0 = " << c.insitu.p0 << ")";
-  std::cout << "; split " << core::name_of(c.coupling.split) << ", Psi = " << c.coupling.terms.psi
-            << ", xi = " << c.coupling.terms.xi << "; t_end = " << c.stepping.t_end << "\n";
+  print_case(c);
 
   // 2. Build the lattice and the coupled model (mechanics factorised once, with the Eq. 20 springs).
   //    The beams are the toolkit's calibrated constants (E = 1; the lattice's nu is
@@ -117,14 +151,7 @@ void run_case(const RunArgs& a, int& exit_code, const std::string& command_line)
     });
   }
   const double setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_start).count();
-  std::cout << "lattice: " << model->lattice().n_particles() << " particles, " << model->lattice().n_beams()
-            << " beams, " << model->lattice().n_triangles() << " triangles\n";
-  if (const lattice2d::SawtoothLaw* law = model->sawtooth_law())
-    std::cout << "saw-tooth law: G_f/(E R) = " << core::format_value(law->options().fracture_energy) << ", "
-              << law->options().teeth.n_teeth << " teeth of ratio "
-              << core::format_value(law->options().teeth.reduction) << "; " << law->n_brittle_beams() << " of "
-              << model->lattice().n_beams()
-              << " beams are too long for their G_f and have one tooth at the strength that dissipates it\n";
+  print_model(*model);
   const int first_step = model->run_cursor().totals.n_steps;
   if (resuming)
     std::cout << "resumed at step " << first_step << ", t = " << model->time() << ", from "
@@ -182,18 +209,7 @@ void run_case(const RunArgs& a, int& exit_code, const std::string& command_line)
       });
   // Ending at the first break is the run's end, not an interruption (whatever else came with that step).
   const bool complete = run.is_ok() || stopped_at_first_break;
-  char summary[500];
-  std::snprintf(summary, sizeof summary,
-                "%d steps (%d halved), %d coupling iterations (= flow factorisations and solves), %d beams broken "
-                "(= factor downdates), %lld mechanical solves, %lld contact switches, %lld mechanical "
-                "refactorisations (%lld after failed updates), max volume-balance error %.2e; set-up %.1f s, "
-                "mechanics solves %.1f s, stresses and failure checks %.1f s, downdates %.1f s, geometry %.1f s, "
-                "flow %.1f s; peak memory %.0f MB",
-                run.n_steps, run.n_step_halvings, run.total_iterations, model->n_broken(), run.n_mechanics_solves,
-                run.n_contact_changes, run.n_mechanics_factorizations, run.n_mechanics_update_failures,
-                run.max_balance_error, setup_seconds, run.mechanics_seconds, run.stress_seconds, run.break_seconds,
-                run.geometry_seconds, run.flow_seconds, core::peak_memory_bytes() / 1e6);
-  progress.finish(summary);
+  progress.finish(summary_line(run, *model, setup_seconds));
   if (run.n_mechanics_update_failures >
       0)  // each cost a refactorisation: say what CHOLMOD reported (docs/borehole_fracture.md)
     std::cout << "last failed update: " << model->mechanics().solver().report().last_update_failure << "\n";
