@@ -574,16 +574,14 @@ bool CoupledModel::within_small_strain(CoupledStepSummary& summary) const {
   // have fixed points far outside that range (a fluid-filled crack whose stabiliser misses most of its
   // compliance: pressures ~100 E, displacements ~1e3 R, the deformed areas' storage balancing the
   // books). No rock reaches them: such a step is refused like one that did not converge, and retried.
-  constexpr double kMaxDisplacement = kMaxSmallStrainDisplacement;
-  constexpr double kMaxPressure = kMaxSmallStrainPressure;
   const double u_max = mechanics_->displacement().cwiseAbs().maxCoeff();
   const double p_max = flow_->trial_pressure().cwiseAbs().maxCoeff();
-  if (u_max <= kMaxDisplacement && p_max <= kMaxPressure) return true;
+  if (u_max <= kMaxSmallStrainDisplacement && p_max <= kMaxSmallStrainPressure) return true;
   summary.message = "coupling at t = " + hm::core::format_value(summary.time) +
                     ": converged to a state outside the small-strain model (largest displacement " +
                     hm::core::format_value(u_max) + " R or rad, largest |p| = " + hm::core::format_value(p_max) +
-                    " E; limits " + hm::core::format_value(kMaxDisplacement) + " and " +
-                    hm::core::format_value(kMaxPressure) + " E)";
+                    " E; limits " + hm::core::format_value(kMaxSmallStrainDisplacement) + " and " +
+                    hm::core::format_value(kMaxSmallStrainPressure) + " E)";
   return false;
 }
 

@@ -185,6 +185,9 @@ PivotRange ldl_pivots(const cholmod_factor& L) {
   return d;
 }
 
+// The pivots where they are checked; an unchecked factor (the flow's, every pass) is not scanned.
+PivotRange checked_pivots(const cholmod_factor& L, bool check) { return check ? ldl_pivots(L) : PivotRange{}; }
+
 }  // namespace
 
 CholmodSolver::~CholmodSolver() = default;
@@ -460,8 +463,8 @@ void CholmodSolver::refactorize() {
   }
   report_.info = Eigen::Success;
   report_.message.clear();
-  if (const PivotRange d = ldl_pivots(*impl_->factor);
-      options_.check_pivots && !d.acceptable(options_.pivot_tolerance)) {
+  if (const PivotRange d = checked_pivots(*impl_->factor, options_.check_pivots);
+      !d.acceptable(options_.pivot_tolerance)) {
     report_.info = Eigen::NumericalIssue;
     report_.message = "LDL' pivot " + hm::core::format_value(d.min) + " <= pivot_tolerance * max pivot " +
                       hm::core::format_value(d.max) + ": matrix singular or indefinite";
@@ -534,8 +537,8 @@ void CholmodSolver::modify(const Matrix& W, int sigma) {
     return;
   }
   // Only the pivots on the modified path change, but an O(n) scan is cheap against a solve.
-  if (const PivotRange d = ldl_pivots(*impl_->factor);
-      options_.check_pivots && !d.acceptable(options_.pivot_tolerance)) {
+  if (const PivotRange d = checked_pivots(*impl_->factor, options_.check_pivots);
+      !d.acceptable(options_.pivot_tolerance)) {
     report_.info = Eigen::NumericalIssue;
     report_.message =
         "LDL' pivot " + hm::core::format_value(d.min) + " after a low-rank modification: matrix singular or indefinite";
