@@ -32,14 +32,15 @@ std::string crc_of(const std::string& text) {
 
 void write_checkpoint(const std::filesystem::path& dir, const std::string& case_text,
                       const hm::lattice2d::CoupledModel& model, RunRecorder& recorder) {
-  core::StateWriter w;
-  w.put("build", build_identity());
-  w.put("case", case_text);
-  model.save_state(w);
-  recorder.save_state(w);
-  const std::string bytes = w.bytes();
+  // Streamed to the file: the state is as large as the model's factors, and a copy of it in memory
+  // would be most of a large run's peak memory.
   core::write_file_atomically(dir / checkpoint_file_name, [&](std::ostream& out) {
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    core::StateWriter w(out);
+    w.put("build", build_identity());
+    w.put("case", case_text);
+    model.save_state(w);
+    recorder.save_state(w);
+    w.finish();
   });
 }
 

@@ -3,6 +3,8 @@
 #include "hm/core/state_archive.hpp"
 
 #include <cstring>
+#include <ostream>
+#include <stdexcept>
 
 #include <boost/crc.hpp>
 
@@ -29,26 +31,67 @@ void append(std::string& out, T value) {
 
 StateWriter::StateWriter() : buffer_(header) {}
 
+StateWriter::StateWriter(std::ostream& out) : stream_(&out), stream_crc_(boost::crc_32_type().get_interim_remainder()) {
+  write_bytes(header.data(), header.size());
+}
+
+StateWriter::StateWriter(Counting) : counting_(true), counted_(header.size()) {}
+
+void StateWriter::write_bytes(const void* data, std::size_t n) {
+  if (finished_) throw std::logic_error("StateWriter: a value put after finish()");
+  if (counting_) {
+    counted_ += n;
+    return;
+  }
+  if (!stream_) {
+    buffer_.append(static_cast<const char*>(data), n);
+    return;
+  }
+  stream_->write(static_cast<const char*>(data), static_cast<std::streamsize>(n));
+  boost::crc_32_type crc(stream_crc_);  // continued from the bytes before: the checksum of the whole
+  crc.process_bytes(data, n);
+  stream_crc_ = crc.get_interim_remainder();
+}
+
 void StateWriter::put(std::string_view tag, const std::vector<bool>& flags) {
   const std::string bytes(flags.begin(), flags.end());  // one char 0 or 1 per flag
   put_array(tag, bytes.data(), bytes.size());
 }
 
 void StateWriter::put_raw(std::string_view tag, char kind, std::size_t element_size, const void* data, std::size_t n) {
-  append(buffer_, static_cast<std::uint16_t>(tag.size()));
-  buffer_.append(tag);
-  buffer_.push_back(kind);
-  append(buffer_, static_cast<std::uint64_t>(n));
-  if (n > 0) buffer_.append(static_cast<const char*>(data), n * element_size);
+  const auto length = static_cast<std::uint16_t>(tag.size());
+  const auto count = static_cast<std::uint64_t>(n);
+  write_bytes(&length, sizeof length);
+  write_bytes(tag.data(), tag.size());
+  write_bytes(&kind, 1);
+  write_bytes(&count, sizeof count);
+  if (n > 0) write_bytes(data, n * element_size);
 }
 
 std::string StateWriter::bytes() const {
-  std::string out = buffer_;
+  if (stream_) throw std::logic_error("StateWriter::bytes() of a streamed writer");
+  std::string out;
+  out.reserve(buffer_.size() + 4);
+  out = buffer_;
   append(out, crc32(buffer_.data(), buffer_.size()));
   return out;
 }
 
-void StateWriter::clear() { buffer_.assign(header); }
+void StateWriter::clear() {
+  if (stream_) throw std::logic_error("StateWriter::clear() of a streamed writer");
+  // Room for a state a quarter larger than the last, made while the buffer is empty: growing a full
+  // buffer would hold the old and the new copy of a state at once, the peak of a large run's memory.
+  const std::size_t room = buffer_.size() + buffer_.size() / 4;
+  buffer_.assign(header);
+  if (buffer_.capacity() < room) buffer_.reserve(room);
+}
+
+void StateWriter::finish() {
+  if (!stream_) throw std::logic_error("StateWriter::finish() of an in-memory writer");
+  const std::uint32_t crc = boost::crc_32_type(stream_crc_).checksum();
+  write_bytes(&crc, sizeof crc);
+  finished_ = true;
+}
 
 StateReader StateReader::of_snapshot(const StateWriter& w, std::string source) {
   StateReader r;

@@ -262,6 +262,12 @@ CoupledStepSummary CoupledModel::step(double dt, double overshoot_tolerance) {
   // A failed attempt must leave no trace: the beams it broke, the contacts it changed, the factor's
   // updates and the strengths it used are undone from this snapshot, so that a retry with a shorter
   // step starts from t^n exactly as a run that took the shorter step in the first place.
+  // The first snapshot is measured first, so that its buffer is made once at its size (growing it would
+  // hold two copies of the state at once); later ones reuse it.
+  if (first_snapshot_) {
+    step_start_.reserve(core::StateWriter::measure([this](core::StateWriter& w) { save_model_state(w); }));
+    first_snapshot_ = false;
+  }
   step_start_.clear();
   save_model_state(step_start_);
   PassGuess guess = predict(dt);

@@ -277,9 +277,8 @@ void transfer_report(Archive& a, Report& r) {
 }
 
 template <class T>
-std::vector<T> array_of(const void* data, std::size_t n) {
-  const auto* p = static_cast<const T*>(data);
-  return std::vector<T>(p, p + n);
+const T* elements(const void* data) {
+  return static_cast<const T*>(data);
 }
 
 template <class T>
@@ -312,18 +311,18 @@ void CholmodSolver::save_state(core::StateWriter& w) const {
     w.put("L.nzmax", L->nzmax);
     w.put("L.ordering", L->ordering);
     w.put("L.is_monotonic", L->is_monotonic);
-    w.put("L.Perm", array_of<int>(L->Perm, n));
-    w.put("L.ColCount", array_of<int>(L->ColCount, n));
-    w.put("L.p", array_of<int>(L->p, n + 1));
-    w.put("L.i", array_of<int>(L->i, L->nzmax));
-    w.put("L.x", array_of<double>(L->x, L->nzmax));
-    w.put("L.nz", array_of<int>(L->nz, n));
-    w.put("L.next", array_of<int>(L->next, n + 2));
-    w.put("L.prev", array_of<int>(L->prev, n + 2));
+    w.put("L.Perm", elements<int>(L->Perm), n);
+    w.put("L.ColCount", elements<int>(L->ColCount), n);
+    w.put("L.p", elements<int>(L->p), n + 1);
+    w.put("L.i", elements<int>(L->i), L->nzmax);
+    w.put("L.x", elements<double>(L->x), L->nzmax);
+    w.put("L.nz", elements<int>(L->nz), n);
+    w.put("L.next", elements<int>(L->next), n + 2);
+    w.put("L.prev", elements<int>(L->prev), n + 2);
   }
   w.put("cholmod.has_forward", impl_->forward != nullptr);
   if (impl_->forward) {
-    w.put("forward.y", array_of<double>(impl_->forward->x, impl_->forward->nrow));
+    w.put("forward.y", elements<double>(impl_->forward->x), impl_->forward->nrow);
     w.put("forward.b", impl_->forward_b);
   }
 }

@@ -16,6 +16,7 @@
 ///   void restore_state(core::StateReader& r) { transfer(r, *this); }
 #include <cstddef>
 #include <cstdint>
+#include <iosfwd>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -40,10 +41,16 @@ constexpr char state_kind() {
 }
 }  // namespace detail
 
-/// Collects tagged values into a byte string (bytes(): the checkpoint file's content).
+/// Collects tagged values into a byte string (bytes(): the checkpoint file's content), or writes them
+/// straight to a stream.
 class StateWriter {
  public:
+  /// In memory: bytes() and clear().
   StateWriter();
+  /// Straight to `out`, the same bytes as bytes() would give (finish() adds the checksum): a checkpoint
+  /// needs no copy of the whole state in memory beside the model, which at large N is most of a run's
+  /// peak memory.
+  explicit StateWriter(std::ostream& out);
   void put(std::string_view tag, double value) { put_array(tag, &value, 1); }
   void put(std::string_view tag, std::int64_t value) { put_array(tag, &value, 1); }
   void put(std::string_view tag, int value) { put(tag, static_cast<std::int64_t>(value)); }
@@ -56,6 +63,11 @@ class StateWriter {
   template <class Vector, class = decltype(std::declval<const Vector&>().data())>
   void put(std::string_view tag, const Vector& v) {
     put_array(tag, v.data(), static_cast<std::size_t>(v.size()));
+  }
+  /// n elements at `data` (a library's array), read back as a vector: stored without a copy.
+  template <class T>
+  void put(std::string_view tag, const T* data, std::size_t n) {
+    put_array(tag, data, n);
   }
   /// An enumeration, as its underlying integer.
   template <class Enum, std::enable_if_t<std::is_enum_v<Enum>, int> = 0>
@@ -71,17 +83,37 @@ class StateWriter {
     put(tag, value);
   }
 
-  /// The content with its checksum.
+  /// The content with its checksum (in memory).
   std::string bytes() const;
-  /// Empties the writer for the next state, keeping its memory (a snapshot taken every step).
+  /// Empties the writer for the next state, keeping its memory and making room for one a quarter larger
+  /// than the last (in memory; a snapshot taken every step).
   void clear();
+  /// Writes the checksum (streamed); nothing may be put after it.
+  void finish();
+  /// Makes room for a state of `bytes` (in memory), e.g. measure()'s before a first snapshot.
+  void reserve(std::size_t bytes) { buffer_.reserve(bytes); }
+  /// The bytes `save(writer)` puts, counted by a writer that keeps none of them.
+  template <class Save>
+  static std::size_t measure(const Save& save) {
+    StateWriter counter(Counting{});
+    save(counter);
+    return counter.counted_;
+  }
 
  private:
   friend class StateReader;
   template <class T>
   void put_array(std::string_view tag, const T* data, std::size_t n);
   void put_raw(std::string_view tag, char kind, std::size_t element_size, const void* data, std::size_t n);
-  std::string buffer_;
+  void write_bytes(const void* data, std::size_t n);
+  struct Counting {};
+  explicit StateWriter(Counting);
+  std::string buffer_;              // in memory
+  std::ostream* stream_ = nullptr;  // streamed
+  std::uint32_t stream_crc_ = 0;    // streamed: the CRC-32 register after what was written
+  bool counting_ = false;           // measure(): bytes counted, none kept
+  std::size_t counted_ = 0;
+  bool finished_ = false;
 };
 
 /// Reads what a StateWriter wrote. Every failure (a damaged file, a tag or type that differs, a size

@@ -450,8 +450,9 @@ class CoupledModel {
   int n_cut_ = 0;         // pre-cut beams (cut_beams), the head of break_log_
   RunCursor cursor_;
   // The state at the start of the step being taken, restored if the attempt fails; one buffer for
-  // every step (its memory kept: at N = 1e4 a snapshot holds the factors, ~10 MB).
+  // every step (its memory kept: a snapshot holds the factors, 44 MB at N = 1e4).
   core::StateWriter step_start_;
+  bool first_snapshot_ = true;
 };
 
 }  // namespace hm::lattice2d
