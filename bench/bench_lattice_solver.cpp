@@ -8,6 +8,8 @@
 //   4. the same through BeamMechanics (break_beam + solve with contact check and equilibrium residual),
 //   5. preconditioned CG (incomplete Cholesky): set-up + cold solve from x = 0, and the re-solve after
 //      one break warm-started from the previous solution,
+//   6. the memory floor of the triangular solves (L's bytes over one thread's read bandwidth) and each
+//      solve's time over it,
 // and prints seconds and the ratio to the cold CG solve. Also: the factorisation variants
 // (simplicial vs supernodal, orderings) for the "which is faster overall" choice.
 //   build/bench/bench_lattice_solver                 # N = 1e4 and 1e5
@@ -35,6 +37,23 @@ double median(std::vector<double> t) {
 }
 
 double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
+
+// Reading memory on one thread, bytes per second: the median of five sums over an array of `bytes`, larger
+// than any cache, as a triangular solve streams its factor.
+double read_bandwidth(std::size_t bytes) {
+  std::vector<double> a(bytes / sizeof(double), 1.0);
+  std::vector<double> t;
+  volatile double sink = 0.0;
+  for (int r = 0; r < 5; ++r) {
+    const double t0 = now();
+    double s[4] = {0.0, 0.0, 0.0, 0.0};  // four sums: the adds' latency must not be the limit
+    for (std::size_t k = 0; k + 4 <= a.size(); k += 4)
+      for (int q = 0; q < 4; ++q) s[q] += a[k + static_cast<std::size_t>(q)];
+    t.push_back(now() - t0);
+    sink = sink + s[0] + s[1] + s[2] + s[3];
+  }
+  return static_cast<double>(a.size() * sizeof(double)) / median(t);
+}
 
 // Rank-3 factor columns of beam e restricted to the free degrees of freedom of `m`.
 SpdSolver::Matrix beam_columns(const BeamMechanics& m, const std::vector<int>& free_index, int e) {
@@ -148,6 +167,15 @@ void run(long long n, bool variants, bool with_pcg) {
   std::printf("  CHOLMOD ordering %s, nnz(L) = %.3g, residual after 10 downdates %.1e, info %d\n",
               chol.ordering_used().c_str(), chol.factor_nonzeros(), chol.report().relative_residual,
               static_cast<int>(chol.info()));
+  // The floor of a triangular solve: it must read every entry of L once (a double and its row index).
+  const double factor_bytes = chol.factor_nonzeros() * (sizeof(double) + sizeof(int));
+  const double bandwidth = read_bandwidth(static_cast<std::size_t>(std::max(factor_bytes, 2.5e8)));
+  const double floor_one = factor_bytes / bandwidth;
+  std::printf(
+      "  memory floor: L holds %.0f MB, read at %.1f GB/s (one thread): %.4f s a triangular solve; "
+      "first solve (two) %.1fx it, repeated solve (one) %.1fx, re-solve %.1fx\n",
+      factor_bytes / 1e6, bandwidth / 1e9, floor_one, t_first / (2 * floor_one), t_solve / floor_one,
+      t_resolve / floor_one);
 
   // 3. Through the mechanics (contact check, equilibrium residual, forces not included).
   mech.solve();
