@@ -6,9 +6,15 @@
 // mechanical solves, stresses and failure checks, factor downdates, deformed geometry, flow.
 //   build/bench/bench_coupled_fracture            # N = 1e4
 //   build/bench/bench_coupled_fracture 100000     # the paper's resolution (~30 min on 2 cores)
+//   build/bench/bench_coupled_fracture 10000 --versus-cg [t_end]
+//       the same run with the paper's mechanics solver beside it (conjugate gradients, incomplete-Cholesky
+//       preconditioned, warm-started from the last solution, its preconditioner rebuilt after each break)
+//       to t_end (default t* = 4.5e-3, the paper's first snapshot: most breaks have happened), and the
+//       ratio of the two runs' wall times (~6 min at N = 1e4 on one thread)
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 
 #include "hm/analytic/biot_modulus.hpp"
 #include "hm/lattice2d/coupled/coupled_model.hpp"
@@ -23,10 +29,14 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-}  // namespace
+struct Timing {
+  CoupledRunSummary run;
+  int n_broken = 0, n_particles = 0;
+  double setup = 0.0, total = 0.0;
+};
 
-int main(int argc, char** argv) {
-  const long long n = argc > 1 ? std::atoll(argv[1]) : 10000;
+// The Fig. 12 b = 0.2 setting to t_end with the given mechanics solver.
+Timing run_fig12(long long n, double t_end, SpdSolverKind solver) {
   const auto start = std::chrono::steady_clock::now();
   LatticeSpec spec;
   spec.domain = DomainShape::annulus;
@@ -43,25 +53,34 @@ int main(int argc, char** argv) {
   coupling.relaxation = CouplingRelaxation::anderson;
   coupling.anderson_depth = 10;
   coupling.pressure_tolerance = coupling.displacement_tolerance = 1e-4;
+  MechanicsOptions mechanics;
+  mechanics.solver = solver;
   const Lattice lattice = generate_lattice(spec);
-  CoupledModel model(lattice, calibrated_beam_parameters(), BoundaryConditions{}, MechanicsOptions{}, flow, coupling);
+  CoupledModel model(lattice, calibrated_beam_parameters(), BoundaryConditions{}, mechanics, flow, coupling);
   model.enable_fracture(draw_beam_strengths(StrengthSpec{}, lattice.n_beams()));
-  const double setup = seconds_since(start);
-
+  Timing t;
+  t.setup = seconds_since(start);
   TimeStepping stepping;
   stepping.dt_initial = 1e-5;
   stepping.dt_growth = 1.2;
   stepping.dt_max = 5e-4;
-  stepping.t_end = 0.0272;
-  const CoupledRunSummary run = model.run(stepping);
-  const double total = seconds_since(start);
-  std::printf("Fig. 12 b = 0.2 to t* = 0.0272 at N = %d particles: %s, %d steps, %d passes, %d beams broken\n",
-              lattice.n_particles(), hm::core::name_of(run.status).c_str(), run.n_steps, run.total_iterations,
-              model.n_broken());
+  stepping.t_end = t_end;
+  t.run = model.run(stepping);
+  t.total = seconds_since(start);
+  t.n_broken = model.n_broken();
+  t.n_particles = lattice.n_particles();
+  return t;
+}
+
+void print_split(const Timing& t) {
   std::printf("  %-40s %9s %7s\n", "part", "seconds", "share");
-  const double parts[] = {
-      setup, run.mechanics_seconds, run.stress_seconds, run.break_seconds, run.geometry_seconds, run.flow_seconds,
-      total};
+  const double parts[] = {t.setup,
+                          t.run.mechanics_seconds,
+                          t.run.stress_seconds,
+                          t.run.break_seconds,
+                          t.run.geometry_seconds,
+                          t.run.flow_seconds,
+                          t.total};
   const char* names[] = {"set-up (lattice, factorisations)",
                          "mechanical solves",
                          "stresses and failure checks",
@@ -69,6 +88,28 @@ int main(int argc, char** argv) {
                          "deformed geometry",
                          "flow (factorise/refine, solve)",
                          "whole run"};
-  for (int k = 0; k < 7; ++k) std::printf("  %-40s %9.2f %6.1f%%\n", names[k], parts[k], 100.0 * parts[k] / total);
-  return run.is_ok() ? 0 : 1;
+  for (int k = 0; k < 7; ++k) std::printf("  %-40s %9.2f %6.1f%%\n", names[k], parts[k], 100.0 * parts[k] / t.total);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const long long n = argc > 1 ? std::atoll(argv[1]) : 10000;
+  const bool versus_cg = argc > 2 && std::strcmp(argv[2], "--versus-cg") == 0;
+  const double t_end = versus_cg ? (argc > 3 ? std::atof(argv[3]) : 4.5e-3) : 0.0272;
+  const Timing chol = run_fig12(n, t_end, SpdSolverKind::cholmod);
+  std::printf("Fig. 12 b = 0.2 to t* = %g at N = %d particles: %s, %d steps, %d passes, %d beams broken\n", t_end,
+              chol.n_particles, hm::core::name_of(chol.run.status).c_str(), chol.run.n_steps, chol.run.total_iterations,
+              chol.n_broken);
+  print_split(chol);
+  if (!versus_cg) return chol.run.is_ok() ? 0 : 1;
+  const Timing cg = run_fig12(n, t_end, SpdSolverKind::pcg);
+  std::printf(
+      "The same with warm-started preconditioned CG for the mechanics (the paper's approach): %s, %d steps, "
+      "%d passes, %d beams broken\n",
+      hm::core::name_of(cg.run.status).c_str(), cg.run.n_steps, cg.run.total_iterations, cg.n_broken);
+  print_split(cg);
+  std::printf("whole run: CG %.1f s, CHOLMOD with rank-3 downdates %.1f s: ratio %.1f; mechanical solves alone %.1f\n",
+              cg.total, chol.total, cg.total / chol.total, cg.run.mechanics_seconds / chol.run.mechanics_seconds);
+  return chol.run.is_ok() && cg.run.is_ok() ? 0 : 1;
 }
