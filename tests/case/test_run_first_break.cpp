@@ -188,9 +188,23 @@ struct FirstBreak {
   std::string breaks;
 };
 
-FirstBreak first_break(const TempDir& dir, const std::string& name, const std::string& dt,
-                       const std::string& tolerance) {
-  dir.write(name + ".toml", first_break_case(dt, tolerance));
+// The same with the saw-tooth law (a sandstone's G_f, the process zone wet by its damage), whose
+// defaults check at converged states, one event at a time.
+std::string sawtooth_first_break_case(const std::string& dt, const std::string& tolerance) {
+  return hm::test::edited(slurp(std::filesystem::path(HM_SOURCE_DIR) / "cases/fig12_b0.2_quick.toml"),
+                          {{"[flow]\n", "[flow]\ncrack_coupling = \"full\"\n"},
+                           {"dt_initial = 1e-5", "dt_initial = " + dt},
+                           {"dt_max = 5e-4", "dt_max = " + dt},
+                           {"[numerics]\n", "[numerics]\novershoot_tolerance = " + tolerance + "\n"},
+                           {"vtk = true", "vtk = false"},
+                           {"enabled = true\n",
+                            "enabled = true\nstop_at_first_break = true\nlaw = \"sawtooth\"\n"
+                            "fracture_energy = 2.34e-9\n"}});
+}
+
+FirstBreak first_break(const TempDir& dir, const std::string& name, const std::string& dt, const std::string& tolerance,
+                       bool sawtooth = false) {
+  dir.write(name + ".toml", sawtooth ? sawtooth_first_break_case(dt, tolerance) : first_break_case(dt, tolerance));
   const auto r = run_hmlattice("run " + name + ".toml --out " + name, dir.path);
   INFO(name << ": " << r.err);
   REQUIRE(r.exit_code == 0);
@@ -240,4 +254,20 @@ TEST_CASE("With an overshoot tolerance the first break happens within it of the 
   CHECK(count_lines(r.err) == 1);
   CHECK_THAT(r.err,
              Catch::Contains("[numerics] overshoot_tolerance = 0.02, allowed: 0 unless [coupling] fracture_check"));
+}
+
+TEST_CASE("With the saw-tooth law's overshoot tolerance the first break does not depend on the step either",
+          "[case][fracture]") {
+  TempDir dir("overshoot-sawtooth");
+  // Without it the first break comes at the end of the first step, through teeth taken far past their
+  // thresholds (the first at ratio 3.6 at dt = 2e-4): p_h 2.10e-4 at dt = 2e-4 against 1.76e-4 at 1e-4.
+  const FirstBreak coarse = first_break(dir, "coarse", "2e-4", "0", true);
+  const FirstBreak fine = first_break(dir, "fine", "1e-4", "0", true);
+  CHECK(std::abs(coarse.p - fine.p) > 0.1 * fine.p);
+  // With the law's default 2% every step whose first tooth overshoots is halved: the first break comes
+  // at t* = 3.28e-5 and 3.20e-5, p_h 1.6612e-4 and 1.6603e-4 (measured 0.05% apart): within the tolerance.
+  const FirstBreak coarse_retried = first_break(dir, "coarse_retried", "2e-4", "0.02", true);
+  const FirstBreak fine_retried = first_break(dir, "fine_retried", "1e-4", "0.02", true);
+  CHECK(std::abs(coarse_retried.p - fine_retried.p) <= 0.02 * fine_retried.p);
+  CHECK(coarse_retried.t < 1e-4);
 }
