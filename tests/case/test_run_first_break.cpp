@@ -171,36 +171,35 @@ TEST_CASE("A stop_at_first_break run in which nothing breaks goes to t_end and s
 
 namespace {
 
-// The Fig. 12 quick case (N = 3000) checked at converged states, ended at its first break, with
-// constant steps dt and the given overshoot tolerance.
-std::string first_break_case(const std::string& dt, const std::string& tolerance) {
+// The Fig. 12 quick case (N = 3000) ended at its first break, with constant steps dt, the given overshoot
+// tolerance, and `law_keys` after [fracture] enabled.
+std::string fig12_first_break(const std::string& dt, const std::string& tolerance, const std::string& law_keys,
+                              std::pair<std::string, std::string> extra_edit) {
   return hm::test::edited(slurp(std::filesystem::path(HM_SOURCE_DIR) / "cases/fig12_b0.2_quick.toml"),
-                          {{"[coupling]\n", "[coupling]\nfracture_check = \"at_convergence\"\n"},
+                          {std::move(extra_edit),
                            {"dt_initial = 1e-5", "dt_initial = " + dt},
                            {"dt_max = 5e-4", "dt_max = " + dt},
                            {"[numerics]\n", "[numerics]\novershoot_tolerance = " + tolerance + "\n"},
                            {"vtk = true", "vtk = false"},
-                           {"enabled = true\n", "enabled = true\nstop_at_first_break = true\n"}});
+                           {"enabled = true\n", "enabled = true\nstop_at_first_break = true\n" + law_keys}});
+}
+
+// The paper's brittle law, checked at converged states.
+std::string first_break_case(const std::string& dt, const std::string& tolerance) {
+  return fig12_first_break(dt, tolerance, "", {"[coupling]\n", "[coupling]\nfracture_check = \"at_convergence\"\n"});
+}
+
+// The saw-tooth law (a sandstone's G_f, the process zone wet by its damage), whose defaults check at
+// converged states, one event at a time.
+std::string sawtooth_first_break_case(const std::string& dt, const std::string& tolerance) {
+  return fig12_first_break(dt, tolerance, "law = \"sawtooth\"\nfracture_energy = 2.34e-9\n",
+                           {"[flow]\n", "[flow]\ncrack_coupling = \"full\"\n"});
 }
 
 struct FirstBreak {
   double t, p, ratio;
   std::string breaks;
 };
-
-// The same with the saw-tooth law (a sandstone's G_f, the process zone wet by its damage), whose
-// defaults check at converged states, one event at a time.
-std::string sawtooth_first_break_case(const std::string& dt, const std::string& tolerance) {
-  return hm::test::edited(slurp(std::filesystem::path(HM_SOURCE_DIR) / "cases/fig12_b0.2_quick.toml"),
-                          {{"[flow]\n", "[flow]\ncrack_coupling = \"full\"\n"},
-                           {"dt_initial = 1e-5", "dt_initial = " + dt},
-                           {"dt_max = 5e-4", "dt_max = " + dt},
-                           {"[numerics]\n", "[numerics]\novershoot_tolerance = " + tolerance + "\n"},
-                           {"vtk = true", "vtk = false"},
-                           {"enabled = true\n",
-                            "enabled = true\nstop_at_first_break = true\nlaw = \"sawtooth\"\n"
-                            "fracture_energy = 2.34e-9\n"}});
-}
 
 FirstBreak first_break(const TempDir& dir, const std::string& name, const std::string& dt, const std::string& tolerance,
                        bool sawtooth = false) {
