@@ -104,6 +104,14 @@ int main(int argc, char** argv) {
   const bool versus_cg = argc > 2 && std::strcmp(argv[2], "--versus-cg") == 0;
   const bool versus_cubic = argc > 2 && std::strcmp(argv[2], "--versus-cubic") == 0;
   const double t_end = versus_cg || versus_cubic ? (argc > 3 ? std::atof(argv[3]) : 4.5e-3) : 0.0272;
+  const bool extra = argc > 2 && !versus_cg && !versus_cubic;
+  if (n < 100 || extra || argc > 4 || !(t_end > 0.0)) {
+    std::fprintf(stderr,
+                 "bench_coupled_fracture: arguments [N >= 100] [--versus-cg | --versus-cubic [t_end > 0]]; "
+                 "given N = %lld%s%s, t_end = %g\n",
+                 n, extra ? ", unknown " : "", extra ? argv[2] : "", t_end);
+    return 2;
+  }
   const Timing chol = run_fig12(n, t_end, SpdSolverKind::cholmod);
   std::printf("Fig. 12 b = 0.2 to t* = %g at N = %d particles: %s, %d steps, %d passes, %d beams broken\n", t_end,
               chol.n_particles, hm::core::name_of(chol.run.status).c_str(), chol.run.n_steps, chol.run.total_iterations,

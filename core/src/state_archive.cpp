@@ -71,8 +71,8 @@ void StateWriter::put_raw(std::string_view tag, char kind, std::size_t element_s
 std::string StateWriter::bytes() const {
   if (stream_) throw std::logic_error("StateWriter::bytes() of a streamed writer");
   std::string out;
-  out.reserve(buffer_.size() + 4);
-  out = buffer_;
+  out.reserve(buffer_.size() + 4);  // the checksum's 4 bytes without growing a copy of the whole state
+  out.append(buffer_);
   append(out, crc32(buffer_.data(), buffer_.size()));
   return out;
 }
