@@ -21,7 +21,7 @@ CaseTable::CaseTable(const toml::value& table, std::string file, std::string nam
     : table_(table), file_(std::move(file)), name_(std::move(name)) {}
 
 void CaseTable::fail(const std::string& message) const {
-  throw InputError(file_ + ": " + (name_.empty() ? "" : "[" + name_ + "] ") + message);
+  throw LocatedError(file_ + ": " + (name_.empty() ? "" : "[" + name_ + "] ") + message);
 }
 
 void CaseTable::wrong_type(const std::string& key, const std::string& wanted) const {
@@ -179,7 +179,8 @@ std::string one_line_toml_error(const std::string& path, const std::string& what
 
 }  // namespace
 
-CaseFile::CaseFile(const std::filesystem::path& path, const std::vector<std::string>& overrides) : path_(path) {
+CaseFile::CaseFile(const std::filesystem::path& path, const std::vector<std::string>& overrides)
+    : source_(path.string() + (overrides.empty() ? "" : " with --set")) {
   std::error_code error;  // a dangling link or a link loop is bad input too, not a crash
   const bool is_file = std::filesystem::is_regular_file(path, error);
   if (error && error != std::errc::no_such_file_or_directory)
@@ -216,7 +217,6 @@ CaseFile::CaseFile(const std::filesystem::path& path, const std::vector<std::str
     if (t.is_uninitialized()) t = toml::table{};
     if (!t.is_table()) fail("'" + table + "' is not a table of the case");
     t.as_table()[key] = parsed.as_table().at("value");
-    overridden_ = true;
   }
 }
 

@@ -21,10 +21,10 @@ std::string toml_reals(const std::vector<double>& values) {
 void located(CaseTable& table, const std::function<void()>& read) {
   try {
     read();
+  } catch (const LocatedError&) {
+    throw;
   } catch (const InputError& e) {
-    const std::string what = e.what();
-    if (what.rfind(table.file(), 0) == 0) throw;  // already located
-    table.fail(what);
+    table.fail(e.what());
   }
 }
 

@@ -61,8 +61,11 @@ const CaseKeys<Fdm1dCase>& fdm1d_case_keys() {
 }
 
 Fdm1dCase read_fdm1d_case(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
-  CaseFile cf(file, overrides);
-  CaseTable root = cf.root();
+  return read_fdm1d_case(CaseFile(file, overrides));
+}
+
+Fdm1dCase read_fdm1d_case(const CaseFile& file) {
+  CaseTable root = file.root();
   const std::string model = root.get_string("model", "fdm1d");
   if (model != "fdm1d") root.fail("model = \"" + model + "\", allowed: \"fdm1d\" (this command runs the 1D model)");
   root.ignore("provenance");

@@ -438,8 +438,11 @@ const CaseKeys<RunCase>& run_case_keys() {
 }
 
 RunCase read_run_case(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
-  CaseFile cf(file, overrides);
-  CaseTable root = cf.root();
+  return read_run_case(CaseFile(file, overrides));
+}
+
+RunCase read_run_case(const CaseFile& file) {
+  CaseTable root = file.root();
   const std::string model = root.get_string("model", "lattice2d");
   if (model != "lattice2d")
     root.fail("model = \"" + model + "\", allowed: \"lattice2d\" (this command runs the 2D lattice model)");

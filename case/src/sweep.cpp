@@ -120,125 +120,89 @@ std::vector<Axis> read_axes(const toml::value& root, const std::string& file) {
   return axes;
 }
 
-// The model's reader on one combination: its resolved case text, or the reader's InputError.
-std::string resolved_case(const std::string& model, const fs::path& file) {
-  if (model == "fdm1d") return fdm1d_case_to_toml(read_fdm1d_case(file), "");
-  return run_case_to_toml(read_run_case(file), "");
+// The model's reader on one combination, which messages call `source`: its resolved case text.
+std::string resolved_case(const std::string& model, const toml::value& c, const std::string& source) {
+  const CaseFile combination(c, source);
+  try {
+    if (model == "fdm1d") return fdm1d_case_to_toml(read_fdm1d_case(combination), "");
+    return run_case_to_toml(read_run_case(combination), "");
+  } catch (const LocatedError&) {
+    throw;
+  } catch (const InputError& e) {  // a rule of the reader's that names no table
+    throw LocatedError(source + ": " + e.what());
+  }
 }
 
-}  // namespace
+// The case with [sweep] replaced by the swept keys' values `at` (one index per axis).
+toml::value case_with(const toml::value& root, const std::vector<Axis>& axes, const std::vector<std::size_t>& at,
+                      const std::string& file) {
+  toml::value c = root;
+  c.as_table().erase("sweep");
+  for (std::size_t i = 0; i < axes.size(); ++i) {
+    const Axis& a = axes[i];
+    if (!c.contains(a.table)) c[a.table] = toml::table{};
+    if (!c.at(a.table).is_table())
+      throw InputError(file + ": [sweep] " + a.shown.key + ": " + a.table + " = " + echo_value(c.at(a.table)) +
+                       ", allowed: a table [" + a.table + "]");
+    c[a.table][a.key] = a.values[at[i]];
+  }
+  return c;
+}
 
-SweepExpansion expand_sweep(const fs::path& case_file, const fs::path& folder, long long max_combinations,
-                            const std::function<bool()>& stop) {
-  const std::string file = case_file.string();
-  CaseFile readable(case_file);  // a missing file or malformed TOML: its one-line message
-  const toml::value root = toml::parse(file);
-  SweepExpansion out;
-  out.model = root.contains("model") && root.at("model").is_string() ? root.at("model").as_string().str : "";
-  if (out.model != "lattice2d" && out.model != "fdm1d")
+// The model named by the file; "lattice2d" or "fdm1d", else refused.
+std::string model_of(const toml::value& root, const std::string& file) {
+  const std::string model =
+      root.contains("model") && root.at("model").is_string() ? root.at("model").as_string().str : "";
+  if (model != "lattice2d" && model != "fdm1d")
     throw InputError(
         file + ": model = " + (root.contains("model") ? core::echo(toml::format(root.at("model"))) : "(missing)") +
         ", allowed: \"lattice2d\" or \"fdm1d\" (the model every combination runs)");
-  out.command = out.model == "fdm1d" ? "fdm1d" : "run";
-  const std::vector<Axis> axes = read_axes(root, file);
-  for (const Axis& a : axes) out.axes.push_back(a.shown);
-  out.n_planned = 1;
+  return model;
+}
+
+// The product of the lists' sizes, refused above `max_combinations` before anything is written.
+long long planned_combinations(const std::vector<Axis>& axes, long long max_combinations, const std::string& file) {
+  long long n = 1;
   std::string sizes;
   for (const Axis& a : axes) {
-    out.n_planned =
-        static_cast<long long>(std::min<double>(static_cast<double>(out.n_planned) * a.values.size(), 9e18));
+    n = static_cast<long long>(std::min<double>(static_cast<double>(n) * a.values.size(), 9e18));
     sizes += (sizes.empty() ? "" : " x ") + std::to_string(a.values.size());
   }
-  if (out.n_planned > max_combinations)
-    throw InputError(file + ": [sweep] " + sizes + " = " + std::to_string(out.n_planned) +
-                     " combinations, allowed: at most " + std::to_string(max_combinations) +
-                     " (--max-combinations N to allow more)");
+  if (n > max_combinations)
+    throw InputError(file + ": [sweep] " + sizes + " = " + std::to_string(n) + " combinations, allowed: at most " +
+                     std::to_string(max_combinations) + " (--max-combinations N to allow more)");
+  return n;
+}
 
-  const fs::path scratch = folder / ".combination.toml";
-
-  // Every combination, the first axis slowest (an odometer over the lists).
-  std::vector<std::size_t> at(axes.size(), 0);
-  std::map<std::string, std::string> seen;  // name -> the assignments that made it
-  for (bool more = true; more;) {
-    if (stop && stop()) {
-      out.stopped = true;
-      return out;
-    }
-    SweepCombination combination;
-    toml::value c = root;
-    c.as_table().erase("sweep");
-    std::string assignments;
-    for (std::size_t i = 0; i < axes.size(); ++i) {
-      const Axis& a = axes[i];
-      const toml::value& v = a.values[at[i]];
-      if (!c.contains(a.table)) c[a.table] = toml::table{};
-      if (!c.at(a.table).is_table())
-        throw InputError(file + ": [sweep] " + a.shown.key + ": " + a.table + " = " + echo_value(c.at(a.table)) +
-                         ", allowed: a table [" + a.table + "]");
-      c[a.table][a.key] = v;
-      combination.values.push_back(a.shown.values[at[i]]);
-      combination.name += (i ? "_" : "") + a.shown.short_name + "=" + a.shown.values[at[i]];
-      assignments += (i ? ", " : "") + a.shown.key + " = " + echo_value(v);
-    }
-    combination.name = safe_name(combination.name);
-    if (combination.name.size() > 200)
-      throw InputError(file + ": [sweep] combination " + core::echo(combination.name) + " (" + assignments +
-                       "): name longer than 200 characters, allowed: shorter values or fewer keys");
-    if (const auto [it, fresh] = seen.emplace(combination.name, assignments); !fresh)
-      throw InputError(file + ": [sweep] " + assignments + ", allowed: values that differ from " + it->second +
-                       " in a letter, digit or one of . _ = + - (both are named " + combination.name + ")");
-
-    // The combination as the user could have written it, read by the model's own reader.
-    core::write_file_atomically(scratch, [&](std::ostream& f) { f << toml::format(c); });
-    std::string text;
-    try {
-      text = resolved_case(out.model, scratch);
-    } catch (const InputError& e) {
-      std::string what = e.what();
-      if (what.rfind(scratch.string() + ": ", 0) == 0) what = what.substr(scratch.string().size() + 2);
-      throw InputError(file + ": [sweep] combination " + combination.name + " (" + assignments + "): " + what);
-    }
-    core::write_file_atomically(folder / (combination.name + ".toml"), [&](std::ostream& f) {
-      f << "# Combination " << combination.name << " of the sweep " << file << ": " << assignments << ".\n"
-        << "# Written by `hmlattice sweep expand`.\n"
-        << text;
-    });
-    out.combinations.push_back(std::move(combination));
-
-    more = false;
-    for (std::size_t i = axes.size(); i-- > 0;) {
-      if (++at[i] < axes[i].values.size()) {
-        more = true;
-        break;
-      }
-      at[i] = 0;
-    }
+// The next combination's indices, the first axis slowest (an odometer over the lists); false after the last.
+bool advance(std::vector<std::size_t>& at, const std::vector<Axis>& axes) {
+  for (std::size_t i = axes.size(); i-- > 0;) {
+    if (++at[i] < axes[i].values.size()) return true;
+    at[i] = 0;
   }
-  // The case's own value of a swept key is replaced, but it is part of the file: checked as `run`
-  // would check it, in the first combination with that one key put back (after every combination
-  // has passed, so that what fails here is that value).
+  return false;
+}
+
+// The case's own value of a swept key is replaced, but it is part of the file: checked as `run`
+// would check it, in the first combination with that one key put back (after every combination
+// has passed, so that what fails here is that value).
+void check_own_values(const toml::value& root, const std::vector<Axis>& axes, const std::string& model,
+                      const std::string& file) {
   for (std::size_t k = 0; k < axes.size(); ++k) {
     const Axis& own = axes[k];
     if (!root.contains(own.table) || !root.at(own.table).is_table() || !root.at(own.table).contains(own.key)) continue;
-    toml::value c = root;
-    c.as_table().erase("sweep");
-    for (std::size_t i = 0; i < axes.size(); ++i)
-      if (i != k) {
-        if (!c.contains(axes[i].table) || !c.at(axes[i].table).is_table()) c[axes[i].table] = toml::table{};
-        c[axes[i].table][axes[i].key] = axes[i].values[0];
-      }
-    core::write_file_atomically(scratch, [&](std::ostream& f) { f << toml::format(c); });
+    toml::value c = case_with(root, axes, std::vector<std::size_t>(axes.size(), 0), file);
+    c[own.table][own.key] = root.at(own.table).at(own.key);
     try {
-      resolved_case(out.model, scratch);
+      resolved_case(model, c, file);
     } catch (const InputError& e) {
-      std::string what = e.what();
-      if (what.rfind(scratch.string() + ": ", 0) == 0) what = what.substr(scratch.string().size() + 2);
-      throw InputError(file + ": " + what + " (the case's own value of " + own.shown.key + ", which [sweep] replaces)");
+      throw InputError(std::string(e.what()) + " (the case's own value of " + own.shown.key +
+                       ", which [sweep] replaces)");
     }
   }
+}
 
-  fs::remove(scratch);
-
+void write_index(const fs::path& folder, const SweepExpansion& out) {
   core::write_file_atomically(folder / sweep_index_name, [&](std::ostream& f) {
     f << "name,command";
     for (const SweepAxis& a : out.axes) f << ',' << sweep_csv::field(a.key);
@@ -249,6 +213,57 @@ SweepExpansion expand_sweep(const fs::path& case_file, const fs::path& folder, l
       f << '\n';
     }
   });
+}
+
+}  // namespace
+
+SweepExpansion expand_sweep(const fs::path& case_file, const fs::path& folder, long long max_combinations,
+                            const std::function<bool()>& stop) {
+  const std::string file = case_file.string();
+  CaseFile readable(case_file);  // a missing file or malformed TOML: its one-line message
+  const toml::value root = toml::parse(file);
+  SweepExpansion out;
+  out.model = model_of(root, file);
+  out.command = out.model == "fdm1d" ? "fdm1d" : "run";
+  const std::vector<Axis> axes = read_axes(root, file);
+  for (const Axis& a : axes) out.axes.push_back(a.shown);
+  out.n_planned = planned_combinations(axes, max_combinations, file);
+
+  std::vector<std::size_t> at(axes.size(), 0);
+  std::map<std::string, std::string> seen;  // name -> the assignments that made it
+  do {
+    if (stop && stop()) {
+      out.stopped = true;
+      return out;
+    }
+    SweepCombination combination;
+    std::string assignments;
+    for (std::size_t i = 0; i < axes.size(); ++i) {
+      const Axis& a = axes[i];
+      combination.values.push_back(a.shown.values[at[i]]);
+      combination.name += (i ? "_" : "") + a.shown.short_name + "=" + a.shown.values[at[i]];
+      assignments += (i ? ", " : "") + a.shown.key + " = " + echo_value(a.values[at[i]]);
+    }
+    combination.name = safe_name(combination.name);
+    if (combination.name.size() > 200)
+      throw InputError(file + ": [sweep] combination " + core::echo(combination.name) + " (" + assignments +
+                       "): name longer than 200 characters, allowed: shorter values or fewer keys");
+    if (const auto [it, fresh] = seen.emplace(combination.name, assignments); !fresh)
+      throw InputError(file + ": [sweep] " + assignments + ", allowed: values that differ from " + it->second +
+                       " in a letter, digit or one of . _ = + - (both are named " + combination.name + ")");
+    // The combination as the user could have written it, read by the model's own reader.
+    const std::string text =
+        resolved_case(out.model, case_with(root, axes, at, file),
+                      file + ": [sweep] combination " + combination.name + " (" + assignments + ")");
+    core::write_file_atomically(folder / (combination.name + ".toml"), [&](std::ostream& f) {
+      f << "# Combination " << combination.name << " of the sweep " << file << ": " << assignments << ".\n"
+        << "# Written by `hmlattice sweep expand`.\n"
+        << text;
+    });
+    out.combinations.push_back(std::move(combination));
+  } while (advance(at, axes));
+  check_own_values(root, axes, out.model, file);
+  write_index(folder, out);
   return out;
 }
 

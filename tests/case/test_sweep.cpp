@@ -245,18 +245,20 @@ TEST_CASE("A sweep's size is bounded, the case's own values of swept keys are ch
                                       "physics.b, which [sweep] replaces)"));
   CHECK_FALSE(fs::exists(dir.path / "own"));
 
-  // Allowed explicitly, the big sweep starts; SIGTERM ends it with one line, exit 143, and no folder
-  // (its staging folder removed).
-  dir.write("s.toml", lattice_case + big);
+  // Allowed explicitly, a sweep far longer than a second (1e4 combinations take ~2 s here)
+  // starts; SIGTERM ends it with one line, exit 143, and no folder (its staging folder removed).
+  std::string many_seeds = "[";
+  for (int k = 1; k <= 1000; ++k) many_seeds += (k > 1 ? ", " : "") + std::to_string(k);
+  dir.write("s.toml", lattice_case + "[sweep]\n\"physics.Q\" = " + q + "]\n\"lattice.seed\" = " + many_seeds + "]\n");
   const std::string cmd = "cd '" + dir.path.string() + "' && ('" + HMLATTICE_EXE +
-                          "' sweep expand s.toml --out big --max-combinations 20000 2> err.txt & pid=$!; sleep 1; "
+                          "' sweep expand s.toml --out big --max-combinations 200000 2> err.txt & pid=$!; sleep 1; "
                           "kill -TERM $pid; wait $pid; echo $? > rc.txt)";
   REQUIRE(std::system(cmd.c_str()) == 0);
   CHECK(hm::test::slurp(dir.path / "rc.txt") == "143\n");
   const std::string err = hm::test::slurp(dir.path / "err.txt");
   CHECK(hm::test::count_lines(err) == 1);
   CHECK_THAT(err, Catch::Contains("interrupted by SIGTERM after") &&
-                      Catch::Contains("of 10100 combinations; nothing written"));
+                      Catch::Contains("of 101000 combinations; nothing written"));
   for (const auto& e : fs::directory_iterator(dir.path))
     CHECK(e.path().filename().string().rfind(".hmlattice-staging-", 0) != 0);
   CHECK_FALSE(fs::exists(dir.path / "big"));

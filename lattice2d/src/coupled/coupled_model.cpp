@@ -635,6 +635,51 @@ void CoupledRunSummary::add_accepted_step(const CoupledStepSummary& s) {
   n_mechanics_update_failures += s.n_mechanics_update_failures;
 }
 
+bool CoupledModel::begin_run(const TimeStepping& stepping, std::size_t n_outputs, const Observer& observer) {
+  RunCursor& c = cursor_;
+  if (!c.started) {  // initial step: the lattice at rest at t = 0
+    const CoupledStepSummary rest = settle();
+    if (!rest.is_ok()) {
+      c.totals.status = rest.status;
+      c.totals.message = rest.message;
+      return false;
+    }
+    c.started = true;
+    c.next_output = 0;
+    c.dt_nominal = stepping.dt_initial;
+    if (observer) observer(*this, CoupledStepSummary{}, true);
+  }
+  // A restored cursor must fit this case's stepping (a damaged checkpoint would step backwards or
+  // read past the output times).
+  if (c.next_output >= n_outputs || !(c.dt_nominal > 0.0) || !(time() >= 0.0) || time() > stepping.t_end)
+    throw InputError("run: the restored state (t = " + hm::core::format_value(time()) +
+                     ", dt = " + hm::core::format_value(c.dt_nominal) + ", output " + std::to_string(c.next_output) +
+                     " of " + std::to_string(n_outputs) + ") does not fit the case's stepping: a damaged checkpoint");
+  return true;
+}
+
+CoupledStepSummary CoupledModel::step_with_retries(double& dt, const TimeStepping& stepping) {
+  // A coupling loop that did not converge is retried with half the step (fewer breaks per step,
+  // a milder change of the contact set), up to max_step_halvings times; so is a step whose first
+  // break went past its threshold by more than overshoot_tolerance, whose last try is accepted.
+  const auto tolerance = [&](int halvings) {
+    return halvings < stepping.max_step_halvings ? stepping.overshoot_tolerance : 0.0;
+  };
+  CoupledRunSummary& run = cursor_.totals;
+  CoupledStepSummary s = step(dt, tolerance(0));
+  run.total_iterations += s.iterations;
+  for (int h = 0; (s.status == CoupledStatus::not_converged || s.status == CoupledStatus::overshoot) &&
+                  h < stepping.max_step_halvings;
+       ++h) {
+    dt *= 0.5;
+    cursor_.dt_nominal = dt;
+    ++run.n_step_halvings;
+    s = step(dt, tolerance(h + 1));
+    run.total_iterations += s.iterations;
+  }
+  return s;
+}
+
 CoupledRunSummary CoupledModel::run(const TimeStepping& stepping, const Observer& observer,
                                     const std::function<bool()>& stop) {
   stepping.validate();
@@ -647,49 +692,16 @@ CoupledRunSummary CoupledModel::run(const TimeStepping& stepping, const Observer
   RunCursor& c = cursor_;
   CoupledRunSummary& run = c.totals;
   const double seconds_before = run.seconds;
-  if (!c.started) {  // initial step: the lattice at rest at t = 0
-    const CoupledStepSummary rest = settle();
-    if (!rest.is_ok()) {
-      run.status = rest.status;
-      run.message = rest.message;
-      return run;
-    }
-    c.started = true;
-    c.next_output = 0;
-    c.dt_nominal = stepping.dt_initial;
-    if (observer) observer(*this, CoupledStepSummary{}, true);
-  }
-  // A restored cursor must fit this case's stepping (a damaged checkpoint would step backwards or
-  // read past the output times).
-  if (c.next_output >= outputs.size() || !(c.dt_nominal > 0.0) || !(time() >= 0.0) || time() > stepping.t_end)
-    throw InputError("run: the restored state (t = " + hm::core::format_value(time()) + ", dt = " +
-                     hm::core::format_value(c.dt_nominal) + ", output " + std::to_string(c.next_output) + " of " +
-                     std::to_string(outputs.size()) + ") does not fit the case's stepping: a damaged checkpoint");
+  if (!begin_run(stepping, outputs.size(), observer)) return run;
   run.status = CoupledStatus::converged;
   run.message.clear();
   while (time() < stepping.t_end - snap) {
     const double t_out = outputs[c.next_output];
     double dt = std::min(c.dt_nominal, t_out - time());
     if (t_out - (time() + dt) < snap) dt = t_out - time();
-    // A coupling loop that did not converge is retried with half the step (fewer breaks per step,
-    // a milder change of the contact set), up to max_step_halvings times; so is a step whose first
-    // break went past its threshold by more than overshoot_tolerance, whose last try is accepted.
-    const auto tolerance = [&](int halvings) {
-      return halvings < stepping.max_step_halvings ? stepping.overshoot_tolerance : 0.0;
-    };
     // An interrupted step leaves no trace, not even in the counters: a resumed run redoes it whole.
     const RunCursor before = c;
-    CoupledStepSummary s = step(dt, tolerance(0));
-    run.total_iterations += s.iterations;
-    for (int h = 0; (s.status == CoupledStatus::not_converged || s.status == CoupledStatus::overshoot) &&
-                    h < stepping.max_step_halvings;
-         ++h) {
-      dt *= 0.5;
-      c.dt_nominal = dt;
-      ++run.n_step_halvings;
-      s = step(dt, tolerance(h + 1));
-      run.total_iterations += s.iterations;
-    }
+    const CoupledStepSummary s = step_with_retries(dt, stepping);
     if (s.status == CoupledStatus::interrupted) {
       c = before;
       run.status = s.status;

@@ -114,6 +114,24 @@ Eigen::VectorXd failure_ratios(const BeamMechanics& mechanics, const DualGraph& 
 
 namespace {
 
+// The saw-tooth law's tooth of the judged beam gives way, its energy booked: the beam softens to the
+// next tooth's stiffness, or (last) is left for the caller to break.
+void give_way(SawtoothLaw& law, BeamMechanics& mechanics, const FailureScan::Result& checked, double load, bool last,
+              std::vector<ToothEvent>& teeth) {
+  const int e = checked.judged.beam;
+  ToothEvent tooth;
+  tooth.sequence = static_cast<int>(teeth.size());
+  tooth.beam = e;
+  tooth.load = load;
+  tooth.tooth = law.tooth(e);
+  tooth.stiffness_factor = last ? 0.0 : law.next_stiffness_factor(e);
+  tooth.axial_stress = checked.axial_stress;
+  tooth.ratio = checked.judged.ratio;
+  tooth.energy = law.give_way(e);
+  if (!last) mechanics.soften_beam(e, tooth.stiffness_factor);
+  teeth.push_back(tooth);
+}
+
 // The break loop of both laws (law null: brittle, teeth unused).
 BreakLoopSummary run_break_loop(BeamMechanics& mechanics, const DualGraph& dual, const BeamStrengths& strengths,
                                 SawtoothLaw* law, const BreakLoopOptions& options, double load,
@@ -171,17 +189,7 @@ BreakLoopSummary run_break_loop(BeamMechanics& mechanics, const DualGraph& dual,
     const bool tooth_gives_way = law && tensile;
     const bool last = !tooth_gives_way || law->on_last_tooth(e);
     if (tooth_gives_way) {
-      ToothEvent tooth;
-      tooth.sequence = static_cast<int>(teeth->size());
-      tooth.beam = e;
-      tooth.load = load;
-      tooth.tooth = law->tooth(e);
-      tooth.stiffness_factor = last ? 0.0 : law->next_stiffness_factor(e);
-      tooth.axial_stress = checked.axial_stress;
-      tooth.ratio = candidate.ratio;
-      tooth.energy = law->give_way(e);
-      if (!last) mechanics.soften_beam(e, tooth.stiffness_factor);
-      teeth->push_back(tooth);
+      give_way(*law, mechanics, checked, load, last, *teeth);
       ++summary.n_teeth;
     }
     if (last) {

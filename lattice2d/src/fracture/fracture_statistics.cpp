@@ -117,16 +117,13 @@ int count_crossings(const Lattice& lattice, const std::vector<bool>& broken, dou
   return std::max(n_wide, 1);
 }
 
-FractureStatistics compute_fracture_statistics(const Lattice& lattice, const std::vector<bool>& broken,
-                                               const std::vector<BreakEvent>& log,
-                                               const FractureStatisticsOptions& options) {
-  options.validate();
-  require_one_flag_per_beam(lattice, broken);
-  const std::vector<FailureMode> mode = logged_modes(lattice, log);
-  const auto is_broken = [&](int e) { return broken[static_cast<std::size_t>(e)]; };
+namespace {
 
+// The broken beams joined into fractures by `link`.
+DisjointSets linked_broken_beams(const Lattice& lattice, const std::vector<bool>& broken, FractureLink link) {
+  const auto is_broken = [&](int e) { return broken[static_cast<std::size_t>(e)]; };
   DisjointSets sets(lattice.n_beams());
-  if (options.link == FractureLink::shared_triangle) {
+  if (link == FractureLink::shared_triangle) {
     // Two broken edges of one triangle: their Voronoi segments meet at its dual point.
     for (const auto& edges : lattice.triangle_beams)
       for (int k = 0; k < 3; ++k)
@@ -146,6 +143,20 @@ FractureStatistics compute_fracture_statistics(const Lattice& lattice, const std
       }
     }
   }
+  return sets;
+}
+
+}  // namespace
+
+FractureStatistics compute_fracture_statistics(const Lattice& lattice, const std::vector<bool>& broken,
+                                               const std::vector<BreakEvent>& log,
+                                               const FractureStatisticsOptions& options) {
+  options.validate();
+  require_one_flag_per_beam(lattice, broken);
+  const std::vector<FailureMode> mode = logged_modes(lattice, log);
+  const auto is_broken = [&](int e) { return broken[static_cast<std::size_t>(e)]; };
+
+  DisjointSets sets = linked_broken_beams(lattice, broken, options.link);
 
   FractureStatistics stats;
   std::vector<int> fracture_of_root(static_cast<std::size_t>(lattice.n_beams()), -1);

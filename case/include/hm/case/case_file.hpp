@@ -65,14 +65,14 @@ class CaseFile {
   /// output.times=[0.1,0.2]) then replaces or adds that key, before anything is read: the case is
   /// validated as if the file had said it. A malformed override is an InputError naming it.
   explicit CaseFile(const std::filesystem::path& path, const std::vector<std::string>& overrides = {});
+  /// A case made in memory (a sweep's combination): messages name it `source`.
+  CaseFile(toml::value root, std::string source) : source_(std::move(source)), root_(std::move(root)) {}
   /// Messages name the file, and "with --set" when the command line changed it.
-  CaseTable root() const { return CaseTable(root_, path_.string() + (overridden_ ? " with --set" : ""), ""); }
-  const std::filesystem::path& path() const { return path_; }
+  CaseTable root() const { return CaseTable(root_, source_, ""); }
 
  private:
-  std::filesystem::path path_;
+  std::string source_;
   toml::value root_;
-  bool overridden_ = false;
 };
 
 /// The physics of a case, from exactly one of [physics] (dimensionless, paper units) or

@@ -23,6 +23,8 @@ const CaseKeys<Fdm1dCase>& fdm1d_case_keys();
 
 /// Reads and validates the whole case; throws hm::InputError "<file>: [table] key = value, allowed: ...".
 Fdm1dCase read_fdm1d_case(const std::filesystem::path& file, const std::vector<std::string>& overrides = {});
+/// The same for a case already parsed (or made in memory).
+Fdm1dCase read_fdm1d_case(const CaseFile& file);
 
 /// The resolved case as TOML (itself a valid case file), with a [provenance] table.
 std::string fdm1d_case_to_toml(const Fdm1dCase& c, const std::string& provenance_toml);

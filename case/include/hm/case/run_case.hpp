@@ -92,6 +92,8 @@ const CaseKeys<RunCase>& run_case_keys();
 
 /// Reads and validates the whole case; throws hm::InputError "<file>: [table] key = value, allowed: ...".
 RunCase read_run_case(const std::filesystem::path& file, const std::vector<std::string>& overrides = {});
+/// The same for a case already parsed (or made in memory).
+RunCase read_run_case(const CaseFile& file);
 
 /// The resolved case as TOML (itself a valid case file), with a [provenance] table.
 std::string run_case_to_toml(const RunCase& c, const std::string& provenance_toml);

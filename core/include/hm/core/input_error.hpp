@@ -17,6 +17,13 @@ class InputError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// Bad input whose message already says where it came from ("<file>: [table] ..."): a layer that
+/// adds the place to the messages it catches passes this one on as it is.
+class LocatedError : public InputError {
+ public:
+  using InputError::InputError;
+};
+
 /// Bad input in one field of a parameter struct, kept in its parts so that the layer that knows where
 /// the field came from (a case file's [table] key) names it without rewriting the message: the field's
 /// name in the struct ("output_times"), the element ("[2]", or empty), the value as given and the rule,

@@ -377,6 +377,12 @@ class CoupledModel {
   Eigen::VectorXd failure_ratio() const;
 
  private:
+  // run()'s start: the lattice settled at rest on a first call, a restored cursor checked against
+  // the case's `n_outputs` output times. false: settling failed (recorded in the run's totals).
+  bool begin_run(const TimeStepping& stepping, std::size_t n_outputs, const Observer& observer);
+  // One step of nominal length dt, retried with half the step as TimeStepping says; dt ends as the
+  // length of the last try.
+  CoupledStepSummary step_with_retries(double& dt, const TimeStepping& stepping);
   // The guess a pass's mechanics sees: the pressure p_g (Eq. 17) and the springs' rest state u_g (Eq. 20).
   struct PassGuess {
     Eigen::VectorXd pressure, displacement;

@@ -84,7 +84,7 @@ enum class BeamState : std::uint8_t {
 /// set_normal_springs) when the beam breaks. The spring stands for the pore fluid's resistance to the
 /// Voronoi segment's change of volume, a convergence device of the operator split, not a bond.
 enum class BrokenBeamSpring {
-  keep,  ///< the spring stays (the fluid is still there); default, as the model has always run
+  keep,  ///< the spring stays: the fluid it stands for is still there after the break; default
   drop,  ///< the spring goes with the beam, so the split's Psi cannot hold a crack closed
 };
 constexpr auto enum_names(BrokenBeamSpring) {
