@@ -161,22 +161,6 @@ void add_insitu_dry_metrics(double worst_u_rms, double worst_angle, double worst
                      .gating = false});
 }
 
-// Why the lattice breaks below the annulus.
-std::string insitu_dry_note() {
-  return "The lattice breaks down at a lower wall pressure than the finite annulus (column lattice / annulus, "
-         "0.69-0.96 at N = 1e4), for two reasons. (1) The wall row's particle stress reads the hoop stress k times "
-         "too high: k = 1.18-1.26, the least-squares slope over the whole wall, compressive parts included (the "
-         "Lame benchmark's 1.46 is the mean ratio on a uniformly tensile wall, docs/lattice.md). The column 'p_b "
-         "with over-read k' is the annulus' criterion with T_u / k. (2) One beam breaks, not the mean: the wall "
-         "beams scatter about the slope by the RMS residual (7-12%), and the largest of ~40 wall beams sits about "
-         "two residuals high. That is largest for the isotropic field, where the whole wall is equally tensile "
-         "and every beam competes (lattice 27% below the over-read estimate), and smallest for S_H = 3 S_h, where "
-         "only the beams near the S_H axis do. The breaking beam sits at the wall within 11 degrees of the S_H "
-         "axis, as Hubbert-Willis and the annulus say. Kirsch's value (infinite plate) differs from the annulus "
-         "by O(R_i^2) (docs/insitu.md). The displacement field (columns u) is the annulus' to the RMS error "
-         "shown, over max |u|; tests/lattice2d/test_far_field.cpp checks that it falls with the spacing.";
-}
-
 BenchmarkResult insitu_dry(const BenchmarkContext& ctx) {
   BenchmarkResult res;
   const l2::ElasticConstants cal = l2::calibrated_continuum();
@@ -246,7 +230,6 @@ BenchmarkResult insitu_dry(const BenchmarkContext& ctx) {
   core::close_checked(hoop_out, hoop_path);
   core::close_checked(breakdown_out, breakdown_path);
   add_insitu_dry_metrics(worst_u_rms, worst_angle, worst_radius, worst_overread_error, res.metrics);
-  res.notes.push_back(insitu_dry_note());
   res.figures.push_back({"verify_insitu.py", "verify_insitu.png",
                          "Dry lattice under a far field: wall hoop stress against the angle from S_H (markers: wall "
                          "particles; lines: finite annulus), and the jacketed breakdown pressure against S_H - S_h "
@@ -381,23 +364,6 @@ void add_insitu_injection_metrics(double worst_rate_ratio, double worst_first_an
                                       "clear fall, not a number"});
 }
 
-// What agrees with the closed forms and what differs, measured at N = 3000.
-std::string insitu_injection_note() {
-  return "The lattice is brought to rest under the far field before injection (CoupledModel::settle, docs/insitu.md). "
-         "Breakdown is bracketed by the p_h of the step before and of the step that broke the first beam (8-14% "
-         "apart here). Hubbert-Willis and Haimson-Fairhurst are Kirsch's infinite plate; the finite annulus' "
-         "jacketed value is beside them. What agrees: the first break and the fractures lie on the S_H axis, and "
-         "the deviatoric field leaves a third of the isotropic field's arms. What differs, not yet explained: at "
-         "N = 3000 the coupled lattice breaks at or above Hubbert-Willis (isotropic: 4.4-4.8e-4 against 6.0e-4 "
-         "and the dry jacketed lattice's 4.0e-4, lattice2d.insitu_dry seed 1; S_H = 3 S_h: 1.8-2.0e-4 against "
-         "2.0e-4 and the dry lattice's 1.5e-4), so the penetrating fluid delays the first break by 10-30% where "
-         "Haimson-Fairhurst has it 6% earlier than the jacketed wall (b = 0.2); the 1D model from the same rest "
-         "state agrees with Haimson-Fairhurst (5.43-5.50e-4 against 5.63e-4, Q = 0.003-0.03) and the lattice "
-         "lies 4-15% below the 1D model. Candidates for the lattice's delay against its own jacketed wall: the "
-         "wall row's pressure forces (docs/coupling.md) and the pressure of the first triangles lagging p_h at "
-         "these early times.";
-}
-
 BenchmarkResult insitu_injection(const BenchmarkContext& ctx) {
   BenchmarkResult res;
   namespace fs = std::filesystem;
@@ -460,7 +426,6 @@ BenchmarkResult insitu_injection(const BenchmarkContext& ctx) {
                          "time of breaking) with the S_H direction, and the borehole pressure with each field's "
                          "Hubbert-Willis pressure.",
                          ""});
-  res.notes.push_back(insitu_injection_note());
   return res;
 }
 

@@ -289,9 +289,7 @@ BenchmarkResult rudnicki_paper(const BenchmarkContext& ctx) {
       "The analytic solution uses the calibrated lattice's nu = " + fmt(lt::calibrated_continuum().poisson_ratio) +
       ", the model's E/M and vol_strain = plane-strain (the lattice's volumetric strain is the triangle-area change, "
       "eps_xx + eps_yy). Rudnicki's plane is unbounded; at t* = 3e-4 the disk's outer boundary hardly matters for "
-      "r* <= 0.05 (free and fixed differ by < 0.5% there). Measured (2026-11-22): the drained split converges to the "
-      "iterated undrained profiles to 4e-8 in 1.5x the passes; one pass per step differs from the converged profiles "
-      "by up to 5% (p in the tail), more than the paper's 'no significant differences'. "
+      "r* <= 0.05 (free and fixed differ by < 0.5% there). "
       "The CSV of every run is in rudnicki_<run>/ (series.csv, radial.csv, and analytic.csv: Rudnicki at t* = 3e-4).");
   res.figures.push_back({"fig07_rudnicki.py", "fig07_rudnicki.png",
                          "Fig. 7 (Q = 0.1, b = 0.5, t* = 3e-4): radially averaged u_r and p of every run (markers; "

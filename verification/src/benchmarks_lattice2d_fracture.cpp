@@ -401,21 +401,6 @@ void add_uniaxial_tension_metrics(double peak_ratio, double final_stiffness_rati
                                       "meanders by a few spacings, and branches widen the cloud of broken beams"});
 }
 
-// What the benchmark loads and what the lattice should give.
-std::string uniaxial_tension_note() {
-  return "The square is pulled by prescribed u_y = +-strain/2 on its top and bottom rows (u_x free except one pin), "
-         "strengths uniform within +-5% of T_u = 2e-4 (seed 1), crack-tip factor on (L_m = 3.13e-3). The load is "
-         "stepped by 0.05 T_u/E' with snapping to each break (fracture.hpp), so the peak is the exact largest mean "
-         "stress of the sequence. What the lattice should give: a beam breaks when its stress, the mean of its two "
-         "particles' virial stresses, reaches its own strength; in a random lattice under a uniform mean stress the "
-         "particle stresses scatter by ~25% (standard deviation; see the cylinder note), so the first break comes when "
-         "the most "
-         "loaded weak beam reaches T_e, below T_u in mean stress (the free sides' boundary cells over-read the stress "
-         "along them, as in the cylinder benchmark); with the crack-tip factor > 1 at this "
-         "resolution (L ~ 1e-2 > 2 L_m) the first crack then runs unstably across, so the peak is the first-break "
-         "stress. Break log: lattice2d_uniaxial_tension_breaks.csv; VTK: lattice2d_uniaxial_tension_vtk/.";
-}
-
 BenchmarkResult uniaxial_tension(const BenchmarkContext& ctx) {
   BenchmarkResult res;
   const bool paper = ctx.tier == Tier::paper;
@@ -477,8 +462,7 @@ BenchmarkResult uniaxial_tension(const BenchmarkContext& ctx) {
   res.tables.push_back(table);
   res.figures.push_back({"verify_lattice_uniaxial.py", "verify_lattice_uniaxial.png",
                          "Uniaxial tension: mean stress over T_u against the applied strain, and the broken beams."});
-  res.notes.push_back(uniaxial_tension_note() +
-                      (result.message.empty() ? std::string() : " Run status: " + result.message));
+  if (!result.message.empty()) res.notes.push_back("Run status: " + result.message);
   core::close_checked(out, out_path);
   return res;
 }
@@ -555,14 +539,8 @@ BenchmarkResult sawtooth_uniaxial_tension(const BenchmarkContext& ctx) {
                                                   "lattice is lower (docs/fracture_law.md)",
                          .gating = paper});
   res.tables.push_back(table);
-  res.notes.push_back(
-      "The saw-tooth law's first tooth is at the beam's f_t in its own axial stress N/d. A beam along the load "
-      "in a uniform uniaxial stress sigma has axial stress E_n eps_yy = sqrt(3) k_n (1 - nu^2) sigma / E, about "
-      "1.5 sigma with the calibrated k_n = 0.924 and nu = 0.25, and the random lattice's beam stresses scatter "
-      "around it: the first tooth comes at ~0.4-0.5 T_u of the mean stress, and without scaling the lattice "
-      "peaks at 0.795 T_u (N = 1e4, seeds 2-4). The beams' strengths are therefore the drawn ones times "
-      "calibrated_sawtooth_strength_factor() = " +
-      fmt(l2::calibrated_sawtooth_strength_factor()) + ", set so that this test peaks at T_u at N = 1e4.");
+  res.notes.push_back("The beams' strengths are the drawn ones times calibrated_sawtooth_strength_factor() = " +
+                      fmt(l2::calibrated_sawtooth_strength_factor()) + ".");
   return res;
 }
 
@@ -649,16 +627,7 @@ std::string cylinder_note(double p_crit, double p_shear) {
          "this is the hoop stress averaged over the wall particles' half-cells, a little below sigma_theta(R_i) (the "
          "'wall beams' column). The +-5% heterogeneity lowers the first break to the weakest well-loaded wall beam "
          "(compare the 'none' row). The crack-tip factor plays no part before the first break (no broken beam yet); "
-         "afterwards it multiplies the tip beams' stress by (L/2L_m)^(1/2) > 1 at this resolution. "
-         "Why the 10% is not met (docs/lattice.md, 'Why the wall over-reads'): the wall is not over-strained "
-         "(wall-beam strain / Lamé hoop strain 0.96 at N = 1e4, 0.99 at 1e5), but a wall particle's virial stress "
-         "counts its two wall beams' full forces over a half cell clipped at the wall; in the wall's nearly deviatoric "
-         "state (sigma_theta ~ -sigma_r) the random boundary cell's fabric reads ~1.4x ('mean' column; 1.5x already "
-         "for the exact Lamé displacement imposed without a solve). Facet-scaled beams make a straight regular edge "
-         "exact, not the random wall. The wall's max/mean ~1.3 (particle-stress scatter) costs as much again, and "
-         "the second row's scatter alone caps the first break at ~0.94 p_crit (N = 1e4) and ~0.7 (N = 1e5) whatever "
-         "is done at the wall: reaching 10% needs averaging the stress over a fixed length, a material length the "
-         "paper does not have.";
+         "afterwards it multiplies the tip beams' stress by (L/2L_m)^(1/2) > 1 at this resolution.";
 }
 
 BenchmarkResult cylinder_first_break(const BenchmarkContext& ctx) {

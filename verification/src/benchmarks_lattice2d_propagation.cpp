@@ -53,29 +53,6 @@ void add_teeth_release(const CrackGrowthRun& run, const std::string& at, Table& 
   }
 }
 
-// What the growth compares, and what it shows.
-std::vector<std::string> griffith_growth_notes() {
-  return {
-      "Griffith's pressurised crack in an infinite plane grows at p sqrt(pi c) = K_c; with the law's fracture energy "
-      "K_c = sqrt(E' G_f), E' = E/(1 - nu^2) of the calibrated continuum. The crack's half length c is half the "
-      "x-span of the broken beams' faces. Each growth point is the pressure at which the next event (a tooth or a "
-      "break) happens, the crack's volume raised to it; events at the same volume after it are an unstable jump. "
-      "The booked energy is the law's: G_f times the facet of each beam taken through all its teeth, and the "
-      "teeth given way of the others. The growth's cost is the pressure's work minus the energy stored, W - pV/2 "
-      "(W the integral of p dV); the rock's dissipation is the pressure's work on the solid (f . du along the "
-      "solved states) minus pV/2. They differ by the fluid filling facets that opened before they were wetted "
-      "(a broken beam's facet added to a dry crack, or a softening beam's weight growing at its opening).",
-      "What this shows (the law is not verified yet): the lattice books about 1.25 G_f per unit crack length (the "
-      "crack's facets zig-zag, and beams beside it soften too), the rock dissipates more, and K stays well above "
-      "K_c. The envelope followed continuously (secant iterations, no teeth: the teeth's limit; paper tier) lowers "
-      "K only a little: the excess comes from the resolution, the process zone spanning one or two beams, and falls "
-      "with N. "
-      "The per-tooth table shows sequentially linear analysis's own release at fixed volume: a tooth is a "
-      "stiffness drop, and the lattice around the beam relaxes with it ((k + K_s)/(k' + K_s) times the beam's "
-      "triangle for a beam k in series with K_s). docs/fracture_law.md has the study against N and the strength "
-      "factor (studies/griffith_paths.cpp)."};
-}
-
 BenchmarkResult griffith_growth(const BenchmarkContext& ctx) {
   BenchmarkResult res;
   const bool paper = ctx.tier == Tier::paper;
@@ -141,7 +118,6 @@ BenchmarkResult griffith_growth(const BenchmarkContext& ctx) {
     }
   res.tables.push_back(table);
   res.tables.push_back(teeth_table);
-  for (std::string& note : griffith_growth_notes()) res.notes.push_back(std::move(note));
   res.figures.push_back({"verify_griffith_growth.py", "verify_griffith_growth.png",
                          "Crack grown from a notch by its volume (l_ch = " + fmt(kGrowthCharacteristicLength) +
                              " R, the law's calibrated strength): its half length against Griffith's c(V), and "

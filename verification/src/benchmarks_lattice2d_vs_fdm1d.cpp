@@ -169,6 +169,49 @@ struct Outcome {
   double dt_p_h = 0.0, dt_u = 0.0;
 };
 
+/// The borehole pressure's errors over the run, from o.p_h_error: first step, early, windows.
+void summarise_p_h_errors(Outcome& o) {
+  for (const auto& [t, e] : o.p_h_error) {
+    if (o.p_h_first_t == 0.0) o.p_h_first = std::abs(e), o.p_h_first_t = t;
+    if (t <= kEarly * (1 + 1e-12)) o.p_h_early = std::abs(e);
+    if (t >= 0.5 * kWindow * (1 - 1e-12)) o.p_h_half_window = std::max(o.p_h_half_window, std::abs(e));
+    if (t >= kWindow * (1 - 1e-12) && std::abs(e) > o.p_h_window) o.p_h_window = std::abs(e), o.p_h_window_t = t;
+  }
+}
+
+/// 1D against 1D: the effect of nu (the paper's 0.25 vs the lattice's) and of the shared dt.
+void compare_1d_variants(const fdm1d::Fdm1dResult& ref, const fdm1d::Fdm1dResult& ref25,
+                         const fdm1d::Fdm1dResult& ref_fine, Outcome& o) {
+  for (std::size_t k = 0; k < ref.snapshots.size(); ++k) {
+    const auto &a = ref.snapshots[k], &n25 = ref25.snapshots[k], &fine = snapshot_at(ref_fine, a.t);
+    const double p_h = a.p.front();
+    double u_scale = 0.0;
+    for (double u : a.u_r) u_scale = std::max(u_scale, std::abs(u));
+    for (std::size_t i = 0; i < ref.r.size(); ++i) {
+      o.nu_u = std::max(o.nu_u, std::abs(n25.u_r[i] - a.u_r[i]) / u_scale);
+      o.nu_p = std::max(o.nu_p, std::abs(n25.p[i] - a.p[i]) / p_h);
+      o.dt_u = std::max(o.dt_u, std::abs(fine.u_r[i] - a.u_r[i]) / u_scale);
+    }
+  }
+  for (const auto& h : ref.borehole)
+    if (h.t >= kWindow * (1 - 1e-12)) {
+      o.nu_p_h = std::max(o.nu_p_h, std::abs(borehole_pressure_at(ref25, h.t) / h.p_h - 1.0));
+      o.dt_p_h = std::max(o.dt_p_h, std::abs(borehole_pressure_at(ref_fine, h.t) / h.p_h - 1.0));
+    }
+}
+
+/// The 1D run's folder (as `hmlattice fdm1d` writes it) and its profiles, both nu, for the figure.
+void write_1d_profiles(double b, const fdm1d::Fdm1dResult& ref, const fdm1d::Fdm1dResult& ref25, const fs::path& root,
+                       CsvWriter& p1d_csv) {
+  const fs::path d1 = root / ("fdm1d_b" + fmt(b));
+  fs::create_directories(d1);
+  write_fdm1d_results(d1, ref, analytic::table1_borehole(b, kQ));
+  for (std::size_t k = 0; k < ref.snapshots.size(); ++k)
+    for (std::size_t i = 0; i < ref.r.size(); ++i)
+      p1d_csv.row({b, ref.snapshots[k].t, ref.r[i], ref.snapshots[k].u_r[i], ref.snapshots[k].p[i],
+                   ref25.snapshots[k].u_r[i], ref25.snapshots[k].p[i]});
+}
+
 /// Runs both models for one setting, writes the CSV for the figure, returns the errors.
 Outcome compare(const Comparison1d& v, const fs::path& root, CsvWriter& ph_csv, CsvWriter& p2d_csv, CsvWriter* p1d_csv,
                 Table& profile_table) {
@@ -180,15 +223,7 @@ Outcome compare(const Comparison1d& v, const fs::path& root, CsvWriter& ph_csv, 
   const fdm1d::Fdm1dResult ref_fine = run_reference(v.b, v.stepping, nu_lattice, true);
   if (!ref.summary.is_success() || !ref25.summary.is_success() || !ref_fine.summary.is_success())
     throw std::runtime_error("fdm1d failed: " + ref.summary.message + ref25.summary.message + ref_fine.summary.message);
-  if (p1d_csv) {
-    const fs::path d1 = root / ("fdm1d_b" + fmt(v.b));
-    fs::create_directories(d1);
-    write_fdm1d_results(d1, ref, analytic::table1_borehole(v.b, kQ));
-    for (std::size_t k = 0; k < ref.snapshots.size(); ++k)
-      for (std::size_t i = 0; i < ref.r.size(); ++i)
-        p1d_csv->row({v.b, ref.snapshots[k].t, ref.r[i], ref.snapshots[k].u_r[i], ref.snapshots[k].p[i],
-                      ref25.snapshots[k].u_r[i], ref25.snapshots[k].p[i]});
-  }
+  if (p1d_csv) write_1d_profiles(v.b, ref, ref25, root, *p1d_csv);
 
   // The 2D run, written as `hmlattice run` writes it.
   const RunCase c = lattice_case(v);
@@ -249,30 +284,8 @@ Outcome compare(const Comparison1d& v, const fs::path& root, CsvWriter& ph_csv, 
   o.passes = run.total_iterations;
   o.seconds = run.seconds;
   o.max_balance = run.max_balance_error;
-  for (const auto& [t, e] : o.p_h_error) {
-    if (o.p_h_first_t == 0.0) o.p_h_first = std::abs(e), o.p_h_first_t = t;
-    if (t <= kEarly * (1 + 1e-12)) o.p_h_early = std::abs(e);
-    if (t >= 0.5 * kWindow * (1 - 1e-12)) o.p_h_half_window = std::max(o.p_h_half_window, std::abs(e));
-    if (t >= kWindow * (1 - 1e-12) && std::abs(e) > o.p_h_window) o.p_h_window = std::abs(e), o.p_h_window_t = t;
-  }
-
-  // 1D against 1D: the effect of nu (the paper's 0.25 vs the lattice's) and of the shared dt.
-  for (std::size_t k = 0; k < ref.snapshots.size(); ++k) {
-    const auto &a = ref.snapshots[k], &n25 = ref25.snapshots[k], &fine = snapshot_at(ref_fine, a.t);
-    const double p_h = a.p.front();
-    double u_scale = 0.0;
-    for (double u : a.u_r) u_scale = std::max(u_scale, std::abs(u));
-    for (std::size_t i = 0; i < ref.r.size(); ++i) {
-      o.nu_u = std::max(o.nu_u, std::abs(n25.u_r[i] - a.u_r[i]) / u_scale);
-      o.nu_p = std::max(o.nu_p, std::abs(n25.p[i] - a.p[i]) / p_h);
-      o.dt_u = std::max(o.dt_u, std::abs(fine.u_r[i] - a.u_r[i]) / u_scale);
-    }
-  }
-  for (const auto& h : ref.borehole)
-    if (h.t >= kWindow * (1 - 1e-12)) {
-      o.nu_p_h = std::max(o.nu_p_h, std::abs(borehole_pressure_at(ref25, h.t) / h.p_h - 1.0));
-      o.dt_p_h = std::max(o.dt_p_h, std::abs(borehole_pressure_at(ref_fine, h.t) / h.p_h - 1.0));
-    }
+  summarise_p_h_errors(o);
+  compare_1d_variants(ref, ref25, ref_fine, o);
   return o;
 }
 
