@@ -120,37 +120,110 @@ std::string summary_line(const lattice2d::CoupledRunSummary& run, const lattice2
   return summary;
 }
 
-void run_case(const RunArgs& a, int& exit_code, const std::string& command_line) {
+// A run that stopped early: its folder kept with status.toml saying why and where, and one line on
+// stderr with what to try; returns the exit code (1 numerical failure, the signal's, 0 on request).
+int keep_incomplete(core::ResultFolder& out, const std::filesystem::path& kept, const cases::RunCase& c,
+                    const lattice2d::CoupledRunSummary& run, const lattice2d::CoupledModel& model,
+                    const core::InterruptRequest& interrupt, int step, const core::StoppedCheckpoint& checkpoint) {
+  const bool interrupted = run.status == lattice2d::CoupledStatus::interrupted;
+  const std::string why = !interrupted ? "numerical failure: " + run.message
+                          : interrupt.signal() != 0
+                              ? std::string("interrupted by ") + interrupt.signal_name()
+                              : "stopped after step " + std::to_string(step) + " (--stop-after-steps)";
+  core::write_stopped_status(out.path() / "status.toml", "run", why, step, model.time(), c.stepping.t_end, kept,
+                             checkpoint);
+  out.commit(why);
+  const std::string what_to_try = interrupted ? std::string() : what_to_try_after(c, run);
+  std::cerr << "hmlattice run: " << core::one_line(why, 300) << what_to_try << "; the " << step
+            << " steps done (t = " << model.time() << " of " << c.stepping.t_end << ") are in " << kept.string()
+            << ", marked incomplete (status.toml)"
+            << (checkpoint.step >= 0 ? "; continue with hmlattice run --resume " + kept.string() : std::string())
+            << "\n";
+  return !interrupted ? 1 : interrupt.signal() != 0 ? interrupt.exit_code() : 0;
+}
+
+// The progress line's words after a step.
+std::string step_progress(const lattice2d::CoupledModel& m, const lattice2d::CoupledStepSummary& s, int step,
+                          double eta_seconds) {
+  return "step " + std::to_string(step) + ", broken " + std::to_string(m.n_broken()) + ", iterations " +
+         std::to_string(s.iterations) + ", contact switches " + std::to_string(s.n_contact_changes) +
+         ", refactorisations " + std::to_string(s.n_mechanics_factorizations) + " (" +
+         std::to_string(s.n_mechanics_update_failures) + " after failed updates), ETA " +
+         std::to_string(static_cast<int>(eta_seconds)) + " s" +
+         (s.n_mechanics_update_failures > 0
+              ? "; last failed update: " + m.mechanics().solver().report().last_update_failure
+              : std::string());
+}
+
+// A run that reached its end (t_end, or its first break when asked to stop there): the folder
+// committed without status.toml or checkpoint, and where the results are.
+void keep_complete(core::ResultFolder& out, const cases::RunCase& c, const cases::Breakdown& breakdown,
+                   bool stopped_at_first_break, int step) {
+  std::error_code ec;
+  std::filesystem::remove(out.path() / "status.toml", ec);  // a resumed run is complete now
+  std::filesystem::remove(out.path() / cases::checkpoint_file_name, ec);
+  out.commit();
+  if (stopped_at_first_break)
+    std::cout << "Stopped at the first break: t* = " << core::format_value(breakdown.t_first)
+              << ", p_h = " << core::format_value(breakdown.p_first) << " (step " << step << ")\n";
+  else if (c.stop_at_first_break)
+    std::cout << "No beam broke by t_end = " << core::format_value(c.stepping.t_end) << "\n";
+  std::cout << "Results: " << cases::results_line(out.target(), c) << "\n";
+}
+
+// A run read, built and ready to step: its folder, case, model and recorder.
+struct PreparedRun {
+  std::unique_ptr<core::ResultFolder> out;
+  cases::RunCase c;
+  std::string case_text;  // the resolved case, which a checkpoint must match
+  std::unique_ptr<lattice2d::CoupledModel> model;
+  std::unique_ptr<cases::RunRecorder> recorder;
+  double setup_seconds = 0.0;
+};
+
+PreparedRun prepare_run(const RunArgs& a, const std::string& command_line) {
   // 1. Read and validate everything, the output folder and a checkpoint to resume included, before
   //    computing. A resumed run reads its folder's config.toml and continues in that folder.
+  PreparedRun r;
   const bool resuming = !a.resume.empty();
-  std::unique_ptr<core::ResultFolder> out =
+  r.out =
       resuming
           ? std::make_unique<core::ResultFolder>(core::ResultFolder::Resume{}, a.resume, "--resume", command_line)
           : std::make_unique<core::ResultFolder>(output_folder(a.out, a.case_file), "--out", a.overwrite, command_line);
-  const cases::RunCase c = resuming ? cases::read_run_case(cases::run_file_path(out->path(), cases::RunFileId::config))
-                                    : cases::read_run_case(a.case_file, a.set);
-  const std::string case_text = cases::run_case_to_toml(c, "");
-  print_case(c);
+  r.c = resuming ? cases::read_run_case(cases::run_file_path(r.out->path(), cases::RunFileId::config))
+                 : cases::read_run_case(a.case_file, a.set);
+  r.case_text = cases::run_case_to_toml(r.c, "");
+  print_case(r.c);
 
   // 2. Build the lattice and the coupled model (mechanics factorised once, with the Eq. 20 springs).
   //    The beams are the toolkit's calibrated constants (E = 1; the lattice's nu is
   //    calibrated_continuum().poisson_ratio, docs/lattice.md), whatever [physics] nu says: nu there
   //    enters E/M (Eq. 22) only. A resumed model then takes the checkpoint's state.
   const auto setup_start = std::chrono::steady_clock::now();
-  const auto model = cases::make_coupled_model(c);
-  std::unique_ptr<cases::RunRecorder> recorder;
+  r.model = cases::make_coupled_model(r.c);
   if (resuming) {
-    core::StateReader state = cases::read_checkpoint(out->path(), case_text, *model);
-    recorder = std::make_unique<cases::RunRecorder>(out->path(), c, *model, state);
+    core::StateReader state = cases::read_checkpoint(r.out->path(), r.case_text, *r.model);
+    r.recorder = std::make_unique<cases::RunRecorder>(r.out->path(), r.c, *r.model, state);
   } else {
-    recorder = std::make_unique<cases::RunRecorder>(out->path(), c);
+    r.recorder = std::make_unique<cases::RunRecorder>(r.out->path(), r.c);
     // The resolved configuration first: a run killed at any point leaves it beside its steps.
-    core::write_file_atomically(cases::run_file_path(out->path(), cases::RunFileId::config), [&](std::ostream& f) {
-      f << cases::run_case_to_toml(c, cases::to_toml(cases::make_provenance(command_line)));
+    core::write_file_atomically(cases::run_file_path(r.out->path(), cases::RunFileId::config), [&](std::ostream& f) {
+      f << cases::run_case_to_toml(r.c, cases::to_toml(cases::make_provenance(command_line)));
     });
   }
-  const double setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_start).count();
+  r.setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_start).count();
+  return r;
+}
+
+void run_case(const RunArgs& a, int& exit_code, const std::string& command_line) {
+  PreparedRun prepared = prepare_run(a, command_line);
+  const bool resuming = !a.resume.empty();
+  const std::unique_ptr<core::ResultFolder>& out = prepared.out;
+  const cases::RunCase& c = prepared.c;
+  const std::string& case_text = prepared.case_text;
+  const std::unique_ptr<lattice2d::CoupledModel>& model = prepared.model;
+  const std::unique_ptr<cases::RunRecorder>& recorder = prepared.recorder;
+  const double setup_seconds = prepared.setup_seconds;
   print_model(*model);
   const int first_step = model->run_cursor().totals.n_steps;
   if (resuming)
@@ -194,14 +267,7 @@ void run_case(const RunArgs& a, int& exit_code, const std::string& command_line)
         const int remaining = remaining_steps(m.time(), s.dt, c.stepping);
         const int done = step - first_step;
         progress.update(m.time(), c.stepping.t_end,
-                        "step " + std::to_string(step) + ", broken " + std::to_string(m.n_broken()) + ", iterations " +
-                            std::to_string(s.iterations) + ", contact switches " + std::to_string(s.n_contact_changes) +
-                            ", refactorisations " + std::to_string(s.n_mechanics_factorizations) + " (" +
-                            std::to_string(s.n_mechanics_update_failures) + " after failed updates), ETA " +
-                            std::to_string(static_cast<int>(done > 0 ? step_seconds / done * remaining : 0.0)) + " s" +
-                            (s.n_mechanics_update_failures > 0
-                                 ? "; last failed update: " + m.mechanics().solver().report().last_update_failure
-                                 : std::string()));
+                        step_progress(m, s, step, done > 0 ? step_seconds / done * remaining : 0.0));
       },
       [&] {
         stopped_at_first_break = c.reached_first_break(*model);
@@ -221,35 +287,12 @@ void run_case(const RunArgs& a, int& exit_code, const std::string& command_line)
   if (!complete && run.status == lattice2d::CoupledStatus::interrupted && checkpoint_step != step) checkpoint(*model);
   recorder->finish();
   if (!complete) {
-    const bool interrupted = run.status == lattice2d::CoupledStatus::interrupted;
-    const std::string why = !interrupted ? "numerical failure: " + run.message
-                            : interrupt.signal() != 0
-                                ? std::string("interrupted by ") + interrupt.signal_name()
-                                : "stopped after step " + std::to_string(step) + " (--stop-after-steps)";
     // A resumed folder stays where it is when it stops again (a killed run's staging folder included).
     const std::filesystem::path kept = resuming ? std::filesystem::path(a.resume) : out->target();
-    core::write_stopped_status(out->path() / "status.toml", "run", why, step, model->time(), c.stepping.t_end, kept,
-                               {checkpoint_step, checkpoint_t});
-    out->commit(why);
-    const std::string what_to_try = interrupted ? std::string() : what_to_try_after(c, run);
-    std::cerr << "hmlattice run: " << core::one_line(why, 300) << what_to_try << "; the " << step
-              << " steps done (t = " << model->time() << " of " << c.stepping.t_end << ") are in " << kept.string()
-              << ", marked incomplete (status.toml)"
-              << (checkpoint_step >= 0 ? "; continue with hmlattice run --resume " + kept.string() : std::string())
-              << "\n";
-    exit_code = !interrupted ? 1 : interrupt.signal() != 0 ? interrupt.exit_code() : 0;
+    exit_code = keep_incomplete(*out, kept, c, run, *model, interrupt, step, {checkpoint_step, checkpoint_t});
     return;
   }
-  std::error_code ec;
-  std::filesystem::remove(out->path() / "status.toml", ec);  // a resumed run is complete now
-  std::filesystem::remove(out->path() / cases::checkpoint_file_name, ec);
-  out->commit();
-  if (stopped_at_first_break)
-    std::cout << "Stopped at the first break: t* = " << core::format_value(recorder->breakdown().t_first)
-              << ", p_h = " << core::format_value(recorder->breakdown().p_first) << " (step " << step << ")\n";
-  else if (c.stop_at_first_break)
-    std::cout << "No beam broke by t_end = " << core::format_value(c.stepping.t_end) << "\n";
-  std::cout << "Results: " << cases::results_line(out->target(), c) << "\n";
+  keep_complete(*out, c, recorder->breakdown(), stopped_at_first_break, step);
 }
 
 }  // namespace
