@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "hm/core/state_archive.hpp"
 #include "hm/lattice2d/mechanics/calibration.hpp"
 #include "hm/lattice2d/mechanics/mechanics.hpp"
 
@@ -176,6 +177,25 @@ void run(long long n, bool variants, bool with_pcg) {
       "first solve (two) %.1fx it, repeated solve (one) %.1fx, re-solve %.1fx\n",
       factor_bytes / 1e6, bandwidth / 1e9, floor_one, t_first / (2 * floor_one), t_solve / floor_one,
       t_resolve / floor_one);
+
+  // A step's snapshot restored, as a retried step does: in place into the solver that saved it (its
+  // analysis and factor storage kept), against into a new solver (an analysis and a second factor's
+  // storage: what every restore did before).
+  const std::size_t snapshot_bytes =
+      hm::core::StateWriter::measure([&](hm::core::StateWriter& w) { chol.save_state(w); });
+  hm::core::StateWriter snapshot;
+  chol.save_state(snapshot);
+  const auto restore_into = [&](CholmodSolver& solver) {
+    hm::core::StateReader r = hm::core::StateReader::of_snapshot(snapshot, "the bench's snapshot");
+    const double start = now();
+    solver.restore_state(r);
+    return now() - start;
+  };
+  const double t_in_place = restore_into(chol);
+  CholmodSolver fresh;
+  const double t_fresh = restore_into(fresh);
+  std::printf("  snapshot restore (%.0f MB): in place %.3f s, into a new solver %.3f s: %.1fx\n",
+              static_cast<double>(snapshot_bytes) / 1e6, t_in_place, t_fresh, t_fresh / t_in_place);
 
   // 3. Through the mechanics (contact check, equilibrium residual, forces not included).
   mech.solve();

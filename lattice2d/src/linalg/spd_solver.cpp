@@ -363,73 +363,101 @@ void check_factor_arrays(const cholmod_factor& L, Eigen::Index n_rows, const std
 void CholmodSolver::restore_state(core::StateReader& r) {
   r.get_sparse("cholmod.matrix", matrix_);
   transfer_report(r, report_);
-  r.get("cholmod.analysed_outer", impl_->analysed_outer);
-  r.get("cholmod.analysed_inner", impl_->analysed_inner);
+  std::vector<int> outer, inner;
+  r.get("cholmod.analysed_outer", outer);
+  r.get("cholmod.analysed_inner", inner);
   bool factor_ok = false, has_factor = false, has_forward = false;
   r.get("cholmod.factor_ok", factor_ok);
   r.get("cholmod.has_factor", has_factor);
-  // The ordering is a function of the pattern: analysing the same one gives the same symbolic factor.
-  const auto n_rows = static_cast<Eigen::Index>(impl_->analysed_outer.size()) - 1;
+  const auto n_rows = static_cast<Eigen::Index>(outer.size()) - 1;
   if (n_rows != matrix_.rows())
     throw InputError(r.source() + ": at 'cholmod.analysed_outer': a pattern of " + std::to_string(n_rows) +
                      " rows for a matrix of " + std::to_string(matrix_.rows()));
-  core::check_compressed_pattern(impl_->analysed_outer.data(), impl_->analysed_inner.data(), n_rows, n_rows,
-                                 impl_->analysed_inner.size(), r.source(), "cholmod.analysed_inner");
-  const std::vector<double> ones(impl_->analysed_inner.size(), 1.0);
-  const Matrix analysed =
-      Eigen::Map<const Matrix>(n_rows, n_rows, static_cast<Eigen::Index>(ones.size()), impl_->analysed_outer.data(),
-                               impl_->analysed_inner.data(), ones.data());
-  const SpdSolveReport report = report_;
-  if (!analyse(analysed)) throw std::runtime_error("restoring the mechanics solver: " + report_.message);
-  report_ = report;
-  cholmod_common* c = impl_->c();
+  core::check_compressed_pattern(outer.data(), inner.data(), n_rows, n_rows, inner.size(), r.source(),
+                                 "cholmod.analysed_inner");
+  // The ordering is a function of the pattern: analysing the same one gives the same symbolic factor,
+  // so a step's snapshot, whose pattern is this solver's, keeps it (an analysis costs seconds at 1e6).
+  if (!impl_->symbolic || outer != impl_->analysed_outer || inner != impl_->analysed_inner) {
+    impl_->analysed_outer = std::move(outer);
+    impl_->analysed_inner = std::move(inner);
+    const std::vector<double> ones(impl_->analysed_inner.size(), 1.0);
+    const Matrix analysed =
+        Eigen::Map<const Matrix>(n_rows, n_rows, static_cast<Eigen::Index>(ones.size()), impl_->analysed_outer.data(),
+                                 impl_->analysed_inner.data(), ones.data());
+    const SpdSolveReport report = report_;
+    if (!analyse(analysed)) throw std::runtime_error("restoring the mechanics solver: " + report_.message);
+    report_ = report;
+  }
   impl_->subtree_current = false;
-  if (has_factor) {
-    std::size_t n = 0, minor = 0, nzmax = 0;
-    r.get("L.n", n);
-    r.get("L.minor", minor);
-    r.get("L.nzmax", nzmax);
+  if (has_factor)
+    restore_factor(r, n_rows);
+  else
+    impl_->factor.reset();
+  impl_->factor_ok = factor_ok && has_factor;
+  r.get("cholmod.has_forward", has_forward);
+  if (has_forward) {
+    // The arrays are read into storage of the right size, kept when it has it: a restore holds one
+    // factor and its snapshot, never two factors (4 GB each at N = 1e6).
+    if (!impl_->forward || impl_->forward->nrow != static_cast<std::size_t>(n_rows))
+      impl_->forward.reset(cholmod_allocate_dense(n_rows, 1, n_rows, CHOLMOD_REAL, impl_->c()));
+    if (!impl_->forward) throw std::runtime_error("restoring the mechanics solver: out of memory");
+    r.get("forward.y", static_cast<double*>(impl_->forward->x), static_cast<std::size_t>(n_rows));
+    r.get("forward.b", impl_->forward_b);
+    if (impl_->forward_b.size() != matrix_.rows()) throw InputError(r.source() + ": at 'forward.b': wrong size");
+  } else {
+    impl_->forward.reset();
+  }
+}
+
+namespace {
+
+// The saved arrays of a factor into L (of the saved n and nzmax), checked.
+void read_factor_arrays(core::StateReader& r, cholmod_factor& L, std::size_t minor, Eigen::Index n_rows) {
+  const std::size_t n = L.n, nzmax = L.nzmax;
+  L.minor = minor;
+  r.get("L.ordering", L.ordering);
+  r.get("L.is_monotonic", L.is_monotonic);
+  r.get("L.Perm", static_cast<int*>(L.Perm), n);
+  r.get("L.ColCount", static_cast<int*>(L.ColCount), n);
+  r.get("L.p", static_cast<int*>(L.p), n + 1);
+  r.get("L.i", static_cast<int*>(L.i), nzmax);
+  r.get("L.x", static_cast<double*>(L.x), nzmax);
+  r.get("L.nz", static_cast<int*>(L.nz), n);
+  r.get("L.next", static_cast<int*>(L.next), n + 2);
+  r.get("L.prev", static_cast<int*>(L.prev), n + 2);
+  check_factor_arrays(L, n_rows, r.source());
+}
+
+}  // namespace
+
+void CholmodSolver::restore_factor(core::StateReader& r, Eigen::Index n_rows) {
+  cholmod_common* c = impl_->c();
+  std::size_t n = 0, minor = 0, nzmax = 0;
+  r.get("L.n", n);
+  r.get("L.minor", minor);
+  r.get("L.nzmax", nzmax);
+  if (n != static_cast<std::size_t>(n_rows))
+    throw InputError(r.source() + ": the mechanics factor is inconsistent (L.n = " + std::to_string(n) +
+                     ", the matrix has " + std::to_string(n_rows) + " rows)");
+  // A numeric simplicial LDL' of the right size, whose arrays are then overwritten with the saved
+  // ones: the current factor when it is one (a step's snapshot), else a new one.
+  cholmod_factor* current = impl_->factor.get();
+  if (!(current && !current->is_super && !current->is_ll && current->xtype == CHOLMOD_REAL &&
+        current->itype == CHOLMOD_INT && current->n == n && current->nzmax == nzmax && current->nz && current->next &&
+        current->prev && current->ColCount)) {
+    impl_->factor.reset();  // before the new one is made: never two factors at once
     FactorPtr L(cholmod_allocate_factor(n, c), FactorDeleter{c});
-    // A numeric simplicial LDL' of the right size, whose arrays are then overwritten with the saved ones.
     if (!L || !cholmod_change_factor(CHOLMOD_REAL, 0, 0, 1, 1, L.get(), c) ||
         !cholmod_reallocate_factor(nzmax, L.get(), c))
       throw std::runtime_error("restoring the mechanics solver: out of memory for its factor");
-    L->minor = minor;
-    r.get("L.ordering", L->ordering);
-    r.get("L.is_monotonic", L->is_monotonic);
-    std::vector<int> ints;
-    std::vector<double> values;
-    const auto get_ints = [&](const char* tag, void* into, std::size_t size) {
-      r.get(tag, ints);
-      if (ints.size() != size) throw InputError(r.source() + ": at '" + tag + "': wrong size");
-      copy_into(into, ints);
-    };
-    get_ints("L.Perm", L->Perm, n);
-    get_ints("L.ColCount", L->ColCount, n);
-    get_ints("L.p", L->p, n + 1);
-    get_ints("L.i", L->i, nzmax);
-    r.get("L.x", values);
-    if (values.size() != nzmax) throw InputError(r.source() + ": at 'L.x': wrong size");
-    copy_into(L->x, values);
-    get_ints("L.nz", L->nz, n);
-    get_ints("L.next", L->next, n + 2);
-    get_ints("L.prev", L->prev, n + 2);
-    check_factor_arrays(*L, n_rows, r.source());
     impl_->factor = std::move(L);
   }
-  impl_->factor_ok = factor_ok && has_factor;
-  r.get("cholmod.has_forward", has_forward);
-  impl_->forward.reset();
-  if (has_forward) {
-    std::vector<double> y;
-    r.get("forward.y", y);
-    if (static_cast<Eigen::Index>(y.size()) != matrix_.rows())
-      throw InputError(r.source() + ": at 'forward.y': wrong size");
-    impl_->forward.reset(cholmod_allocate_dense(y.size(), 1, y.size(), CHOLMOD_REAL, c));
-    if (!impl_->forward) throw std::runtime_error("restoring the mechanics solver: out of memory");
-    copy_into(impl_->forward->x, y);
-    r.get("forward.b", impl_->forward_b);
-    if (impl_->forward_b.size() != matrix_.rows()) throw InputError(r.source() + ": at 'forward.b': wrong size");
+  cholmod_factor& L = *impl_->factor;
+  try {  // a damaged state leaves no factor, never one whose arrays index out of themselves
+    read_factor_arrays(r, L, minor, n_rows);
+  } catch (...) {
+    impl_->factor.reset();
+    throw;
   }
 }
 

@@ -146,6 +146,11 @@ class StateReader {
     get(tag, v);
     value = static_cast<Enum>(v);
   }
+  /// Exactly `n` values into `data` (storage the caller owns, e.g. a library's arrays).
+  template <class T>
+  void get(std::string_view tag, T* data, std::size_t n) {
+    get_array(tag, data, n);
+  }
   template <class Sparse>
   void get_sparse(std::string_view tag, Sparse& a);
   template <class T>

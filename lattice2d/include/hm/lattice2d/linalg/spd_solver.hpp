@@ -195,6 +195,7 @@ class CholmodSolver final : public SpdSolver {
  private:
   Eigen::VectorXd parallel_solve(const Eigen::VectorXd& b);  // options_.parallel_triangular_solve
   bool analyse(const Matrix& A);  // ordering and symbolic factor of A's pattern; false: report_ says why
+  void restore_factor(core::StateReader& r, Eigen::Index n_rows);  // restore_state's factor, read in place
   struct Impl;
   std::unique_ptr<Impl> impl_;
   SpdSolverOptions options_;
