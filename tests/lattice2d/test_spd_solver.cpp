@@ -347,6 +347,26 @@ TEST_CASE("Triangular solves on two threads: CHOLMOD's answer, bitwise the same 
   }
 }
 
+TEST_CASE("An update that adds fill to L rebuilds the threaded solve's partition", "[lattice2d]") {
+  const TestSystem s = make_system();
+  CholmodSolver solver;  // the threaded triangular solves (the default)
+  solver.compute(s.A);
+  solver.solve(s.b);  // the partition is made for A's factor
+  // A spring between the first and the last unknown, far apart in the lattice: outside A's pattern, so
+  // the update adds entries to L's columns and may change its elimination tree.
+  const Eigen::Index n = s.A.rows();
+  REQUIRE(s.A.coeff(0, n - 1) == 0.0);
+  Matrix W(n, 1);
+  W.insert(0, 0) = 1.0;
+  W.insert(n - 1, 0) = -1.0;
+  W.makeCompressed();
+  solver.modify(W, +1);
+  REQUIRE(solver.info() == Eigen::Success);
+  const Eigen::VectorXd x = solver.solve(s.b);
+  const Matrix A = s.A + Matrix(W * W.transpose());
+  CHECK((A * x - s.b).norm() / s.b.norm() < 1e-12);  // round-off (as the downdate test's)
+}
+
 TEST_CASE("The elimination tree splits into two even groups below a small top", "[lattice2d]") {
   // The flow's and the mechanics' factors are CHOLMOD simplicial LDL' with nested dissection.
   struct Ldlt : Eigen::CholmodSimplicialLDLT<Matrix, Eigen::Lower> {

@@ -118,7 +118,10 @@ struct CholmodSolver::Impl {
   Eigen::VectorXd forward_b;
   SubtreeSolve subtree;          // multithreaded triangular solves (options.parallel_triangular_solve)
   bool subtree_current = false;  // subtree's partition checked against the current factor
-  Eigen::VectorXd work;          // backward solve in the factor's order
+  // The factor has only been modified (updates and downdates) since the partition's last check, so
+  // its columns can only have grown: a check of the column counts suffices.
+  bool subtree_only_modified = false;
+  Eigen::VectorXd work;  // backward solve in the factor's order
 
   cholmod_common* c() { return &common.c; }
 
@@ -241,6 +244,8 @@ bool CholmodSolver::analyse(const Matrix& A) {
   }
   impl_->factor.reset();
   impl_->symbolic.reset();
+  impl_->subtree_current = false;
+  impl_->subtree_only_modified = false;
   SparsePtr S = impl_->to_cholmod_lower(A);
   if (S) {
     const std::lock_guard<std::mutex> lock(cholmod_analysis_mutex());
@@ -389,6 +394,7 @@ void CholmodSolver::restore_state(core::StateReader& r) {
     report_ = report;
   }
   impl_->subtree_current = false;
+  impl_->subtree_only_modified = false;
   if (has_factor)
     restore_factor(r, n_rows);
   else
@@ -471,6 +477,7 @@ void CholmodSolver::refactorize() {
   }
   impl_->factor_ok = false;
   impl_->subtree_current = false;
+  impl_->subtree_only_modified = false;
   impl_->forward.reset();
   impl_->factor.reset(cholmod_copy_factor(impl_->symbolic.get(), c));
   SparsePtr S = impl_->to_cholmod_lower(matrix_);
@@ -644,8 +651,9 @@ Eigen::VectorXd CholmodSolver::parallel_solve(const Eigen::VectorXd& b) {
   const auto* perm = static_cast<const int*>(L.Perm);
   const Eigen::Index n = b.size();
   if (!impl_->subtree_current) {
-    impl_->subtree.update(L);
+    impl_->subtree.update(L, impl_->subtree_only_modified);
     impl_->subtree_current = true;
+    impl_->subtree_only_modified = true;
   }
   if (!options_.reuse_forward_solve || !impl_->forward || impl_->forward_b.size() != n || impl_->forward_b != b) {
     impl_->forward.reset(

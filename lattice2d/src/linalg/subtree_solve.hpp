@@ -34,8 +34,10 @@ class SubtreeSolve {
 
   /// Rebuilds the partition if L's elimination tree differs from the one it was built for (an O(n)
   /// check; the tree changes at a factorisation, and at a modification only if it adds fill).
-  /// L must be a simplicial LDL' factor with sorted row indices (CHOLMOD's simplicial form).
-  void update(const cholmod_factor& L);
+  /// `only_modified`: L is the factor of the last call, since changed by cholmod_updown alone, so a
+  /// check of its column counts suffices. L must be a simplicial LDL' factor with sorted row indices
+  /// (CHOLMOD's simplicial form).
+  void update(const cholmod_factor& L, bool only_modified = false);
   /// x := L^-1 x, x in the factor's (permuted) order, L unit lower triangular.
   void forward(const cholmod_factor& L, double* x);
   /// x := L^-T D^-1 x.
