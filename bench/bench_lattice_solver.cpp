@@ -21,6 +21,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "hm/core/state_archive.hpp"
@@ -181,10 +183,10 @@ void run(long long n, bool variants, bool with_pcg) {
   // A step's snapshot restored, as a retried step does: in place into the solver that saved it (its
   // analysis and factor storage kept), against into a new solver (an analysis and a second factor's
   // storage: what every restore did before).
-  const std::size_t snapshot_bytes =
-      hm::core::StateWriter::measure([&](hm::core::StateWriter& w) { chol.save_state(w); });
+  const std::size_t snapshot_bytes = hm::core::StateWriter::measure(
+      [&](hm::core::StateWriter& w) { chol.save_state(w, hm::lattice2d::StateScope::whole); });
   hm::core::StateWriter snapshot;
-  chol.save_state(snapshot);
+  chol.save_state(snapshot, hm::lattice2d::StateScope::whole);
   const auto restore_into = [&](CholmodSolver& solver) {
     hm::core::StateReader r = hm::core::StateReader::of_snapshot(snapshot, "the bench's snapshot");
     const double start = now();
@@ -196,6 +198,36 @@ void run(long long n, bool variants, bool with_pcg) {
   const double t_fresh = restore_into(fresh);
   std::printf("  snapshot restore (%.0f MB): in place %.3f s, into a new solver %.3f s: %.1fx\n",
               static_cast<double>(snapshot_bytes) / 1e6, t_in_place, t_fresh, t_fresh / t_in_place);
+
+  // A failed step with ten breaks, returned to its start: the start's state with a copy of the factor
+  // (saved whole, restored in place: what a step did before), against the start's state without it,
+  // the factor's changes logged and undone by the solver (StateScope::step_start: what a step does).
+  const std::vector<int> step_breaks(
+      breaks.begin(), breaks.begin() + static_cast<std::ptrdiff_t>(std::min<std::size_t>(10, breaks.size())));
+  // Each keeps its writer's memory from one step to the next, as a run keeps its snapshot's.
+  hm::core::StateWriter whole_state, step_state;
+  const auto failed_step = [&](hm::lattice2d::StateScope scope, hm::core::StateWriter& state) {
+    const double start = now();
+    if (scope == hm::lattice2d::StateScope::step_start) chol.begin_step();
+    state.clear();
+    chol.save_state(state, scope);
+    for (int e : step_breaks) chol.modify(beam_columns(mech, free_index, e), -1);
+    hm::core::StateReader r = hm::core::StateReader::of_snapshot(state, "the bench's step");
+    chol.restore_state(r);
+    return std::pair{now() - start, state.bytes().size()};
+  };
+  std::vector<double> t_whole, t_logged;
+  std::size_t bytes_whole = 0, bytes_logged = 0;
+  for (int r = 0; r < 5; ++r) {
+    std::tie(t_whole.emplace_back(), bytes_whole) = failed_step(hm::lattice2d::StateScope::whole, whole_state);
+    std::tie(t_logged.emplace_back(), bytes_logged) = failed_step(hm::lattice2d::StateScope::step_start, step_state);
+  }
+  std::printf(
+      "  a failed step with %d breaks, back to its start (median of 5): factor copied %.3f s, state %.0f MB; "
+      "factor's changes undone %.3f s, state %.0f MB: %.1fx the time, %.1fx the memory\n",
+      static_cast<int>(step_breaks.size()), median(t_whole), static_cast<double>(bytes_whole) / 1e6, median(t_logged),
+      static_cast<double>(bytes_logged) / 1e6, median(t_whole) / median(t_logged),
+      static_cast<double>(bytes_whole) / static_cast<double>(bytes_logged));
 
   // 3. Through the mechanics (contact check, equilibrium residual, forces not included).
   mech.solve();

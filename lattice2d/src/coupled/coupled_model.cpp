@@ -264,12 +264,15 @@ CoupledStepSummary CoupledModel::step(double dt, double overshoot_tolerance) {
   // step starts from t^n exactly as a run that took the shorter step in the first place.
   // The first snapshot is measured first, so that its buffer is made once at its size (growing it would
   // hold two copies of the state at once); later ones reuse it.
+  // The mechanics' factor is not copied: its changes from here are logged and undone (FactorUndoLog).
+  mechanics_->begin_step();
   if (first_snapshot_) {
-    step_start_.reserve(core::StateWriter::measure([this](core::StateWriter& w) { save_model_state(w); }));
+    step_start_.reserve(
+        core::StateWriter::measure([this](core::StateWriter& w) { save_model_state(w, StateScope::step_start); }));
     first_snapshot_ = false;
   }
   step_start_.clear();
-  save_model_state(step_start_);
+  save_model_state(step_start_, StateScope::step_start);
   PassGuess guess = predict(dt);
   DualGraph dual;
   const bool converged = iterate(dt, overshoot_tolerance, guess, dual, summary);
@@ -832,7 +835,7 @@ void CoupledModel::transfer_history(Archive& a, Self& m) {
 }
 
 void CoupledModel::save_state(core::StateWriter& w) const {
-  save_model_state(w);
+  save_model_state(w, StateScope::whole);
   transfer_cursor(w, cursor_);
 }
 
@@ -846,10 +849,10 @@ void CoupledModel::restore_state(core::StateReader& r) {
   volume_ = unknown_volumes(current_dual_.triangle_area);
 }
 
-void CoupledModel::save_model_state(core::StateWriter& w) const {
+void CoupledModel::save_model_state(core::StateWriter& w, StateScope scope) const {
   w.put("model.particles", lattice().n_particles());
   w.put("model.beams", lattice().n_beams());
-  mechanics_->save_state(w);
+  mechanics_->save_state(w, scope);
   flow_->save_state(w);
   transfer_history(w, *this);
   w.put("model.at_rest", at_rest_);

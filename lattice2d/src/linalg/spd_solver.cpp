@@ -13,6 +13,7 @@
 #include "hm/core/input_error.hpp"
 #include "hm/core/state_archive.hpp"
 #include "hm/core/validation.hpp"
+#include "linalg/factor_undo_log.hpp"
 #include "linalg/subtree_solve.hpp"
 
 namespace hm::lattice2d {
@@ -122,6 +123,15 @@ struct CholmodSolver::Impl {
   // its columns can only have grown: a check of the column counts suffices.
   bool subtree_only_modified = false;
   Eigen::VectorXd work;  // backward solve in the factor's order
+  // The factor of the last begin_step() (a coupled step's start), without a copy of it: `set_aside`
+  // once a refactorisation or a new analysis replaced it inside the step, else the current factor;
+  // either with `undo`'s columns written back.
+  bool recording = false;         // begin_step() was called: the factor's changes are logged
+  std::int64_t step = 0;          // begin_step() calls: a step's saved state names its step
+  bool step_factor = false;       // the step began with a numeric factor
+  bool step_factor_lost = false;  // an update failed inside CHOLMOD after its columns were logged
+  FactorUndoLog undo;
+  FactorPtr set_aside{nullptr, FactorDeleter{&common.c}};
 
   cholmod_common* c() { return &common.c; }
 
@@ -191,6 +201,13 @@ PivotRange ldl_pivots(const cholmod_factor& L) {
 // The pivots where they are checked; an unchecked factor (the flow's, every pass) is not scanned.
 PivotRange checked_pivots(const cholmod_factor& L, bool check) { return check ? ldl_pivots(L) : PivotRange{}; }
 
+// A numeric simplicial LDL' factor with int indices: the form cholmod_updown keeps and a state saves. A
+// factorisation that failed can leave CHOLMOD's factor symbolic (no values) or in another form.
+bool numeric_ldl(const cholmod_factor* L) {
+  return L != nullptr && !L->is_super && !L->is_ll && L->xtype == CHOLMOD_REAL && L->itype == CHOLMOD_INT &&
+         L->x != nullptr && L->nz != nullptr;
+}
+
 }  // namespace
 
 CholmodSolver::~CholmodSolver() = default;
@@ -242,10 +259,8 @@ bool CholmodSolver::analyse(const Matrix& A) {
       break;
     case CholmodOrdering::automatic: c->nmethods = 0; break;
   }
-  impl_->factor.reset();
+  release_factor();
   impl_->symbolic.reset();
-  impl_->subtree_current = false;
-  impl_->subtree_only_modified = false;
   SparsePtr S = impl_->to_cholmod_lower(A);
   if (S) {
     const std::lock_guard<std::mutex> lock(cholmod_analysis_mutex());
@@ -293,43 +308,67 @@ void copy_into(void* data, const std::vector<T>& v) {
 
 }  // namespace
 
-void CholmodSolver::save_state(core::StateWriter& w) const {
+void CholmodSolver::save_state(core::StateWriter& w, StateScope scope) const {
+  w.put("cholmod.scope", scope);
+  if (scope == StateScope::step_start) w.put("cholmod.step", impl_->step);
   w.put_sparse("cholmod.matrix", matrix_);
   transfer_report(w, report_);
   w.put("cholmod.analysed_outer", impl_->analysed_outer);
   w.put("cholmod.analysed_inner", impl_->analysed_inner);
   w.put("cholmod.factor_ok", impl_->factor_ok);
-  // The simplicial LDL' factor as CHOLMOD holds it after updates: its column layout (p, nz, next,
-  // prev) depends on how columns grew, so every array is kept, not just L's entries.
-  // Only a numeric simplicial LDL' is kept. A factorisation that failed can leave CHOLMOD's factor
-  // symbolic (no values) or in another form: it is saved as absent, and the restored solver
-  // factorises again, as this one would.
-  const cholmod_factor* L = impl_->factor.get();
-  const bool numeric = L != nullptr && !L->is_super && !L->is_ll && L->xtype == CHOLMOD_REAL &&
-                       L->itype == CHOLMOD_INT && L->x != nullptr && L->nz != nullptr;
-  if (!numeric) L = nullptr;
-  w.put("cholmod.has_factor", L != nullptr);
-  if (L) {
-    const std::size_t n = L->n;
-    w.put("L.n", n);
-    w.put("L.minor", L->minor);
-    w.put("L.nzmax", L->nzmax);
-    w.put("L.ordering", L->ordering);
-    w.put("L.is_monotonic", L->is_monotonic);
-    w.put("L.Perm", elements<int>(L->Perm), n);
-    w.put("L.ColCount", elements<int>(L->ColCount), n);
-    w.put("L.p", elements<int>(L->p), n + 1);
-    w.put("L.i", elements<int>(L->i), L->nzmax);
-    w.put("L.x", elements<double>(L->x), L->nzmax);
-    w.put("L.nz", elements<int>(L->nz), n);
-    w.put("L.next", elements<int>(L->next), n + 2);
-    w.put("L.prev", elements<int>(L->prev), n + 2);
+  if (scope == StateScope::whole) {
+    // The simplicial LDL' factor as CHOLMOD holds it after updates: its column layout (p, nz, next,
+    // prev) depends on how columns grew, so every array is kept, not just L's entries. Any other
+    // form is saved as absent, and the restored solver factorises again, as this one would.
+    const cholmod_factor* L = numeric_ldl(impl_->factor.get()) ? impl_->factor.get() : nullptr;
+    w.put("cholmod.has_factor", L != nullptr);
+    if (L) {
+      const std::size_t n = L->n;
+      w.put("L.n", n);
+      w.put("L.minor", L->minor);
+      w.put("L.nzmax", L->nzmax);
+      w.put("L.ordering", L->ordering);
+      w.put("L.is_monotonic", L->is_monotonic);
+      w.put("L.Perm", elements<int>(L->Perm), n);
+      w.put("L.ColCount", elements<int>(L->ColCount), n);
+      w.put("L.p", elements<int>(L->p), n + 1);
+      w.put("L.i", elements<int>(L->i), L->nzmax);
+      w.put("L.x", elements<double>(L->x), L->nzmax);
+      w.put("L.nz", elements<int>(L->nz), n);
+      w.put("L.next", elements<int>(L->next), n + 2);
+      w.put("L.prev", elements<int>(L->prev), n + 2);
+    }
   }
   w.put("cholmod.has_forward", impl_->forward != nullptr);
   if (impl_->forward) {
     w.put("forward.y", elements<double>(impl_->forward->x), impl_->forward->nrow);
     w.put("forward.b", impl_->forward_b);
   }
+}
+
+void CholmodSolver::begin_step() {
+  impl_->recording = false;
+  impl_->set_aside.reset();
+  impl_->undo.clear();
+  // Due by max_modifications: made at a step's start, so that a step never needs the factor it
+  // replaced, and a retried step refactorises where a run that took the shorter step directly does.
+  if (impl_->factor && report_.n_modifications >= options_.max_modifications) refactorize();
+  impl_->recording = true;
+  impl_->step_factor = numeric_ldl(impl_->factor.get());
+  impl_->step_factor_lost = false;
+  ++impl_->step;
+}
+
+void CholmodSolver::discard_factor() { release_factor(); }
+
+void CholmodSolver::release_factor() {
+  if (impl_->recording && impl_->step_factor && !impl_->step_factor_lost && !impl_->set_aside)
+    impl_->set_aside = std::move(impl_->factor);
+  impl_->factor.reset();
+  impl_->factor_ok = false;
+  impl_->forward.reset();
+  impl_->subtree_current = false;
+  impl_->subtree_only_modified = false;
 }
 
 namespace {
@@ -366,6 +405,21 @@ void check_factor_arrays(const cholmod_factor& L, Eigen::Index n_rows, const std
 }  // namespace
 
 void CholmodSolver::restore_state(core::StateReader& r) {
+  StateScope scope = StateScope::whole;
+  r.get("cholmod.scope", scope);
+  if (scope == StateScope::step_start) {
+    std::int64_t step = 0;
+    r.get("cholmod.step", step);
+    if (!impl_->recording || step != impl_->step)
+      throw std::logic_error("CholmodSolver::restore_state: the start of step " + std::to_string(step) +
+                             ", restored into a solver that is not in it");
+  } else if (scope != StateScope::whole) {
+    throw InputError(r.source() + ": at 'cholmod.scope': not a state this build writes");
+  } else {  // a whole state replaces the factor that any step's log refers to
+    impl_->recording = false;
+    impl_->set_aside.reset();
+    impl_->undo.clear();
+  }
   r.get_sparse("cholmod.matrix", matrix_);
   transfer_report(r, report_);
   std::vector<int> outer, inner;
@@ -373,7 +427,7 @@ void CholmodSolver::restore_state(core::StateReader& r) {
   r.get("cholmod.analysed_inner", inner);
   bool factor_ok = false, has_factor = false, has_forward = false;
   r.get("cholmod.factor_ok", factor_ok);
-  r.get("cholmod.has_factor", has_factor);
+  if (scope == StateScope::whole) r.get("cholmod.has_factor", has_factor);
   const auto n_rows = static_cast<Eigen::Index>(outer.size()) - 1;
   if (n_rows != matrix_.rows())
     throw InputError(r.source() + ": at 'cholmod.analysed_outer': a pattern of " + std::to_string(n_rows) +
@@ -395,7 +449,9 @@ void CholmodSolver::restore_state(core::StateReader& r) {
   }
   impl_->subtree_current = false;
   impl_->subtree_only_modified = false;
-  if (has_factor)
+  if (scope == StateScope::step_start)
+    has_factor = restore_step_factor();
+  else if (has_factor)
     restore_factor(r, n_rows);
   else
     impl_->factor.reset();
@@ -436,6 +492,28 @@ void read_factor_arrays(core::StateReader& r, cholmod_factor& L, std::size_t min
 
 }  // namespace
 
+bool CholmodSolver::restore_step_factor() {
+  FactorPtr& L = impl_->factor;
+  if (impl_->set_aside) L = std::move(impl_->set_aside);
+  if (!impl_->step_factor) {
+    L.reset();
+  } else if (!impl_->step_factor_lost) {
+    impl_->undo.undo(*L);
+  } else {
+    // CHOLMOD failed inside an update (out of memory while a column grew) and may have left the
+    // factor symbolic: the step's factor is rebuilt from its matrix, the same to round-off.
+    const SpdSolveReport report = report_;
+    impl_->recording = false;
+    refactorize();
+    impl_->recording = true;
+    if (report_.info != Eigen::Success) throw std::runtime_error("restoring a step's start: " + report_.message);
+    report_ = report;
+  }
+  impl_->undo.clear();
+  impl_->step_factor_lost = false;
+  return impl_->step_factor;
+}
+
 void CholmodSolver::restore_factor(core::StateReader& r, Eigen::Index n_rows) {
   cholmod_common* c = impl_->c();
   std::size_t n = 0, minor = 0, nzmax = 0;
@@ -475,10 +553,7 @@ void CholmodSolver::refactorize() {
     report_.message = "refactorize before compute";
     return;
   }
-  impl_->factor_ok = false;
-  impl_->subtree_current = false;
-  impl_->subtree_only_modified = false;
-  impl_->forward.reset();
+  release_factor();
   impl_->factor.reset(cholmod_copy_factor(impl_->symbolic.get(), c));
   SparsePtr S = impl_->to_cholmod_lower(matrix_);
   bool ok = impl_->factor && S && cholmod_factorize(S.get(), impl_->factor.get(), c);
@@ -513,7 +588,9 @@ void CholmodSolver::modify(const Matrix& W, int sigma) {
     report_.message = "modify before compute";
     return;
   }
-  if (++report_.n_modifications >= options_.max_modifications) {
+  // Inside a coupled step the refactorisation that is due waits for the next step's start
+  // (begin_step), so that the step's start stays the factor with its logged columns written back.
+  if (++report_.n_modifications >= options_.max_modifications && !impl_->recording) {
     refactorize();
     return;
   }
@@ -547,6 +624,7 @@ void CholmodSolver::modify(const Matrix& W, int sigma) {
   p[k] = nz;
   impl_->factor_ok = false;
   impl_->subtree_current = false;
+  if (impl_->recording && impl_->step_factor && !impl_->set_aside) impl_->undo.before_update(*impl_->factor, *C);
   bool ok;
   if (impl_->forward) {
     // DeltaB must have the factor's size: a compute() on a matrix of another size (the mechanics
@@ -567,6 +645,7 @@ void CholmodSolver::modify(const Matrix& W, int sigma) {
                                   " modifications";
     impl_->forward.reset();
     ++report_.n_update_failures;
+    if (impl_->recording && !impl_->set_aside) impl_->step_factor_lost = true;
     refactorize();
     return;
   }
@@ -739,7 +818,7 @@ void PcgSolver::modify(const Matrix& W, int sigma) {
   stale_ = true;  // rebuilt at the next solve, so several modifications cost one set-up
 }
 
-void PcgSolver::save_state(core::StateWriter& w) const {
+void PcgSolver::save_state(core::StateWriter& w, StateScope) const {  // its state is small: whole
   w.put_sparse("pcg.matrix", matrix_);
   transfer_report(w, report_);
   w.put("pcg.previous", previous_);

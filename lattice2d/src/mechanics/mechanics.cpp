@@ -277,6 +277,8 @@ void BeamMechanics::build_adjacency() {
 }
 
 void BeamMechanics::setup_system() {
+  // compute() below replaces the factor: freed first, it is never held beside the new A's assembly.
+  solver_->discard_factor();
   const int n_dof = 3 * lattice_.n_particles();
   free_index_.assign(static_cast<std::size_t>(n_dof), -1);
   free_dofs_.clear();
@@ -823,7 +825,7 @@ Eigen::VectorXd BeamMechanics::reactions() const {
   return r;
 }
 
-void BeamMechanics::save_state(core::StateWriter& w) const {
+void BeamMechanics::save_state(core::StateWriter& w, StateScope scope) const {
   std::string states(states_.size(), '\0');
   std::transform(states_.begin(), states_.end(), states.begin(), [](BeamState b) { return static_cast<char>(b); });
   w.put("mechanics.states", states);
@@ -845,7 +847,7 @@ void BeamMechanics::save_state(core::StateWriter& w) const {
   w.put("mechanics.closed", closed_);
   rank_one_.save_state(w);
   w.put("mechanics.solver", solver_->name());
-  solver_->save_state(w);
+  solver_->save_state(w, scope);
 }
 
 namespace {

@@ -421,7 +421,7 @@ class CoupledModel {
                                   const Eigen::VectorXd& u) const;
   // save_state without the run cursor: what step() restores after a failed attempt. The accepted
   // geometry (current_dual_, volume_) is not in it: only an accepted step changes it.
-  void save_model_state(core::StateWriter& w) const;
+  void save_model_state(core::StateWriter& w, StateScope scope) const;
   void restore_model_state(core::StateReader& r);
   // The accepted u and the linear predictor's history, saved (const Self) or restored (save_state).
   template <class Archive, class Self>

@@ -117,6 +117,13 @@ struct SpdSolveReport {
   std::string message;              ///< human-readable reason when info != Success
 };
 
+/// What SpdSolver::save_state keeps.
+enum class StateScope {
+  whole,       ///< everything: a checkpoint, restored into any solver made with the same options
+  step_start,  ///< the state at this solver's last begin_step(), restored into this solver only: a
+               ///< CholmodSolver's factor is not copied, its changes since are undone (FactorUndoLog)
+};
+
 /// Abstract sparse SPD solver. Usage: compute(A); x = solve(b); modify(W, -1); x = solve(b); ...
 /// The solver keeps its own copy of A (both triangles), updated by modify(), for residual checks.
 /// Limits: real double only; A must be SPD for success (a singular A gives info() = NumericalIssue).
@@ -145,9 +152,18 @@ class SpdSolver {
   const Matrix& matrix() const { return matrix_; }
   Eigen::Index rows() const { return matrix_.rows(); }
   virtual std::string name() const = 0;
-  /// The whole state (matrix, factor or preconditioner, warm start, counters), for checkpoints. A
-  /// solver made with the same options that restores it continues bitwise as this one would.
-  virtual void save_state(core::StateWriter& w) const = 0;
+  /// Marks the state a failed coupled step returns to (StateScope::step_start). A CholmodSolver logs
+  /// its factor's changes from here instead of having the factor copied, and makes here the
+  /// refactorisation that max_modifications calls for, never inside a step.
+  virtual void begin_step() {}
+  /// Frees the factor before a new A is assembled for compute(), which would free it anyway: the
+  /// assembly then never holds both (at N = 1e6 the factor is 5.6 GB). Inside a step it is kept for a
+  /// return to the step's start.
+  virtual void discard_factor() {}
+  /// The state (matrix, factor or preconditioner, warm start, counters), for checkpoints (whole) and a
+  /// step's start. A solver made with the same options that restores it continues bitwise as this one
+  /// would.
+  virtual void save_state(core::StateWriter& w, StateScope scope) const = 0;
   /// Throws hm::InputError for a state written by other code (core::StateReader).
   virtual void restore_state(core::StateReader& r) = 0;
 
@@ -184,7 +200,9 @@ class CholmodSolver final : public SpdSolver {
   void modify(const Matrix& W, int sigma) override;
   void refactorize() override;
   std::string name() const override { return "cholmod"; }
-  void save_state(core::StateWriter& w) const override;
+  void begin_step() override;
+  void discard_factor() override;
+  void save_state(core::StateWriter& w, StateScope scope) const override;
   void restore_state(core::StateReader& r) override;
 
   /// Name of the ordering the analysis used ("nesdis", "metis", "amd", ...).
@@ -196,6 +214,8 @@ class CholmodSolver final : public SpdSolver {
   Eigen::VectorXd parallel_solve(const Eigen::VectorXd& b);  // options_.parallel_triangular_solve
   bool analyse(const Matrix& A);  // ordering and symbolic factor of A's pattern; false: report_ says why
   void restore_factor(core::StateReader& r, Eigen::Index n_rows);  // restore_state's factor, read in place
+  bool restore_step_factor();  // restore_state's factor of the step's start (false: it had none)
+  void release_factor();       // frees the factor, or keeps it aside while it is a step's start
   struct Impl;
   std::unique_ptr<Impl> impl_;
   SpdSolverOptions options_;
@@ -216,7 +236,7 @@ class PcgSolver final : public SpdSolver {
   void modify(const Matrix& W, int sigma) override;
   void refactorize() override;
   std::string name() const override { return "pcg"; }
-  void save_state(core::StateWriter& w) const override;
+  void save_state(core::StateWriter& w, StateScope scope) const override;
   void restore_state(core::StateReader& r) override;
   /// Forget the previous solution (the next solve starts from x = 0).
   void clear_warm_start() { previous_.resize(0); }

@@ -240,9 +240,12 @@ class BeamMechanics {
   const SpdSolver& solver() const { return *solver_; }
 
   /// The state after a solve (beam states, held and detached degrees of freedom, the pin, loads,
-  /// displacement, the solver's factor), for checkpoints: a BeamMechanics built with the same
-  /// arguments that restores it continues bitwise.
-  void save_state(core::StateWriter& w) const;
+  /// displacement, the solver's factor), for checkpoints (whole): a BeamMechanics built with the same
+  /// arguments that restores it continues bitwise; or the start of a coupled step (step_start, after
+  /// begin_step()), for this BeamMechanics to return to, without a copy of the factor.
+  void save_state(core::StateWriter& w, StateScope scope = StateScope::whole) const;
+  /// Marks a coupled step's start (SpdSolver::begin_step).
+  void begin_step() { solver_->begin_step(); }
   /// Throws hm::InputError for a state of another lattice or written by other code.
   void restore_state(core::StateReader& r);
 
