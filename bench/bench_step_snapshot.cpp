@@ -1,8 +1,10 @@
-// What a coupled step's snapshot costs. CoupledModel::step saves the model at the start of every step
-// and restores it when the attempt fails (a step halved, or retried because its first event overshot):
-// the saw-tooth law's runs retry a quarter of their steps. The snapshot holds both factors (~10 MB at
-// N = 1e4). Measured on the Fig. 12 quick case with the saw-tooth law at N particles, after a few steps,
-// saved and restored `rounds` times, the two ways side by side:
+// What saving and restoring the whole model state costs, as a checkpoint does (and as a coupled step's
+// snapshot did until the step's start stopped copying the mechanics factor, whose changes the solver
+// now undoes: bench_lattice_solver measures that). CoupledModel::step saves the model at the start of
+// every step and restores it when the attempt fails; the saw-tooth law's runs retry a quarter of their
+// steps. The whole state holds both factors (~10 MB at N = 1e4). Measured on the Fig. 12 quick case
+// with the saw-tooth law at N particles, after a few steps, saved and restored `rounds` times, the two
+// ways side by side:
 //  - before: a fresh StateWriter per step, its bytes with their checksum copied into a StateReader that
 //    checks the checksum again;
 //  - now: one StateWriter kept by the model, cleared each step (its memory kept), read in place without
