@@ -92,10 +92,11 @@ CoupledModel::CoupledModel(Lattice lattice, const BeamParameters& beams, const B
   reference_dual_ = build_dual_graph(lattice);
   current_dual_ = reference_dual_;
   flow_ = std::make_unique<FlowNetwork>(lattice, reference_dual_, flow);
-  mechanics_ = std::make_unique<BeamMechanics>(std::move(lattice), beams, conditions, mechanics_options);
-  springs_ = undrained_spring_stiffness(mechanics_->lattice(), reference_dual_, flow.b, flow.E_over_M, options_.terms);
-  // The springs go into the matrix once (one refactorisation); Psi = 0 leaves the dry matrix as it is.
-  if (options_.terms.psi > 0.0) mechanics_->set_normal_springs(springs_, options_.terms.broken_beam_spring);
+  springs_ = undrained_spring_stiffness(lattice, reference_dual_, flow.b, flow.E_over_M, options_.terms);
+  // The springs are in the matrix from its first factorisation; Psi = 0 leaves the dry matrix as it is.
+  NormalSprings springs;
+  if (options_.terms.psi > 0.0) springs = {springs_, options_.terms.broken_beam_spring};
+  mechanics_ = std::make_unique<BeamMechanics>(std::move(lattice), beams, conditions, mechanics_options, springs);
   if (options_.terms.borehole_spring == BoreholeSpring::undrained) {
     if (!flow_->has_borehole())
       throw hm::InputError(

@@ -155,7 +155,7 @@ std::vector<BeamForce> connection_forces(const Lattice& lattice, const BeamParam
 // ------------------------------------------------------------------------------------------------
 
 BeamMechanics::BeamMechanics(Lattice lattice, const BeamParameters& parameters, const BoundaryConditions& conditions,
-                             const MechanicsOptions& options)
+                             const MechanicsOptions& options, const NormalSprings& springs)
     : lattice_(std::move(lattice)), parameters_(parameters), conditions_(conditions), options_(options) {
   parameters_.validate();
   conditions_.validate(lattice_);
@@ -177,6 +177,7 @@ BeamMechanics::BeamMechanics(Lattice lattice, const BeamParameters& parameters, 
   raw_ = held_value_;
   displacement_ = held_value_;
   solver_ = make_spd_solver(options_.solver, options_.solver_options);
+  adopt_normal_springs(springs.stiffness, springs.broken);
   setup_system();
 }
 
@@ -640,6 +641,11 @@ void BeamMechanics::move_pin() {
 }
 
 void BeamMechanics::set_normal_springs(const Eigen::VectorXd& stiffness, BrokenBeamSpring broken) {
+  adopt_normal_springs(stiffness, broken);
+  setup_system();
+}
+
+void BeamMechanics::adopt_normal_springs(const Eigen::VectorXd& stiffness, BrokenBeamSpring broken) {
   if (stiffness.size() != 0 && stiffness.size() != lattice_.n_beams())
     throw hm::InputError("normal_springs: size = " + std::to_string(stiffness.size()) +
                          ", allowed: 0 or n_beams = " + std::to_string(lattice_.n_beams()));
@@ -651,7 +657,6 @@ void BeamMechanics::set_normal_springs(const Eigen::VectorXd& stiffness, BrokenB
   broken_spring_ = broken;
   if (broken == BrokenBeamSpring::drop)
     for (int e : broken_) springs_[e] = 0.0;
-  setup_system();
 }
 
 void BeamMechanics::set_rank_one_stiffness(RankOneStiffness term) {

@@ -97,6 +97,13 @@ struct MechanicsOptions {
   void validate() const;
 };
 
+/// The translational normal springs of BeamMechanics::set_normal_springs, given to its constructor so
+/// that the matrix is factorised once, with them (a factorisation is a minute at N = 1e6).
+struct NormalSprings {
+  Eigen::VectorXd stiffness;  ///< one per beam, or empty: none
+  BrokenBeamSpring broken = BrokenBeamSpring::keep;
+};
+
 /// Forces of every beam for displacements u (3 n_particles, dof = 3 i + component) and the given beam
 /// states: beam_force (BeamOperator's internal force) of each, i.e. intact beams by Eqs. 3-4
 /// (linearised), contacts by Eq. 9-10's normal spring, open beams zero; equal to -K_e u_e to round-off
@@ -161,9 +168,10 @@ Eigen::VectorXd without_rigid_motion(const Lattice& lattice, Eigen::VectorXd u);
 /// beam's k_n (Eq. 9-10); loads are fixed nodal forces on the undeformed geometry.
 class BeamMechanics {
  public:
-  /// Validates everything (throws hm::InputError), assembles and factorises. Does not solve.
+  /// Validates everything (throws hm::InputError), assembles and factorises, with `springs` in the
+  /// matrix (set_normal_springs). Does not solve.
   BeamMechanics(Lattice lattice, const BeamParameters& parameters, const BoundaryConditions& conditions,
-                const MechanicsOptions& options = {});
+                const MechanicsOptions& options = {}, const NormalSprings& springs = {});
 
   /// Solve for the current loads and beam states, with the contact active-set loop.
   MechanicsSummary solve();
@@ -257,6 +265,8 @@ class BeamMechanics {
   void remove_rigid_body_modes();
   void lump_boundary_loads();
   void build_adjacency();
+  // set_normal_springs' checks and assignment, without the re-assembly (the constructor assembles once).
+  void adopt_normal_springs(const Eigen::VectorXd& stiffness, BrokenBeamSpring broken);
   void setup_system();                             // free-DOF map, reduced matrix, held-term vector, factorisation
   BeamParameters beam_parameters(int beam) const;  // = beam_parameters_for(lattice_, parameters_, beam), cached k_n
   void change_state(int beam, BeamState to);
