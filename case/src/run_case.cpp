@@ -177,6 +177,8 @@ void add_flow_keys(CaseKeys<RunCase>& k) {
             "block the crack's flow")
       .check([](CaseTable& flow, CaseTable& root, RunCase& c) {
         check_cubic_law(flow, c);
+        if (const double ramp = c.flow.injection_ramp_time; !(ramp >= 0.0 && std::isfinite(ramp)))
+          flow.fail("injection_ramp_time = " + core::format_value(ramp) + ", allowed: >= 0, finite");
         const double T = c.flow.fracture_flow.transmissivity;
         if (!(T >= 0.0 && T <= 1e12))
           flow.fail("crack_transmissivity = " + core::format_value(T) +
@@ -196,6 +198,9 @@ void add_flow_keys(CaseKeys<RunCase>& k) {
           root.table("physics").fail("iota = " + core::format_value(iota) + ", allowed: 1" + rule);
         }
       })
+      .real("injection_ramp_time", [](auto& c) -> auto& { return c.flow.injection_ramp_time; }, ">= 0, finite",
+            "the injection rate rises linearly from 0 to [physics] Q over this dimensionless time, then stays at Q; "
+            "0: Q from the start (the paper's)")
       .boolean("reuse_factorisation", [](auto& c) -> auto& { return c.flow.reuse_factorisation; },
                "reuse the flow matrix's factor while the geometry changes little (iterative refinement)")
       .integer("refresh_after_refinements", [](auto& c) -> auto& { return c.flow.refresh_after_refinements; }, 0, 1000000,

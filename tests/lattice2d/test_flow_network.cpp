@@ -148,6 +148,7 @@ TEST_CASE("Default flow parameters are valid and each bad value is rejected by n
   rejects([](FlowParameters& p) { p.iota = 0.0; }, "iota = 0");
   rejects([](FlowParameters& p) { p.time_step = -1e-3; }, "time_step = -0.001");
   rejects([](FlowParameters& p) { p.source_x = std::nan(""); }, "source_x");
+  rejects([](FlowParameters& p) { p.injection_ramp_time = -1e-6; }, "injection_ramp_time = -1e-06");
 }
 
 TEST_CASE("Flow parameters come from the shared dimensionless set", "[lattice2d]") {
@@ -279,6 +280,30 @@ TEST_CASE("Every step conserves fluid volume: injected = stored + deformation + 
   CHECK(totals.n_steps == 30);
   CHECK(totals.injected == hm::test::roundoff(parameters.Q * network.time()));
   CHECK(std::abs(totals.injected - totals.storage - totals.deformation - totals.outflow) <= 1e-10 * totals.injected);
+}
+
+TEST_CASE("A ramped injection rate injects the integral of Q min(1, t/t_r), with the books closed", "[lattice2d]") {
+  const Lattice lattice = make_lattice(DomainShape::disk, 2500);
+  const DualGraph dual = build_dual_graph(lattice);
+  FlowParameters parameters;
+  parameters.Q = 0.01;
+  parameters.injection_ramp_time = 1e-3;
+  FlowNetwork network(lattice, dual, parameters);
+  const auto injected_by = [&](double t) {  // the closed form: Q t^2 / (2 t_r), then Q (t - t_r / 2)
+    const double t_r = parameters.injection_ramp_time;
+    return t <= t_r ? parameters.Q * t * t / (2.0 * t_r) : parameters.Q * (t - t_r / 2.0);
+  };
+  // Steps of 1.5e-4 (a step across the ramp's end at 1e-3) then 1e-3.
+  for (int n = 0; n < 12; ++n) {
+    const FlowStepSummary summary = network.step(n < 8 ? 1.5e-4 : 1e-3);
+    REQUIRE(summary.is_ok());
+    CHECK(summary.balance_error <= 1e-10);  // as a constant rate's (the test above)
+    CHECK(network.totals().injected == hm::test::roundoff(injected_by(network.time())));
+  }
+  // After the ramp the rate is Q: a step of dt injects Q dt.
+  const double before = network.totals().injected;
+  REQUIRE(network.step(2e-3).is_ok());
+  CHECK(network.totals().injected - before == hm::test::roundoff(parameters.Q * 2e-3));
 }
 
 TEST_CASE("solve() is a trial that leaves the state alone until accept()", "[lattice2d]") {

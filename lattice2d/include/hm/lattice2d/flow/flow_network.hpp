@@ -121,6 +121,11 @@ struct FlowOptions {
   /// no refresh (the old factor ages: ~8 iterations), 7.8 / 6.5 / 7.8 s with 2 / 4 / 8 (same breaks in
   /// the same order; volume balance <= 5e-12). Allowed: >= 0.
   int refresh_after_refinements = 4;
+  /// The injection rate rises linearly from 0 at t = 0 to Q at this time, then stays at Q; 0: Q from
+  /// the start (the paper's). A slow start keeps a fracture that starts at zero length from the
+  /// pressures of its first instants (the viscosity-dominated crack's inlet pressure grows as its length
+  /// shrinks; docs/flow.md). Allowed: >= 0, finite.
+  double injection_ramp_time = 0.0;
   /// Point-source position (x, y) for a domain without borehole (Section 3.1: r = 0). Our choice to
   /// make it a field; the source goes into the triangle containing it. Allowed: finite, inside the
   /// lattice (checked by FlowNetwork).
