@@ -24,7 +24,6 @@ namespace {
 
 using hm::core::format_value;
 
-// |a - b - c - d| over the sum of the magnitudes; 0 if everything vanishes.
 // The volume injected over [t, t + dt] at the rate Q min(1, s / ramp): exactly, so that the run's
 // volume balance closes to round-off during the ramp too.
 double injected_volume(double Q, double ramp, double t, double dt) {
@@ -33,6 +32,7 @@ double injected_volume(double Q, double ramp, double t, double dt) {
   return Q * ((b * b - a * a) / (2.0 * ramp) + std::max(0.0, t + dt - std::max(t, ramp)));
 }
 
+// |a - b - c - d| over the sum of the magnitudes; 0 if everything vanishes.
 double relative_imbalance(double injected, double storage, double deformation, double outflow) {
   const double scale = std::abs(injected) + std::abs(storage) + std::abs(deformation) + std::abs(outflow);
   return scale > 0.0 ? std::abs(injected - storage - deformation - outflow) / scale : 0.0;

@@ -59,9 +59,4 @@ void FactorUndoLog::undo(cholmod_factor& L) {
   clear();
 }
 
-std::size_t FactorUndoLog::bytes() const {
-  return column_.size() * (sizeof(int) + sizeof(std::int64_t)) + rows_.size() * sizeof(int) +
-         values_.size() * sizeof(double) + kept_.size();
-}
-
 }  // namespace hm::lattice2d

@@ -13,7 +13,6 @@
 /// current place: CHOLMOD may have moved a column that grew, so the layout (p, next, prev, free space)
 /// can differ from the earlier one, but solves and updates read each column through p and nz, so the
 /// arithmetic after an undo is bitwise that of the earlier factor.
-#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -31,9 +30,6 @@ class FactorUndoLog {
   /// Writes the kept columns back into L, the factor they were kept from (whose columns have only
   /// grown since), and forgets them.
   void undo(cholmod_factor& L);
-  /// Columns kept, and the bytes their copies take.
-  std::size_t n_columns() const { return column_.size(); }
-  std::size_t bytes() const;
 
  private:
   std::vector<int> column_;          // kept columns, in the order kept
