@@ -88,11 +88,16 @@ FractureReanalysis recompute_fracture_statistics(const std::filesystem::path& ru
     throw InputError("run folder = " + run_dir.string() + ": [fracture] enabled = false in its config.toml");
   const std::vector<lt::BreakEvent> log = lt::read_break_log(breaks_file);
   const std::vector<double> times = snapshot_times(summary_file);
+  // The saw-tooth law's softened beams; a brittle run has no teeth.csv and none.
+  const std::filesystem::path teeth_file = run_file_path(run_dir, RunFileId::teeth);
+  const std::vector<lt::ToothEvent> teeth =
+      c.fracture_law == lt::FractureLaw::sawtooth ? lt::read_tooth_log(teeth_file) : std::vector<lt::ToothEvent>{};
 
   const lt::Lattice lattice = lt::generate_lattice(c.lattice);
   lt::FractureStatisticsOptions& options = c.output.statistics;
   if (change.link) options.link = *change.link;
   if (change.arm_gap) options.arm_gap = *change.arm_gap;
+  if (change.softened) options.softened = *change.softened;
   if (!lt::is_allowed_arm_gap(options.arm_gap))
     throw InputError("--arm-gap = " + core::format_value(options.arm_gap) + ", allowed: " + lt::kArmGapRule);
   // The log names each beam's particles: a lattice that differs from the run's (another version of
@@ -109,18 +114,21 @@ FractureReanalysis recompute_fracture_statistics(const std::filesystem::path& ru
   }
   std::vector<lt::FractureSnapshot> snapshots;
   for (double t : times) {
-    // Times are written with 10 digits in both files; the margin absorbs the last digit.
+    // Times are written with 10 digits in all three files; the margin absorbs the last digit.
+    const double until = t + 1e-9 * std::abs(t);
     std::vector<bool> broken(static_cast<std::size_t>(lattice.n_beams()), false);
     for (const lt::BreakEvent& ev : log)
-      if (ev.load <= t + 1e-9 * std::abs(t)) broken[static_cast<std::size_t>(ev.beam)] = true;
-    snapshots.push_back({t, lt::compute_fracture_statistics(lattice, broken, log, options)});
+      if (ev.load <= until) broken[static_cast<std::size_t>(ev.beam)] = true;
+    snapshots.push_back({t, lt::compute_fracture_statistics(lattice, broken, log, options,
+                                                            lt::softened_flags(teeth, lattice.n_beams(), until))});
   }
 
   const std::string provenance = provenance_part(text_of(config_file));
-  const std::string config = run_case_to_toml(
-      c, "# fracture statistics recomputed with fracture_link = \"" + hm::core::name_of(options.link) +
-             "\", arm_gap = " + toml_real(options.arm_gap) + " by: " + core::toml_string(command_line) + " (" +
-             make_provenance(command_line).utc_time + ")\n" + provenance);
+  const std::string config =
+      run_case_to_toml(c, "# fracture statistics recomputed with fracture_link = \"" + hm::core::name_of(options.link) +
+                              "\", arm_gap = " + toml_real(options.arm_gap) + ", softened_beams = \"" +
+                              hm::core::name_of(options.softened) + "\" by: " + core::toml_string(command_line) + " (" +
+                              make_provenance(command_line).utc_time + ")\n" + provenance);
   lt::write_fracture_table(fractures_file, snapshots);
   lt::write_fracture_summary(summary_file, snapshots);
   core::write_file_atomically(config_file, [&](std::ostream& out) { out << config; });

@@ -409,6 +409,9 @@ void add_output_keys(CaseKeys<RunCase>& k) {
             "outer edge of the radial shells")
       .choice("fracture_link", [](auto& c) -> auto& { return c.output.statistics.link; },
               "which broken beams form one fracture in fractures.csv")
+      .choice("softened_beams", [](auto& c) -> auto& { return c.output.statistics.softened; },
+              "whether beams on their saw-tooth teeth (a crack's process zone) join the broken beams they touch "
+              "into one fracture in fractures.csv; they are never counted as broken")
       .real("arm_gap", [](auto& c) -> auto& { return c.output.statistics.arm_gap; }, lt::kArmGapRule,
             "arms crossing the arm circle closer than this (over R, along it) count as one in fracture_summary.csv's "
             "n_arms_fixed_gap (n_arms' gap is 3 mean beam lengths; docs/fracture_statistics.md)")

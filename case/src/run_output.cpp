@@ -92,14 +92,17 @@ std::filesystem::path vtk_folder(const std::filesystem::path& dir) {
   return run_file_path(dir, RunFileId::vtk).parent_path();
 }
 
-// The fracture statistics when the log held its first n events: broken beams never heal and only the
-// break loop breaks them (logging each), so those events' beams are the broken ones at that time.
+// The fracture statistics at time t, when the log held its first n events: broken beams never heal and
+// only the break loop breaks them (logging each), so those events' beams are the broken ones at that
+// time; the teeth logged by t are the softened beams (none under the brittle law).
 lt::FractureSnapshot fracture_snapshot(const lt::Lattice& lattice, const std::vector<lt::BreakEvent>& log,
-                                       std::size_t n, double t, const lt::FractureStatisticsOptions& options) {
+                                       std::size_t n, const std::vector<lt::ToothEvent>& teeth, double t,
+                                       const lt::FractureStatisticsOptions& options) {
   const std::vector<lt::BreakEvent> prefix(log.begin(), log.begin() + static_cast<std::ptrdiff_t>(n));
   std::vector<bool> broken(static_cast<std::size_t>(lattice.n_beams()), false);
   for (const lt::BreakEvent& e : prefix) broken[static_cast<std::size_t>(e.beam)] = true;
-  return {t, lt::compute_fracture_statistics(lattice, broken, prefix, options)};
+  return {t, lt::compute_fracture_statistics(lattice, broken, prefix, options,
+                                             lt::softened_flags(teeth, lattice.n_beams(), t))};
 }
 
 }  // namespace
@@ -167,8 +170,8 @@ RunRecorder::RunRecorder(const std::filesystem::path& dir, const RunCase& c, con
   for (std::size_t k = 0; k < fracture_t.size(); ++k) {
     if (fracture_n[k] < 0 || static_cast<std::size_t>(fracture_n[k]) > log.size())
       throw InputError(r.source() + ": at 'recorder.fracture_log_sizes': longer than the break log");
-    fractures_.push_back(fracture_snapshot(model.lattice(), log, static_cast<std::size_t>(fracture_n[k]), fracture_t[k],
-                                           statistics_options_));
+    fractures_.push_back(fracture_snapshot(model.lattice(), log, static_cast<std::size_t>(fracture_n[k]), teeth_,
+                                           fracture_t[k], statistics_options_));
     fracture_log_sizes_.push_back(static_cast<std::size_t>(fracture_n[k]));
   }
   if (fracture_) breaks_ = log;
@@ -280,8 +283,8 @@ void RunRecorder::record(const lt::CoupledModel& model, const lt::CoupledStepSum
     radial_->row({model.time(), f.r_mid[k], f.r_mean[k], static_cast<double>(f.n_triangles[k]), f.u_r[k], f.p[k]});
   streams_[RunFileId::radial].flush();
   if (fracture_) {
-    fractures_.push_back(fracture_snapshot(model.lattice(), model.break_log(), model.break_log().size(), model.time(),
-                                           statistics_options_));
+    fractures_.push_back(fracture_snapshot(model.lattice(), model.break_log(), model.break_log().size(), teeth_,
+                                           model.time(), statistics_options_));
     fracture_log_sizes_.push_back(model.break_log().size());
     const FracturePressure fp = fracture_pressure(model);
     pressure_->row({model.time(), fp.mean_all, fp.mean_away, fp.min_away, static_cast<double>(fp.n_all),

@@ -408,9 +408,8 @@ TEST_CASE(
   CHECK(n_fractures(hm::test::slurp(dir.path / "run" / "fracture_summary.csv")) >= n_fractures(summary));
   const auto reconfigured = hm::test::slurp(dir.path / "run" / "config.toml");
   CHECK_THAT(reconfigured, Catch::Contains("fracture_link = \"triangle\""));
-  CHECK_THAT(
-      reconfigured,
-      Catch::Contains("# fracture statistics recomputed with fracture_link = \"triangle\", arm_gap = 0.03 by: "));
+  CHECK_THAT(reconfigured, Catch::Contains("# fracture statistics recomputed with fracture_link = \"triangle\", "
+                                           "arm_gap = 0.03, softened_beams = \"link\" by: "));
   CHECK_THAT(reconfigured, Catch::Contains("[provenance]"));
   // Bad input: one line naming what is wrong, nothing changed.
   r2 = run_hmlattice("fractures run --link beam", dir.path);

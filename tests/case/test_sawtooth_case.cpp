@@ -3,6 +3,7 @@
 // a resume repeat the logs, and bad values are one line of bad input.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <map>
 #include <sstream>
@@ -111,4 +112,52 @@ TEST_CASE("A bad saw-tooth setting is one line of bad input naming [fracture] an
   const auto r = run_hmlattice("run case.toml --out run", dir.path);
   CHECK(r.exit_code == 2);
   CHECK_THAT(r.err, Catch::Contains("[fracture] law = \"sawtooth\", allowed: only with enabled = true"));
+}
+
+TEST_CASE("Softened beams join fractures in a saw-tooth run's statistics, as a resume and `fractures` recompute them",
+          "[case][fracture]") {
+  TempDir dir("sawtooth-softened");
+  // To t* = 3e-4 with a snapshot at 2e-4, where one ligament on its teeth joins two fractures.
+  const std::string two_snapshots =
+      edited(hm::test::short_fig12_case("3e-4", "law = \"sawtooth\"\nfracture_energy = 2.34e-9\n"),
+             {{"times = [3e-4]", "times = [2e-4, 3e-4]"}});
+  dir.write("case.toml", two_snapshots);
+  REQUIRE(run_hmlattice("run case.toml --out run", dir.path).exit_code == 0);
+  const std::string summary = slurp(dir.path / "run" / "fracture_summary.csv");
+  const std::string fractures = slurp(dir.path / "run" / "fractures.csv");
+
+  // Stopped after the first snapshot, the resumed run rebuilds it from the logs it kept.
+  const auto series = hm::test::csv_rows(slurp(dir.path / "run" / "series.csv"));
+  const auto steps_by_first_snapshot =
+      std::count_if(series.begin() + 1, series.end(), [](const auto& row) { return std::stod(row[0]) <= 2e-4; });
+  const auto stop = steps_by_first_snapshot + 3;
+  REQUIRE(stop < static_cast<long>(series.size()) - 1);
+  REQUIRE(run_hmlattice("run case.toml --out part --stop-after-steps " + std::to_string(stop), dir.path).exit_code ==
+          0);
+  REQUIRE(run_hmlattice("run --resume part", dir.path).exit_code == 0);
+  CHECK(slurp(dir.path / "part" / "fracture_summary.csv") == summary);
+  CHECK(slurp(dir.path / "part" / "fractures.csv") == fractures);
+
+  // `fractures` recomputes the run's statistics from its breaks.csv and teeth.csv.
+  REQUIRE(run_hmlattice("fractures run", dir.path).exit_code == 0);
+  CHECK(slurp(dir.path / "run" / "fracture_summary.csv") == summary);
+  CHECK(slurp(dir.path / "run" / "fractures.csv") == fractures);
+
+  // Ignoring the softened beams splits fractures (this case has one more at t* = 2e-4), and gives what
+  // a run with the key writes.
+  const auto fractures_at_2e4 = [](const std::string& csv) { return std::stoi(hm::test::csv_rows(csv)[1][2]); };
+  REQUIRE(run_hmlattice("fractures run --softened-beams ignore", dir.path).exit_code == 0);
+  const std::string ignored = slurp(dir.path / "run" / "fracture_summary.csv");
+  CHECK(fractures_at_2e4(ignored) == fractures_at_2e4(summary) + 1);
+  CHECK_THAT(slurp(dir.path / "run" / "config.toml"), Catch::Contains("softened_beams = \"ignore\""));
+  dir.write("ignore.toml", edited(two_snapshots, {{"[output]\n", "[output]\nsoftened_beams = \"ignore\"\n"}}));
+  REQUIRE(run_hmlattice("run ignore.toml --out ignore", dir.path).exit_code == 0);
+  CHECK(slurp(dir.path / "ignore" / "fracture_summary.csv") == ignored);
+
+  dir.write("bad.toml", edited(sawtooth_case(), {{"[output]\n", "[output]\nsoftened_beams = \"bridge\"\n"}}));
+  const auto bad = run_hmlattice("run bad.toml --out bad", dir.path);
+  CHECK(bad.exit_code == 2);
+  CHECK(count_lines(bad.err) == 1);
+  CHECK_THAT(bad.err, Catch::Contains("[output] softened_beams = 'bridge', allowed: link, ignore"));
+  CHECK_FALSE(std::filesystem::exists(dir.path / "bad"));
 }

@@ -186,3 +186,38 @@ TEST_CASE("Break events are logged with position and written as CSV", "[lattice2
   CHECK_FALSE(std::filesystem::exists(dir / "missing"));
   std::filesystem::remove_all(dir);
 }
+
+TEST_CASE("The tooth log is read back as written, and a damaged one names its file and line", "[fracture]") {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("hm-test-toothlog-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  ToothEvent first;
+  first.sequence = 0, first.beam = 17, first.load = 1.25e-4, first.tooth = 0, first.stiffness_factor = 0.5;
+  first.axial_stress = 2.72e-4, first.ratio = 1.0123456789, first.energy = 3.1e-12;
+  ToothEvent last = first;
+  last.sequence = 1, last.tooth = 9, last.stiffness_factor = 0.0, last.load = 2.5e-4;
+  write_tooth_log(dir / "teeth.csv", {first, last}, "time");
+  const std::vector<ToothEvent> back = read_tooth_log(dir / "teeth.csv");
+  REQUIRE(back.size() == 2);
+  CHECK(back[0].sequence == 0);
+  CHECK(back[0].beam == 17);
+  CHECK(back[0].load == 1.25e-4);
+  CHECK(back[0].tooth == 0);
+  CHECK(back[0].stiffness_factor == 0.5);
+  CHECK(back[0].axial_stress == 2.72e-4);
+  CHECK(back[0].ratio == Approx(1.0123456789).epsilon(1e-9));  // 10 significant digits
+  CHECK(back[0].energy == 3.1e-12);
+  CHECK(back[1].tooth == 9);
+  CHECK(back[1].stiffness_factor == 0.0);
+  CHECK(back[1].load == 2.5e-4);
+  const std::vector<std::string> lines = hm::test::lines_of(dir / "teeth.csv");
+  std::ofstream(dir / "bad.csv") << lines[0] << "\n" << lines[1] << "\n1,17,2.5e-4,9,0\n";
+  CHECK_THROWS_WITH(read_tooth_log(dir / "bad.csv"), Catch::Contains("bad.csv:3: 5 columns, expected 8"));
+  std::ofstream(dir / "bad.csv") << lines[0] << "\n1,17,2.5e-4,nine,0,1,1,1\n";
+  CHECK_THROWS_WITH(read_tooth_log(dir / "bad.csv"), Catch::Contains("bad.csv:2: not a number"));
+  std::ofstream(dir / "breaks.csv")
+      << "sequence,beam,particle_i,particle_j,x,y,time,sigma_1,sigma_3,ratio,crack_tip_factor,mode\n";
+  CHECK_THROWS_WITH(read_tooth_log(dir / "breaks.csv"), Catch::Contains("breaks.csv:1: header"));
+  CHECK_THROWS_WITH(read_tooth_log(dir / "none.csv"), Catch::Contains("none.csv"));
+  std::filesystem::remove_all(dir);
+}

@@ -326,6 +326,67 @@ TEST_CASE("Beams are connected through a shared particle, or only through a shar
   CHECK(hm::core::name_of(FractureLink::shared_triangle) == "triangle");
 }
 
+TEST_CASE("Softened beams link the broken parts of one crack but are not counted as broken",
+          "[lattice2d][fracture_statistics]") {
+  const Lattice& lattice = annulus();
+  // One crack from the borehole through the outer boundary, with a ligament of two beam lengths at
+  // r = 0.5 ... 0.56 left on its teeth: softened, not broken.
+  std::vector<bool> broken(static_cast<std::size_t>(lattice.n_beams()), false);
+  break_ray(lattice, broken, 0.37, 1.1);
+  std::vector<bool> ligament(broken.size(), false);
+  break_segment(lattice, ligament, polar(0.5, 0.37), polar(0.56, 0.37));
+  std::vector<bool> softened(broken.size(), false);
+  for (std::size_t e = 0; e < broken.size(); ++e)
+    if (ligament[e]) {
+      broken[e] = false;
+      softened[e] = true;
+    }
+  // A patch of softened beams away from the crack, and softened flags on broken beams: neither is a fracture.
+  break_segment(lattice, softened, polar(0.5, 200.37), polar(0.6, 200.37));
+  for (std::size_t e = 0; e < broken.size(); ++e)
+    if (broken[e] && e % 3 == 0) softened[e] = true;
+  const int n_broken = static_cast<int>(std::count(broken.begin(), broken.end(), true));
+
+  FractureStatisticsOptions ignore;
+  ignore.softened = SoftenedBeams::ignore;
+  const FractureStatistics apart = compute_fracture_statistics(lattice, broken, {}, ignore, softened);
+  REQUIRE(apart.n_fractures == 2);  // the ligament splits the crack into a radial part and a secondary
+  CHECK(apart.n_radial == 1);
+  CHECK(apart.n_radial_reaching_outer == 0);
+  CHECK(apart.max_radial_extent < 0.5);
+
+  const FractureStatisticsOptions link{};
+  REQUIRE(link.softened == SoftenedBeams::link);  // the default
+  const FractureStatistics joined = compute_fracture_statistics(lattice, broken, {}, link, softened);
+  CHECK(joined.n_fractures == 1);
+  CHECK(joined.n_radial == 1);
+  CHECK(joined.n_radial_reaching_outer == 1);
+  CHECK(joined.max_radial_extent > 0.95);
+  // Only broken beams are members: the same beams, broken count and arms as without the link.
+  CHECK(joined.n_broken == n_broken);
+  CHECK(joined.n_broken == apart.n_broken);
+  CHECK(joined.fractures[0].n_beams() == n_broken);
+  CHECK(joined.n_arms == apart.n_arms);
+  // Without softened flags, link is ignore.
+  CHECK(compute_fracture_statistics(lattice, broken, {}, link).n_fractures == 2);
+  CHECK_THROWS_AS(compute_fracture_statistics(lattice, broken, {}, link, std::vector<bool>(3, false)), hm::InputError);
+
+  CHECK(hm::core::name_of(SoftenedBeams::link) == "link");
+  CHECK(hm::core::name_of(SoftenedBeams::ignore) == "ignore");
+}
+
+TEST_CASE("The tooth log gives the beams softened by a time", "[lattice2d][fracture_statistics]") {
+  std::vector<ToothEvent> teeth(3);
+  teeth[0].beam = 4, teeth[0].load = 1.0;
+  teeth[1].beam = 2, teeth[1].load = 2.0;
+  teeth[2].beam = 4, teeth[2].load = 3.0;  // a later tooth of the same beam
+  CHECK(softened_flags(teeth, 6, 0.5) == std::vector<bool>(6, false));
+  CHECK(softened_flags(teeth, 6, 1.0) == std::vector<bool>{false, false, false, false, true, false});
+  CHECK(softened_flags(teeth, 6, 2.5) == std::vector<bool>{false, false, true, false, true, false});
+  teeth[1].beam = 6;
+  CHECK_THROWS_AS(softened_flags(teeth, 6, 2.5), hm::InputError);
+}
+
 TEST_CASE("The break log gives each fracture's tensile and shear counts", "[lattice2d][fracture_statistics]") {
   const Lattice& lattice = annulus();
   const std::vector<bool> broken = four_cracks(lattice);

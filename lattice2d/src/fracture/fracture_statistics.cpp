@@ -26,9 +26,9 @@ namespace {
 
 constexpr double pi = 3.14159265358979323846;
 
-void require_one_flag_per_beam(const Lattice& lattice, const std::vector<bool>& broken) {
-  if (static_cast<int>(broken.size()) != lattice.n_beams())
-    throw hm::InputError("fracture_statistics: broken flags = " + std::to_string(broken.size()) +
+void require_one_flag_per_beam(const Lattice& lattice, const std::vector<bool>& flags, const char* what = "broken") {
+  if (static_cast<int>(flags.size()) != lattice.n_beams())
+    throw hm::InputError(std::string("fracture_statistics: ") + what + " flags = " + std::to_string(flags.size()) +
                          ", allowed: one per beam (" + std::to_string(lattice.n_beams()) + ")");
 }
 
@@ -119,21 +119,21 @@ int count_crossings(const Lattice& lattice, const std::vector<bool>& broken, dou
 
 namespace {
 
-// The broken beams joined into fractures by `link`.
-DisjointSets linked_broken_beams(const Lattice& lattice, const std::vector<bool>& broken, FractureLink link) {
-  const auto is_broken = [&](int e) { return broken[static_cast<std::size_t>(e)]; };
+// The beams that connect fractures (broken, and softened ones with SoftenedBeams::link) joined by `link`.
+DisjointSets linked_beams(const Lattice& lattice, const std::vector<bool>& linking, FractureLink link) {
+  const auto links = [&](int e) { return linking[static_cast<std::size_t>(e)]; };
   DisjointSets sets(lattice.n_beams());
   if (link == FractureLink::shared_triangle) {
-    // Two broken edges of one triangle: their Voronoi segments meet at its dual point.
+    // Two cracked edges of one triangle: their Voronoi segments meet at its dual point.
     for (const auto& edges : lattice.triangle_beams)
       for (int k = 0; k < 3; ++k)
         for (int m = k + 1; m < 3; ++m)
-          if (is_broken(edges[k]) && is_broken(edges[m])) sets.unite(edges[k], edges[m]);
+          if (links(edges[k]) && links(edges[m])) sets.unite(edges[k], edges[m]);
   } else {
-    // Every broken beam joins the first broken beam seen at each of its particles.
+    // Every cracked beam joins the first cracked beam seen at each of its particles.
     std::vector<int> first_at(static_cast<std::size_t>(lattice.n_particles()), -1);
     for (int e = 0; e < lattice.n_beams(); ++e) {
-      if (!is_broken(e)) continue;
+      if (!links(e)) continue;
       for (int i : lattice.beams[static_cast<std::size_t>(e)]) {
         int& first = first_at[static_cast<std::size_t>(i)];
         if (first < 0)
@@ -150,13 +150,18 @@ DisjointSets linked_broken_beams(const Lattice& lattice, const std::vector<bool>
 
 FractureStatistics compute_fracture_statistics(const Lattice& lattice, const std::vector<bool>& broken,
                                                const std::vector<BreakEvent>& log,
-                                               const FractureStatisticsOptions& options) {
+                                               const FractureStatisticsOptions& options,
+                                               const std::vector<bool>& softened) {
   options.validate();
   require_one_flag_per_beam(lattice, broken);
+  if (!softened.empty()) require_one_flag_per_beam(lattice, softened, "softened");
   const std::vector<FailureMode> mode = logged_modes(lattice, log);
   const auto is_broken = [&](int e) { return broken[static_cast<std::size_t>(e)]; };
 
-  DisjointSets sets = linked_broken_beams(lattice, broken, options.link);
+  std::vector<bool> linking = broken;
+  if (options.softened == SoftenedBeams::link && !softened.empty())
+    for (std::size_t e = 0; e < linking.size(); ++e) linking[e] = linking[e] || softened[e];
+  DisjointSets sets = linked_beams(lattice, linking, options.link);
 
   FractureStatistics stats;
   std::vector<int> fracture_of_root(static_cast<std::size_t>(lattice.n_beams()), -1);
@@ -217,6 +222,17 @@ FractureStatistics compute_fracture_statistics(const Lattice& lattice, const std
   stats.n_arms = count_crossings(lattice, broken, stats.arm_radius, arm_gap_of_beams(lattice, options));
   stats.n_arms_fixed_gap = count_crossings(lattice, broken, stats.arm_radius, options.arm_gap);
   return stats;
+}
+
+std::vector<bool> softened_flags(const std::vector<ToothEvent>& teeth, int n_beams, double until) {
+  std::vector<bool> softened(static_cast<std::size_t>(n_beams), false);
+  for (const ToothEvent& ev : teeth) {
+    if (ev.beam < 0 || ev.beam >= n_beams)
+      throw hm::InputError("fracture_statistics: tooth log beam = " + std::to_string(ev.beam) +
+                           ", allowed: 0 <= beam < " + std::to_string(n_beams));
+    if (ev.load <= until) softened[static_cast<std::size_t>(ev.beam)] = true;
+  }
+  return softened;
 }
 
 FractureStatistics compute_fracture_statistics(const Lattice& lattice, const std::vector<BeamState>& states,

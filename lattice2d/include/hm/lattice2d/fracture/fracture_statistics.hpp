@@ -13,6 +13,7 @@
 
 #include "hm/core/enum_names.hpp"
 #include "hm/lattice2d/fracture/failure.hpp"
+#include "hm/lattice2d/fracture/sawtooth_law.hpp"
 #include "hm/lattice2d/geometry/lattice.hpp"
 #include "hm/lattice2d/mechanics/beam_stiffness.hpp"
 
@@ -32,10 +33,27 @@ constexpr auto enum_names(FractureLink) {
       {{FractureLink::shared_particle, "particle"}, {FractureLink::shared_triangle, "triangle"}});
 }
 
+/// Whether softened beams (past their strength, on the saw-tooth law's teeth: a crack's process zone)
+/// join the broken beams they touch into one fracture.
+enum class SoftenedBeams {
+  /// They link, by the same rule as broken beams, but are not members: a crack whose broken parts are
+  /// held together by a ligament still on its teeth is one fracture, as the flow network sees it (a
+  /// softened facet conducts as crack by its damage). Default: otherwise one beam left on its teeth
+  /// splits a fracture that crosses the annulus into a radial part and a secondary.
+  link,
+  /// Only broken beams link (the brittle law has no softened beams, so its fractures are the same).
+  ignore,
+};
+constexpr auto enum_names(SoftenedBeams) {
+  return core::enum_table<SoftenedBeams>({{SoftenedBeams::link, "link"}, {SoftenedBeams::ignore, "ignore"}});
+}
+
 /// Options of compute_fracture_statistics.
 struct FractureStatisticsOptions {
   /// Which broken beams are connected (docs/fracture_statistics.md compares the two rules).
   FractureLink link = FractureLink::shared_particle;
+  /// Whether softened beams connect broken ones.
+  SoftenedBeams softened = SoftenedBeams::link;
   /// Radius of the arm-counting circle as a fraction of the way from the borehole wall to the outer
   /// boundary: r = R_i + f (R_o - R_i) (R_i = 0 without a borehole; R_o = 1, or min(width, height)/2
   /// for a rectangle). Our choice 0.25: close enough to the wall that short radial cracks reach it,
@@ -125,15 +143,26 @@ double arm_gap_of_beams(const Lattice& lattice, const FractureStatisticsOptions&
 /// Fractures of the broken pattern `broken` (one flag per beam) and their summary. `log` (optional)
 /// gives each broken beam's failure mode; events of beams not broken in `broken` are ignored (so a
 /// whole run's log may be passed with an earlier snapshot), and a beam logged twice counts once, by
-/// its first event. Deterministic: fractures are numbered by their smallest beam index.
-/// Throws hm::InputError for invalid options, broken not sized n_beams, or a logged beam out of range.
+/// its first event. `softened` (one flag per beam, or empty for none) marks the beams on their teeth;
+/// with options.softened = link they join broken beams into one fracture but are not counted in it
+/// (beams, n_broken, radii, kinds and arms are those of its broken beams). A flag on a broken beam is
+/// ignored. Deterministic: fractures are numbered by their smallest beam index.
+/// Throws hm::InputError for invalid options, broken or a non-empty softened not sized n_beams, or a
+/// logged beam out of range.
 FractureStatistics compute_fracture_statistics(const Lattice& lattice, const std::vector<bool>& broken,
                                                const std::vector<BreakEvent>& log = {},
-                                               const FractureStatisticsOptions& options = {});
+                                               const FractureStatisticsOptions& options = {},
+                                               const std::vector<bool>& softened = {});
 /// The same with broken = broken_flags(states).
 FractureStatistics compute_fracture_statistics(const Lattice& lattice, const std::vector<BeamState>& states,
                                                const std::vector<BreakEvent>& log = {},
                                                const FractureStatisticsOptions& options = {});
+
+/// The beams on their teeth at `until` (one flag per beam): those with an event in the saw-tooth law's
+/// tooth log at a load <= until. Damage never heals, so a beam once softened stays so (a broken one
+/// too; compute_fracture_statistics ignores the flag there). Throws hm::InputError for an event's beam
+/// outside 0 <= beam < n_beams.
+std::vector<bool> softened_flags(const std::vector<ToothEvent>& teeth, int n_beams, double until);
 
 /// The statistics of one output time.
 struct FractureSnapshot {

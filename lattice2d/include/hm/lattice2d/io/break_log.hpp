@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// The break log of a run (breaks.csv): one row per broken beam, in breaking order, written once
-/// and read back by the fracture re-analysis and the figure scripts.
+/// and read back by the fracture re-analysis and the figure scripts; and the saw-tooth law's tooth log
+/// (teeth.csv), read back by the re-analysis for the softened beams.
 #include <filesystem>
 #include <ostream>
 #include <string>
@@ -46,5 +47,8 @@ std::vector<BreakEvent> read_break_log(const std::filesystem::path& path);
 ///   energy                                  the energy the step released (over E R^2, per unit thickness).
 void write_tooth_log(const std::filesystem::path& path, const std::vector<ToothEvent>& events,
                      const std::string& load_column = "load");
+
+/// Reads a log written by write_tooth_log, as read_break_log does (same errors).
+std::vector<ToothEvent> read_tooth_log(const std::filesystem::path& path);
 
 }  // namespace hm::lattice2d
