@@ -18,6 +18,7 @@
 #include "hm/analytic/breakdown_insitu.hpp"
 #include "hm/analytic/breakdown_limits.hpp"
 #include "hm/analytic/insitu_annulus.hpp"
+#include "hm/analytic/kgd_transition.hpp"
 #include "hm/analytic/lame.hpp"
 #include "hm/analytic/rudnicki.hpp"
 #include "hm/analytic/sneddon.hpp"
@@ -163,6 +164,28 @@ void add_sneddon(CLI::App* parent) {
   });
 }
 
+void add_kgd(CLI::App* parent) {
+  struct Args {
+    std::vector<double> K_m{0.0, 1.0, 2.0, 4.0};
+  };
+  auto a = std::make_shared<Args>();
+  auto* cmd = parent->add_subcommand(
+      "kgd",
+      "Plane-strain hydraulic fracture without leak-off between its viscosity and toughness vertices "
+      "(Dontsov 2017): l = gamma (E' Q^3 t^4/mu')^(1/6), w(0) = omega (mu' Q^3 t^2/E')^(1/6)");
+  cmd->add_option("--Km", a->K_m, "toughness numbers K' (E'^3 mu' Q)^(-1/4), comma-separated")
+      ->delimiter(',')
+      ->capture_default_str();
+  cmd->callback([a] {
+    std::vector<std::vector<double>> rows;
+    for (double K_m : a->K_m) {
+      const KgdTransitionScales s = kgd_transition_scales(K_m);
+      rows.push_back({K_m, s.gamma, s.omega, s.k_hat, s.delta, s.lambda});
+    }
+    print_table({"K_m", "gamma", "omega", "k_hat", "delta", "lambda"}, rows);
+  });
+}
+
 void add_lame(CLI::App* parent) {
   struct Args {
     double pi = 1e-3, po = 0.0, Ri = 0.138, Ro = 1.0, nu = 0.25;
@@ -292,6 +315,7 @@ void add_analytic_command(CLI::App& app, int& /*exit_code*/) {
   add_rudnicki(cmd);
   add_borehole_steady(cmd);
   add_sneddon(cmd);
+  add_kgd(cmd);
   add_lame(cmd);
   add_insitu(cmd);
   add_breakdown(cmd);

@@ -116,6 +116,21 @@ TEST_CASE("hmlattice analytic prints a CSV header and one row per radius", "[ver
         "1,0.000625,0,0.0006666666667,0.0001666666667\n");
 }
 
+TEST_CASE("hmlattice analytic kgd prints the KGD scales per toughness number", "[verification][cli]") {
+  TempDir dir("cli-kgd");
+  const auto r = run_hmlattice("analytic kgd --Km 0,100", dir.path);
+  REQUIRE(r.exit_code == 0);
+  const auto rows = hm::test::csv_rows(r.out);
+  REQUIRE(rows.size() == 2);
+  CHECK(r.out.rfind("K_m,gamma,omega,k_hat,delta,lambda\n", 0) == 0);
+  // The M-vertex (Adachi & Detournay's gamma = 0.6152, within the approximation's 0.15%) and the K-vertex,
+  // gamma = 0.9324 K_m^(-2/3) (Griffith's crack holding Q t).
+  CHECK(std::stod(rows[0][1]) == Approx(0.6152).epsilon(0.0015));
+  CHECK(std::stod(rows[1][1]) == Approx(0.9324 * std::pow(100.0, -2.0 / 3.0)).epsilon(1e-3));
+  require_clean_rejection(run_hmlattice("analytic kgd --Km -1", dir.path), "K_m = -1, allowed: 0 <= K_m <= 1e6");
+  CHECK(dir.is_empty());
+}
+
 TEST_CASE("Bad 1D cases are rejected before anything is written", "[verification][cli]") {
   TempDir dir("cli-fdm1d");
   auto rejected = [&](const std::string& toml, const std::string& must_mention) {

@@ -120,10 +120,11 @@ TEST_CASE("Fuzzed command lines end as a valid result or as one line of bad inpu
   TempDir dir("fuzz-cli");
   std::mt19937 rng(7);
   const std::vector<std::string> commands = {"analytic rudnicki --r 0.1,0.2", "analytic borehole-steady --r 0.2,0.5",
-                                             "analytic sneddon --x 0,0.05", "analytic lame --r 0.5,1"};
-  const std::vector<std::string> options = {"--Q",  "--b",          "--nu", "--t",  "--E_over_M",
-                                            "--Ri", "--Ro",         "--pi", "--po", "--p",
-                                            "--c",  "--vol_strain", "--r",  "--x",  "--bogus"};
+                                             "analytic sneddon --x 0,0.05", "analytic lame --r 0.5,1",
+                                             "analytic kgd --Km 0,2"};
+  const std::vector<std::string> options = {"--Q",  "--b",  "--nu", "--t",    "--E_over_M", "--Ri",
+                                            "--Ro", "--pi", "--po", "--p",    "--c",        "--vol_strain",
+                                            "--r",  "--x",  "--Km", "--bogus"};
   const std::vector<std::string> cli_values = {"''", "-1",  "0",        "0.3",          "1e308",      "nan",   "inf",
                                                "x",  "1,2", "0.1,,0.2", "plane-strain", "appendix-a", "1e-320"};
   const auto pick = [&](std::size_t n) { return std::uniform_int_distribution<std::size_t>(0, n - 1)(rng); };
