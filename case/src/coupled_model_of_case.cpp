@@ -13,7 +13,7 @@ std::unique_ptr<lt::CoupledModel> make_coupled_model(const RunCase& c, lt::Latti
   if (c.fracture_enabled) {
     model->enable_fracture(lt::draw_beam_strengths(c.strength, model->lattice().n_beams()), c.break_loop);
     if (c.fracture_law == lt::FractureLaw::sawtooth) model->use_sawtooth_law(c.sawtooth);
-    model->cut_beams(lt::beams_crossing(model->lattice(), c.notches));
+    model->cut_beams(lt::beams_crossing(model->lattice(), c.notches), c.notch_aperture);
   }
   return model;
 }

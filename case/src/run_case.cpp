@@ -306,6 +306,11 @@ void check_fracture_keys(CaseTable& fracture, CaseTable&, RunCase& c) {
                   "fracture disabled)");
   if (!c.notches.empty() && !c.fracture_enabled)
     fracture.fail("notch given, allowed: only with enabled = true (a notch is a set of broken beams)");
+  if (!(std::isfinite(c.notch_aperture) && c.notch_aperture >= 0.0 && c.notch_aperture <= 0.01))
+    fracture.fail("notch_aperture = " + core::format_value(c.notch_aperture) + ", allowed: 0 <= value <= 0.01 (over R)");
+  if (c.notch_aperture > 0.0 && (c.notches.empty() || c.flow.fracture_flow.law != lt::FractureFlow::cubic))
+    fracture.fail("notch_aperture = " + core::format_value(c.notch_aperture) +
+                  ", allowed: > 0 only with a notch and [flow] fracture_flow = \"cubic\"");
   // The mean strengths and mu_i are the material's ([physics]).
   auto& st = c.strength;
   st.tensile_strength = c.physics.parameters.tensile_strength;
@@ -394,6 +399,10 @@ void add_fracture_keys(CaseKeys<RunCase>& k) {
               }
               return out + "]";
             }})
+      .real("notch_aperture", [](auto& c) -> auto& { return c.notch_aperture; },
+            "0 <= value <= 0.01 (over R); > 0 only with a notch and [flow] fracture_flow = \"cubic\"",
+            "the notches' own aperture, a cut slot's width: the cubic law's aperture of a notch's facet is its "
+            "opening plus this, so the slot carries the fluid to its tips (docs/flow.md)")
       .check(check_fracture_keys);
 }
 

@@ -73,7 +73,12 @@ TEST_CASE("A bad notch is one line of bad input naming [fracture] notch", "[case
             "[fracture] notch = [[0.5,0.0,0.25]], allowed: an array of arrays of 4 finite numbers"},
            {"notch = [[0.2, 0.0, 0.2, 0.0]]\n", "[fracture] notch = [0.2, 0, 0.2, 0], allowed: two distinct ends"},
            {"notch = [[0.2, 0.0, 1.5, 0.0]]\n", "[fracture] notch = [0.2, 0, 1.5, 0], allowed: ends inside the domain"},
-           {"notch = [[0.2, 0.0, nan, 0.0]]\n", "allowed: an array of arrays of 4 finite numbers"}}) {
+           {"notch = [[0.2, 0.0, nan, 0.0]]\n", "allowed: an array of arrays of 4 finite numbers"},
+           // The case's flow is the paper's iota: a slot's width means nothing there.
+           {"notch = [[0.1, 0.0, 0.25, 0.0]]\nnotch_aperture = 1e-4\n",
+            "[fracture] notch_aperture = 1e-04, allowed: > 0 only with a notch and [flow] fracture_flow = \"cubic\""},
+           {"notch = [[0.1, 0.0, 0.25, 0.0]]\nnotch_aperture = -1e-4\n",
+            "[fracture] notch_aperture = -1e-04, allowed: 0 <= value <= 0.01 (over R)"}}) {
     dir.write("case.toml", notched_case(fracture));
     const auto r = run_hmlattice("run case.toml --out run", dir.path);
     INFO(fracture << r.err);
@@ -87,4 +92,30 @@ TEST_CASE("A bad notch is one line of bad input naming [fracture] notch", "[case
   const auto r = run_hmlattice("run case.toml --out run", dir.path);
   CHECK(r.exit_code == 2);
   CHECK_THAT(r.err, Catch::Contains("[fracture] notch given, allowed: only with enabled = true"));
+}
+
+TEST_CASE("A notch's own aperture carries the fluid under the cubic law", "[case][fracture]") {
+  // The KGD case's notch with the cubic law: its cut facets conduct as a slot 1e-4 wide from t = 0,
+  // where a notch without the key is shut (no opening yet, no residual aperture).
+  const std::string kgd = slurp(std::filesystem::path(HM_SOURCE_DIR) / "cases" / "kgd_toughness_quick.toml");
+  const std::string cubic =
+      edited(kgd, {{"iota = 1e12", "iota = 1"},
+                   {"crack_coupling = \"full\"",
+                    "crack_coupling = \"full\"\nfracture_flow = \"cubic\"\nrock_permeability = 1e-17"}});
+  TempDir dir("notch-slot");
+  const auto model_of = [&](const std::string& text) {
+    dir.write("case.toml", text);
+    return hm::cases::make_coupled_model(hm::cases::read_run_case(dir.path / "case.toml"));
+  };
+  const auto shut = model_of(cubic);
+  const auto slot = model_of(edited(
+      cubic, {{"notch = [[-0.05, 0.0, 0.05, 0.0]]", "notch = [[-0.05, 0.0, 0.05, 0.0]]\nnotch_aperture = 1e-4"}}));
+  REQUIRE(slot->n_cut() > 0);
+  for (int k = 0; k < slot->n_cut(); ++k) {
+    const int beam = slot->break_log()[static_cast<std::size_t>(k)].beam;
+    CHECK(shut->flow().crack_aperture(beam) == 0.0);
+    CHECK(slot->flow().crack_aperture(beam) == 1e-4);
+  }
+  const hm::cases::RunCase written = hm::cases::read_run_case(dir.path / "case.toml");
+  CHECK_THAT(hm::cases::run_case_to_toml(written, ""), Catch::Contains("notch_aperture = 1e-04"));
 }

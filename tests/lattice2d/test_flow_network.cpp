@@ -536,6 +536,40 @@ TEST_CASE("The cubic law's aperture is the crack's share of the opening plus the
   CHECK(network.crack_aperture(3) == 0.0);  // intact rock: no crack
   network.set_crack_openings(opening);
   CHECK(network.crack_conductance_changes() == changes + 1);  // the same openings change nothing
+
+  // A cut slot 6e-4 wide on beams 0 and 2: its width adds to the opening, and a slot closes by at most
+  // its width (beam 2's -5e-4 leaves 1e-4 of it open); the residual still adds.
+  network.set_slot_width({0, 2}, 6e-4);
+  CHECK(network.crack_conductance_changes() == changes + 2);
+  CHECK(network.crack_aperture(0) == Approx(1e-3).epsilon(1e-15));
+  CHECK(network.crack_aperture(1) == Approx(1e-4).epsilon(1e-15));  // not cut
+  CHECK(network.crack_aperture(2) == Approx(2e-4).epsilon(1e-14));
+  opening[2] = -1e-3;
+  network.set_crack_openings(opening);
+  CHECK(network.crack_aperture(2) == 1e-4);  // shut: the residual alone
+  CHECK_THROWS_AS(network.set_slot_width({0}, -1e-4), hm::InputError);
+  CHECK_THROWS_AS(network.set_slot_width({lattice.n_beams()}, 1e-4), hm::InputError);
+}
+
+TEST_CASE("Parallel plates: a cut slot conducts as a crack opened by its width", "[lattice2d]") {
+  const Lattice lattice = make_lattice(DomainShape::annulus, 2500);
+  const DualGraph dual = build_dual_graph(lattice);
+  const std::vector<bool> crack = radial_crack(lattice, true);
+  const double k = 1e-17;
+  // The through crack closed (opening 0) as a slot 2e-3 wide: the plates of the parallel-plate test,
+  // bit for bit (0 + 2e-3 is 2e-3).
+  FlowParameters parameters;
+  parameters.fracture_flow = {FractureFlow::cubic, 0.0, k, 0.0};
+  FlowNetwork slot(lattice, dual, parameters);
+  slot.set_broken(crack);
+  slot.set_crack_openings(Eigen::VectorXd::Zero(lattice.n_beams()));
+  std::vector<int> cut;
+  for (int e = 0; e < lattice.n_beams(); ++e)
+    if (crack[static_cast<std::size_t>(e)]) cut.push_back(e);
+  slot.set_slot_width(cut, 2e-3);
+  const FlowSteadyState slotted = slot.solve_steady_state();
+  REQUIRE(slotted.solved);
+  CHECK(slotted.pressure == cubic_crack_steady_state(lattice, dual, 2e-3, 0.0, k).pressure);
 }
 
 TEST_CASE("Flow parameters refuse a cubic law without the rock's permeability", "[lattice2d]") {

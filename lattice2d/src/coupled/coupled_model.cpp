@@ -130,9 +130,14 @@ void CoupledModel::use_sawtooth_law(const SawtoothLawOptions& options) {
                                                       fracture_->strengths, options);
 }
 
-void CoupledModel::cut_beams(const std::vector<int>& beams) {
+void CoupledModel::cut_beams(const std::vector<int>& beams, double slot_width) {
   if (!fracture_) throw hm::InputError("notch: allowed only with fracture enabled");
   if (at_rest_ || cursor_.started) throw hm::InputError("notch: allowed only before the first step");
+  if (!(std::isfinite(slot_width) && slot_width >= 0.0))
+    throw hm::InputError("notch slot width = " + hm::core::format_value(slot_width) + ", allowed: >= 0, finite");
+  if (slot_width != 0.0 && flow_->parameters().fracture_flow.law != FractureFlow::cubic)
+    throw hm::InputError("notch slot width = " + hm::core::format_value(slot_width) +
+                         ", allowed: 0 unless the fracture flow is the cubic law");
   const Lattice& l = lattice();
   for (int e : beams) {
     if (e < 0 || e >= l.n_beams())
@@ -153,6 +158,7 @@ void CoupledModel::cut_beams(const std::vector<int>& beams) {
     ++n_cut_;
   }
   if (!beams.empty()) flow_->set_crack_weights(crack_weights());
+  if (slot_width != 0.0) flow_->set_slot_width(beams, slot_width);
 }
 
 int CoupledModel::n_broken() const {

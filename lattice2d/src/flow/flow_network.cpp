@@ -271,13 +271,28 @@ void FlowNetwork::set_crack_openings(const Eigen::VectorXd& openings) {
   ++crack_conductance_changes_;
 }
 
+void FlowNetwork::set_slot_width(const std::vector<int>& beams, double width) {
+  hm::core::require_finite(width, "slot width");
+  hm::core::require_non_negative(width, "slot width");
+  if (slot_width_.size() == 0) slot_width_ = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(connections_.size()));
+  for (int e : beams) {
+    if (e < 0 || e >= slot_width_.size())
+      throw InputError("slot beam = " + std::to_string(e) + ", allowed: 0 <= beam < " +
+                       std::to_string(slot_width_.size()));
+    slot_width_[e] = width;
+  }
+  factor_stale_ = true;
+  ++crack_conductance_changes_;
+}
+
 double FlowNetwork::crack_aperture(int beam) const {
   const double w = crack_weight_[beam];
   if (parameters_.fracture_flow.law != FractureFlow::cubic || w == 0.0) return 0.0;
-  const double opening = crack_opening_.size() == 0 ? 0.0 : std::max(crack_opening_[beam], 0.0);
+  const double slot = slot_width_.size() == 0 ? 0.0 : slot_width_[beam];
+  const double opening = crack_opening_.size() == 0 ? 0.0 : crack_opening_[beam];
   // The crack's share of the facet's opening: a softening beam's secant leaves 1 - s = w of its
-  // elongation as inelastic (crack) opening, all of it once broken.
-  return w * (opening + parameters_.fracture_flow.residual_aperture);
+  // elongation as inelastic (crack) opening, all of it once broken. A slot closes by at most its width.
+  return w * (std::max(opening + slot, 0.0) + parameters_.fracture_flow.residual_aperture);
 }
 
 void FlowNetwork::set_broken(const std::vector<bool>& broken) {

@@ -77,6 +77,8 @@ struct RunCase {
   hm::lattice2d::SawtoothLawOptions sawtooth;
   /// Pre-cut cracks: the beams each segment crosses are broken before the first step (notch.hpp).
   std::vector<hm::lattice2d::NotchSegment> notches;
+  /// The notches' own aperture over R, a cut slot's width (flow with fracture_flow = "cubic" only).
+  double notch_aperture = 0.0;
   RunOutput output;
 
   /// The calibrated beam constants of this case's stiffness scaling.

@@ -290,9 +290,10 @@ class CoupledModel {
   /// Breaks `beams` before the first step: pre-cut cracks ([fracture] notch, notch.hpp). Each becomes
   /// open (or contact) as a break makes it, is logged at t = 0 with mode none and ratio 0 (it did not
   /// fail), and the flow sees it as broken; the rest state (settle) is then that of the notched rock.
+  /// With the cubic law the cut facets are a slot `slot_width` wide (FlowNetwork::set_slot_width).
   /// Throws hm::InputError without fracture enabled, after the first step, for a beam out of range or
-  /// broken already.
-  void cut_beams(const std::vector<int>& beams);
+  /// broken already, or a slot width < 0 or one > 0 without the cubic law.
+  void cut_beams(const std::vector<int>& beams, double slot_width = 0.0);
   /// Beams broken by cut_beams (the first entries of break_log()).
   int n_cut() const { return n_cut_; }
   /// Every break so far, in order; BreakEvent::load is the time t^{n+1} of the step that broke it.

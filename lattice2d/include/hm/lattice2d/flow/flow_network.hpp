@@ -311,8 +311,12 @@ class FlowNetwork {
   /// With FractureFlow::cubic: each beam's opening (u_j - u_i).n (size n_beams; a closed one, < 0,
   /// counts as 0), from which a crack's aperture a = w (max(opening, 0) + residual) is taken.
   void set_crack_openings(const Eigen::VectorXd& openings);
-  /// a / R of a beam's crack: w (max(opening, 0) + w_r / R) with the cubic law, 0 for intact rock or
-  /// another law.
+  /// With FractureFlow::cubic: the flagged beams' facets are a cut slot `width` wide (over R) before
+  /// any opening, e.g. a saw-cut notch, which carries the fluid to its tips while the cracks grown
+  /// from it conduct by their own opening alone. Allowed: 0 <= width, finite; beams in range.
+  void set_slot_width(const std::vector<int>& beams, double width);
+  /// a / R of a beam's crack: w (max(opening + slot, 0) + w_r / R) with the cubic law (slot the beam's
+  /// set_slot_width, else 0), 0 for intact rock or another law.
   double crack_aperture(int beam) const;
   const Eigen::VectorXd& crack_weights() const { return crack_weight_; }
   /// The cracks as sets of unknowns: the triangles (and the borehole) joined by the connections of
@@ -398,6 +402,7 @@ class FlowNetwork {
   double borehole_volume_ = 0.0;
   Eigen::VectorXd crack_weight_;   // per beam, 0 rock ... 1 broken
   Eigen::VectorXd crack_opening_;  // per beam with the cubic law (else empty)
+  Eigen::VectorXd slot_width_;     // per beam, a cut slot's own aperture (empty: none)
 
   Eigen::VectorXd pressure_;
   Eigen::VectorXd trial_pressure_;
