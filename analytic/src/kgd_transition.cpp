@@ -96,19 +96,24 @@ KgdTransitionScales kgd_transition_scales(double K_m) {
   return out;
 }
 
-double KgdTransition::toughness_number() const {
+double kgd_toughness_number(double E_prime, double mu_prime, double Q, double K_Ic) {
   const double K_prime = 4.0 * std::sqrt(2.0 / pi) * K_Ic;
   return K_prime * std::pow(E_prime * E_prime * E_prime * mu_prime * Q, -0.25);
 }
 
+double kgd_length_scale(double E_prime, double mu_prime, double Q, double t) {
+  return std::pow(E_prime * Q * Q * Q * t * t * t * t / mu_prime, 1.0 / 6.0);
+}
+
+double KgdTransition::toughness_number() const { return kgd_toughness_number(E_prime, mu_prime, Q, K_Ic); }
+
 double KgdTransition::half_length(double t) const {
-  return kgd_transition_scales(toughness_number()).gamma *
-         std::pow(E_prime * Q * Q * Q * t * t * t * t / mu_prime, 1.0 / 6.0);
+  return kgd_transition_scales(toughness_number()).gamma * kgd_length_scale(E_prime, mu_prime, Q, t);
 }
 
 double KgdTransition::opening(double x, double t) const {
   const KgdTransitionScales s = kgd_transition_scales(toughness_number());
-  const double l = s.gamma * std::pow(E_prime * Q * Q * Q * t * t * t * t / mu_prime, 1.0 / 6.0);
+  const double l = s.gamma * kgd_length_scale(E_prime, mu_prime, Q, t);
   const double rho = std::abs(x) / l;
   if (rho >= 1.0) return 0.0;
   const double w0 = s.omega * std::pow(mu_prime * Q * Q * Q * t * t / E_prime, 1.0 / 6.0);

@@ -1,5 +1,7 @@
 #include "hm/analytic/kgd_viscosity.hpp"
 
+#include "hm/analytic/kgd_transition.hpp"
+
 #include <gsl/gsl_sf_gamma.h>
 #include <gsl/gsl_sf_hyperg.h>
 
@@ -14,9 +16,7 @@ namespace {
 double beta_function(double a, double b) { return gsl_sf_gamma(a) * gsl_sf_gamma(b) / gsl_sf_gamma(a + b); }
 
 double scale_eps(const KgdViscosityVertex& v, double t) { return std::cbrt(v.mu_prime / (v.E_prime * t)); }
-double scale_L(const KgdViscosityVertex& v, double t) {
-  return std::pow(v.E_prime * v.Q * v.Q * v.Q * t * t * t * t / v.mu_prime, 1.0 / 6.0);
-}
+double scale_L(const KgdViscosityVertex& v, double t) { return kgd_length_scale(v.E_prime, v.mu_prime, v.Q, t); }
 
 }  // namespace
 
@@ -52,8 +52,7 @@ double KgdViscosityVertex::net_pressure(double x, double t) const {
 }
 
 double KgdViscosityVertex::toughness_number(double K_Ic) const {
-  const double K_prime = 4.0 * std::sqrt(2.0 / std::numbers::pi) * K_Ic;
-  return K_prime * std::pow(E_prime * E_prime * E_prime * mu_prime * Q, -0.25);
+  return kgd_toughness_number(E_prime, mu_prime, Q, K_Ic);
 }
 
 }  // namespace hm::analytic

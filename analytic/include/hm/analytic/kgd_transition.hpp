@@ -17,6 +17,11 @@
 
 namespace hm::analytic {
 
+/// The KGD scales both vertex solutions share (Q into the whole crack, mu' = 12 mu):
+/// K_m = K' (E'^3 mu' Q)^(-1/4) with K' = 4 sqrt(2/pi) K_Ic, and the viscous length (E' Q^3 t^4 / mu')^(1/6).
+double kgd_toughness_number(double E_prime, double mu_prime, double Q, double K_Ic);
+double kgd_length_scale(double E_prime, double mu_prime, double Q, double t);
+
 /// The solution's dimensionless numbers at one toughness number.
 struct KgdTransitionScales {
   double gamma = 0.0;   ///< l / (E' Q^3 t^4 / mu')^(1/6)
