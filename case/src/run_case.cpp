@@ -64,6 +64,9 @@ void check_cubic_law(CaseTable& flow, const RunCase& c) {
     flow.fail("residual_aperture = " + core::format_value(w_r) + ", allowed: 0 <= value <= 0.01 (over R)");
   if (!cubic && w_r != 0.0)
     flow.fail("residual_aperture = " + core::format_value(w_r) + ", allowed: only with fracture_flow = \"cubic\"");
+  if (!cubic && f.aperture != lt::CrackAperture::axial)
+    flow.fail("crack_aperture = \"" + core::name_of(f.aperture) +
+              "\", allowed: only with fracture_flow = \"cubic\" (the other laws have no aperture)");
   const double k = f.permeability;
   if (!cubic) {
     if (k != 0.0)
@@ -175,6 +178,11 @@ void add_flow_keys(CaseKeys<RunCase>& k) {
             "0 <= value <= 0.01, finite; > 0 only with fracture_flow = \"cubic\"",
             "w_r/R, the aperture a crack keeps when its faces touch (the cubic law): a pinched point does not "
             "block the crack's flow")
+      .choice("crack_aperture", [](auto& c) -> auto& { return c.flow.fracture_flow.aperture; },
+              "the cubic law's aperture of an open facet: its axial opening (the gap normal to the facet) or the "
+              "length of its displacement jump (axial opening and slide), which a facet inclined to its crack "
+              "needs to conduct the crack's opening (docs/flow.md, \"The cubic law on a lattice crack\"); only "
+              "with fracture_flow = \"cubic\"")
       .check([](CaseTable& flow, CaseTable& root, RunCase& c) {
         check_cubic_law(flow, c);
         if (const double ramp = c.flow.injection_ramp_time; !(ramp >= 0.0 && std::isfinite(ramp)))

@@ -103,6 +103,11 @@ TEST_CASE("Bad 2D cases are rejected with one line naming table, key, value and 
            "case.toml: [flow] residual_aperture = nan, allowed: a finite number");
   rejected(physics + "[flow]\nresidual_aperture = 1e-4\n",
            "case.toml: [flow] residual_aperture = 1e-04, allowed: only with fracture_flow = \"cubic\"");
+  rejected(physics + "[flow]\ncrack_aperture = \"jump\"\n",
+           "case.toml: [flow] crack_aperture = \"jump\", allowed: only with fracture_flow = \"cubic\" (the other laws "
+           "have no aperture)");
+  rejected(physics + "[flow]\nfracture_flow = \"cubic\"\nrock_permeability = 1e-14\ncrack_aperture = \"normal\"\n",
+           "case.toml: [flow] crack_aperture = 'normal', allowed: axial, jump");
   rejected(
       "[physics_si]\nq = 1e-4\nb = 0.5\nk = 1e-15\nR = 10\nR_i = 0\n[flow]\nfracture_flow = "
       "\"cubic\"\nrock_permeability = 1e-14\n",

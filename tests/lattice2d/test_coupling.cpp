@@ -10,6 +10,7 @@
 #include "hm/core/input_error.hpp"
 #include "hm/lattice2d/coupled/coupling.hpp"
 #include "hm/lattice2d/flow/flow_network.hpp"
+#include "hm/lattice2d/fracture/notch.hpp"
 #include "hm/lattice2d/linalg/spd_solver.hpp"
 #include "hm/lattice2d/mechanics/beam_stiffness.hpp"
 #include "hm/lattice2d/mechanics/mechanics.hpp"
@@ -361,6 +362,49 @@ TEST_CASE("A crack's opening volume is work-conjugate to the full pressure on it
   opened.segment<2>(3 * j) = 2e-4 * Eigen::Vector2d(-lattice.direction(1, e), lattice.direction(0, e));
   opened.segment<2>(3 * i) = opened.segment<2>(3 * j);
   CHECK(crack_opening_volumes(lattice, dual, one, opened).cwiseAbs().maxCoeff() < 1e-20);
+}
+
+TEST_CASE("A straight cut opened by w: each open facet's jump is w, its axial opening w cos(theta)", "[lattice2d]") {
+  const Lattice lattice = make_lattice(DomainShape::disk, 3000);
+  const std::vector<int> cut = beams_crossing(lattice, NotchSegment{{-0.8, 0.0}, {0.8, 0.0}});
+  REQUIRE(cut.size() > 80);
+  Eigen::VectorXd weight = Eigen::VectorXd::Zero(lattice.n_beams());
+  for (const int e : cut) weight[e] = 1.0;
+  // The half above moved up by w, and the whole disk moved rigidly (a translation and a rotation omega,
+  // the particles turning with it), which opens and slides no facet.
+  const double w = 1e-3, omega = 2e-4;
+  const auto opened_by = [&](double opening) {
+    Eigen::VectorXd u(3 * lattice.n_particles());
+    for (int i = 0; i < lattice.n_particles(); ++i) {
+      const Eigen::Vector2d x = lattice.points.col(i);
+      u.segment<3>(3 * i) << 3e-4 - omega * x.y(), -1e-4 + omega * x.x() + (x.y() > 0.0 ? opening : 0.0), omega;
+    }
+    return u;
+  };
+  const Eigen::VectorXd u = opened_by(w);
+  const Eigen::VectorXd axial = crack_facet_openings(lattice, weight, u, CrackAperture::axial);
+  const Eigen::VectorXd jump = crack_facet_openings(lattice, weight, u, CrackAperture::jump);
+  double least_cosine = 1.0;
+  for (int e = 0; e < lattice.n_beams(); ++e) {
+    if (weight[e] == 0.0) {
+      CHECK(axial[e] == 0.0);
+      CHECK(jump[e] == 0.0);
+      continue;
+    }
+    const double cosine = std::abs(lattice.direction(1, e));
+    least_cosine = std::min(least_cosine, cosine);
+    // Differences of displacements ~1e-3 formed from terms ~1e-4 of the rigid motion: round-off ~1e-19.
+    CHECK(axial[e] == Approx(w * cosine).margin(1e-17));
+    CHECK(jump[e] == Approx(w).epsilon(1e-12));
+  }
+  // The cut has facets far from normal to the opening, where the two definitions differ most.
+  CHECK(least_cosine < 0.3);
+  // Pushed together instead, every facet is closed: both are the (negative) axial opening.
+  const Eigen::VectorXd shut = opened_by(-w);
+  CHECK(crack_facet_openings(lattice, weight, shut, CrackAperture::jump) ==
+        crack_facet_openings(lattice, weight, shut, CrackAperture::axial));
+  const Eigen::VectorXd shut_axial = crack_facet_openings(lattice, weight, shut, CrackAperture::axial);
+  for (const int e : cut) CHECK(shut_axial[e] == Approx(-w * std::abs(lattice.direction(1, e))).margin(1e-17));
 }
 
 TEST_CASE("The borehole's volume gradient is the wall traction per unit pressure and the wall polygon's area change",

@@ -550,15 +550,9 @@ void CoupledModel::update_crack_stabiliser(bool keep_unchanged_modes) {
 }
 
 void CoupledModel::update_crack_openings(const Eigen::VectorXd& u) {
-  if (flow_->parameters().fracture_flow.law != FractureFlow::cubic) return;
-  const Eigen::VectorXd& weight = flow_->crack_weights();
-  Eigen::VectorXd opening = Eigen::VectorXd::Zero(weight.size());
-  // The axial opening, the one the crack's charged volume and its face force use (work-conjugate):
-  // rotations move the facet's ends by -s (theta_j - theta_i) about it, second order for a crack
-  // much longer than a beam.
-  for (Eigen::Index e = 0; e < weight.size(); ++e)
-    if (weight[e] > 0.0) opening[e] = normal_elongation(lattice(), u, static_cast<int>(e));
-  flow_->set_crack_openings(opening);
+  const FractureFlowSpec& law = flow_->parameters().fracture_flow;
+  if (law.law != FractureFlow::cubic) return;
+  flow_->set_crack_openings(crack_facet_openings(lattice(), flow_->crack_weights(), u, law.aperture));
 }
 
 bool CoupledModel::solve_flow(double dt, int pass, const Eigen::VectorXd& u, const Eigen::VectorXd& pressure_guess,

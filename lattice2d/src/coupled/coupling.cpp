@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
 
 #include "hm/core/input_error.hpp"
 #include "hm/core/validation.hpp"
@@ -86,6 +87,20 @@ Eigen::VectorXd crack_opening_volumes(const Lattice& lattice, const DualGraph& d
       if (t >= 0) v[t] += half;  // a wall beam's other half is the borehole's, whose volume is its own
   }
   return v;
+}
+
+Eigen::VectorXd crack_facet_openings(const Lattice& lattice, const Eigen::VectorXd& crack_weight,
+                                     const Eigen::VectorXd& u, CrackAperture aperture) {
+  assert(crack_weight.size() == lattice.n_beams() && "crack_facet_openings: one weight per beam");
+  assert(u.size() == 3 * lattice.n_particles() && "crack_facet_openings: 3 dofs per particle");
+  Eigen::VectorXd opening = Eigen::VectorXd::Zero(lattice.n_beams());
+  for (int e = 0; e < lattice.n_beams(); ++e) {
+    if (!(crack_weight[e] > 0.0)) continue;
+    const double axial = normal_elongation(lattice, u, e);
+    // A closed facet's gap is its axial opening whatever it slides: the contact shuts it.
+    opening[e] = aperture == CrackAperture::jump && axial > 0.0 ? std::hypot(axial, facet_slide(lattice, u, e)) : axial;
+  }
+  return opening;
 }
 
 Eigen::VectorXd undrained_spring_stiffness(const Lattice& lattice, const DualGraph& dual, double b, double E_over_M,

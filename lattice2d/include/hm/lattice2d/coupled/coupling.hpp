@@ -11,6 +11,7 @@
 
 #include <Eigen/Core>
 
+#include "hm/lattice2d/flow/flow_network.hpp"
 #include "hm/lattice2d/geometry/dual_graph.hpp"
 #include "hm/lattice2d/geometry/lattice.hpp"
 #include "hm/lattice2d/mechanics/beam_stiffness.hpp"
@@ -93,6 +94,14 @@ inline double face_pressure_share(double b, double w) { return w == 0.0 ? b : w 
 /// triangles' areas by w (h_k + h_l) / 2, 1.5 w d_e on an equilateral lattice.
 Eigen::VectorXd crack_opening_volumes(const Lattice& lattice, const DualGraph& dual,
                                       const Eigen::VectorXd& crack_weight, const Eigen::VectorXd& u);
+
+/// The openings the cubic law's apertures come from (FlowNetwork::set_crack_openings), one per beam, 0
+/// where the crack weight is 0: the axial opening (u_j - u_i).n, the one crack_opening_volumes charges,
+/// or with CrackAperture::jump, where that is > 0, the length of the facet's displacement jump (with
+/// facet_slide). Rotations move the facet's ends by -s (theta_j - theta_i) along it, s from the beam's
+/// axis: second order for a crack much longer than a beam, and left out.
+Eigen::VectorXd crack_facet_openings(const Lattice& lattice, const Eigen::VectorXd& crack_weight,
+                                     const Eigen::VectorXd& u, CrackAperture aperture);
 
 /// The borehole's volume gradient dV_h/du (3 n_particles; zero off the wall): for each wall beam, half
 /// its length times the normal into the solid on each end, the wall traction of pressure_forces per

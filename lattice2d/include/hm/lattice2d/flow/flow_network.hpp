@@ -74,6 +74,23 @@ constexpr auto enum_names(FractureFlow) {
                                          {FractureFlow::cubic, "cubic"}});
 }
 
+/// Which opening of a crack's facet is the cubic law's aperture. Both give the same fluid volume (the
+/// charged volume is the axial opening times the facet, work-conjugate with the face force); they
+/// differ where a facet is inclined to the crack it belongs to (docs/flow.md, "The cubic law on a lattice
+/// crack").
+enum class CrackAperture {
+  /// The axial opening (u_j - u_i).n, the gap normal to the facet. A facet inclined at theta to a crack
+  /// opened by w gets w cos(theta): the zig-zag path of a straight cut conducts 4-7% of w^3/12.
+  axial,
+  /// The length of the facet's displacement jump at the beam's midpoint (the axial opening and the slide
+  /// beside it) where the facet is open, the axial opening where it is closed: w on every facet of a
+  /// crack opened by w, so a straight cut conducts w^3/12 over its Voronoi path's tortuosity (0.78).
+  jump,
+};
+constexpr auto enum_names(CrackAperture) {
+  return core::enum_table<CrackAperture>({{CrackAperture::axial, "axial"}, {CrackAperture::jump, "jump"}});
+}
+
 /// A crack's conduction: the law, and its transmissivity where the law has one.
 struct FractureFlowSpec {
   FractureFlow law = FractureFlow::permeability;
@@ -88,6 +105,8 @@ struct FractureFlowSpec {
   /// w_r / R, the residual aperture of a crack: a crack closed by its contact still conducts as a
   /// plate this wide, so a pinched point does not block it. Used with law = cubic. Allowed: finite, >= 0.
   double residual_aperture = 0.0;
+  /// The opening that is the cubic law's aperture. Used with law = cubic.
+  CrackAperture aperture = CrackAperture::axial;
 };
 
 /// How the flow network models the borehole and the cracks and how it solves: the [flow] table's

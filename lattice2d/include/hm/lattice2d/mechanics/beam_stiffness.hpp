@@ -242,6 +242,17 @@ inline double normal_elongation(const Lattice& lattice, const Eigen::VectorXd& u
   return du.dot(lattice.direction.col(beam));
 }
 
+/// The slide of `beam`'s facet: the tangential component, along s = n rotated by +90 degrees, of the
+/// displacement jump at the beam's midpoint (on its facet's line, the perpendicular bisector), where
+/// particle i's rotation moves the point by omega_i (L/2) s and particle j's by -omega_j (L/2) s:
+/// (u_j - u_i).s - (omega_i + omega_j) L/2. With normal_elongation, the facet's jump.
+inline double facet_slide(const Lattice& lattice, const Eigen::VectorXd& u, int beam) {
+  const auto [i, j] = lattice.beams[static_cast<std::size_t>(beam)];
+  const Eigen::Vector2d n = lattice.direction.col(beam);
+  const Eigen::Vector2d du(u[dof_index(j, 0)] - u[dof_index(i, 0)], u[dof_index(j, 1)] - u[dof_index(i, 1)]);
+  return -n.y() * du.x() + n.x() * du.y() - 0.5 * (u[dof_index(i, 2)] + u[dof_index(j, 2)]) * lattice.length[beam];
+}
+
 /// Eq. 20's normal spring on a beam: k g g^T on its ends' translations (x_i, y_i, x_j, y_j), with
 /// g = (-n, n) so that g.u is the normal elongation. Its force is k (g.u) g: -k (g.u) n on i, +k (g.u) n
 /// on j. The one copy of this arithmetic for the mechanics' assembly, downdate and reactions and the
