@@ -18,6 +18,7 @@
 #include "hm/core/file_output.hpp"
 #include "hm/lattice2d/mechanics/calibration.hpp"
 #include "hm/verification/benchmark.hpp"
+#include "kgd_run.hpp"
 #include "report_writer.hpp"
 
 namespace hm::verification {
@@ -127,51 +128,6 @@ BenchmarkResult griffith_growth(const BenchmarkContext& ctx) {
 }
 
 // --- the fluid-driven crack ---------------------------------------------------------------------------
-
-// One state of the fluid-driven crack: after an accepted step.
-struct KgdPoint {
-  double t = 0.0, injected = 0.0, crack_volume = 0.0, pressure = 0.0, half_length = 0.0;
-  int n_broken = 0;
-  int events = 0;        // breaks and teeth in the step that ended here
-  double suction = 0.0;  // the share of the fractures' area whose fluid is below 0 (isolated, unfed parts)
-};
-
-struct KgdRun {
-  std::vector<KgdPoint> points;
-  bool ok = false;
-  std::string message;
-  int n_steps = 0, passes = 0;
-  double seconds = 0.0, max_balance = 0.0;
-};
-
-// The half length of the crack the source feeds (the dry benchmark's c, crack_half_length).
-double fed_crack_half_length(const l2::CoupledModel& m) {
-  const int source = m.flow().source_triangle();
-  for (const std::vector<int>& mode : m.flow().crack_modes())
-    if (std::find(mode.begin(), mode.end(), source) != mode.end()) return crack_half_length(m.reference_dual(), mode);
-  return 0.0;
-}
-
-KgdRun run_kgd(const cases::RunCase& c) {
-  KgdRun r;
-  const auto model = cases::make_coupled_model(c);
-  const l2::CoupledRunSummary run =
-      model->run(c.stepping, [&](const l2::CoupledModel& m, const l2::CoupledStepSummary& s, bool) {
-        if (m.time() <= 0.0) return;
-        const l2::FlowTotals& totals = m.flow().totals();
-        const double suction = cases::fracture_pressure(m).negative_area_fraction;
-        r.points.push_back({m.time(), totals.injected, totals.deformation, cases::injection_pressure(m),
-                            fed_crack_half_length(m), m.n_broken(), s.n_breaks + s.n_teeth,
-                            std::isnan(suction) ? 0.0 : suction});
-      });
-  r.ok = run.is_ok();
-  r.message = run.message;
-  r.n_steps = run.n_steps;
-  r.passes = run.total_iterations;
-  r.seconds = run.seconds;
-  r.max_balance = run.max_balance_error;
-  return r;
-}
 
 // The crack's volume over the injected volume at the last state with c up to the growth window's end:
 // a crack grown further may break through the disk's drained rim (the brittle law's does at N = 3000,

@@ -10,6 +10,7 @@ const std::vector<Benchmark>& all_benchmarks() {
     add_lattice2d_elastic_benchmarks(all);
     add_lattice2d_fracture_benchmarks(all);
     add_lattice2d_propagation_benchmarks(all);
+    add_lattice2d_kgd_transition_benchmarks(all);
     add_lattice2d_fracture_energy_benchmarks(all);
     add_lattice2d_coupled_benchmarks(all);
     add_lattice2d_vs_fdm1d_benchmarks(all);

@@ -115,6 +115,7 @@ void add_fdm1d_benchmarks(std::vector<Benchmark>& into);
 void add_lattice2d_elastic_benchmarks(std::vector<Benchmark>& into);
 void add_lattice2d_fracture_benchmarks(std::vector<Benchmark>& into);
 void add_lattice2d_propagation_benchmarks(std::vector<Benchmark>& into);
+void add_lattice2d_kgd_transition_benchmarks(std::vector<Benchmark>& into);
 void add_lattice2d_fracture_energy_benchmarks(std::vector<Benchmark>& into);
 void add_lattice2d_coupled_benchmarks(std::vector<Benchmark>& into);
 void add_lattice2d_vs_fdm1d_benchmarks(std::vector<Benchmark>& into);
