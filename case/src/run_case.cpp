@@ -181,12 +181,8 @@ void add_flow_keys(CaseKeys<RunCase>& k) {
       .choice("crack_aperture", [](auto& c) -> auto& { return c.flow.fracture_flow.aperture; },
               "the cubic law's aperture of an open facet: its axial opening (the gap normal to the facet) or the "
               "length of its displacement jump (axial opening and slide), which a facet inclined to its crack "
-              "needs to conduct the crack's opening (docs/flow.md, \"The cubic law on a lattice crack\"); "
-              "\"jump\" only with fracture_flow = \"cubic\"",
-              [](const RunCase& c) { return lt::default_crack_aperture(c.flow.fracture_flow.law); },
-              "`\"" + core::name_of(lt::default_crack_aperture(lt::FractureFlow::cubic)) +
-                  "\"` with fracture_flow = \"cubic\"; `\"" +
-                  core::name_of(lt::default_crack_aperture(lt::FractureFlow::permeability)) + "\"` otherwise")
+              "needs to conduct the crack's opening (docs/flow.md, \"The cubic law on a lattice crack\"); only "
+              "with fracture_flow = \"cubic\"")
       .check([](CaseTable& flow, CaseTable& root, RunCase& c) {
         check_cubic_law(flow, c);
         if (const double ramp = c.flow.injection_ramp_time; !(ramp >= 0.0 && std::isfinite(ramp)))
