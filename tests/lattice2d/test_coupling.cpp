@@ -395,6 +395,7 @@ TEST_CASE("A straight cut opened by w: each open facet's jump is w, its axial op
     least_cosine = std::min(least_cosine, cosine);
     // Differences of displacements ~1e-3 formed from terms ~1e-4 of the rigid motion: round-off ~1e-19.
     CHECK(axial[e] == Approx(w * cosine).margin(1e-17));
+    // The jump's length from two components formed with that round-off: relative ~1e-16 of w, 1e-12 with room.
     CHECK(jump[e] == Approx(w).epsilon(1e-12));
   }
   // The cut has facets far from normal to the opening, where the two definitions differ most.

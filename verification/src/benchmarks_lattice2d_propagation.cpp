@@ -10,10 +10,7 @@
 #include <vector>
 
 #include "crack_growth.hpp"
-#include "hm/case/coupled_model_of_case.hpp"
-#include "hm/case/fracture_pressure.hpp"
 #include "hm/case/run_case.hpp"
-#include "hm/case/run_output.hpp"
 #include "hm/core/csv_writer.hpp"
 #include "hm/core/file_output.hpp"
 #include "hm/lattice2d/mechanics/calibration.hpp"
