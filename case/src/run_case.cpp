@@ -179,10 +179,11 @@ void add_flow_keys(CaseKeys<RunCase>& k) {
             "w_r/R, the aperture a crack keeps when its faces touch (the cubic law): a pinched point does not "
             "block the crack's flow")
       .choice("crack_aperture", [](auto& c) -> auto& { return c.flow.fracture_flow.aperture; },
-              "the cubic law's aperture of an open facet: its axial opening (the gap normal to the facet) or the "
-              "length of its displacement jump (axial opening and slide), which a facet inclined to its crack "
-              "needs to conduct the crack's opening (docs/flow.md, \"The cubic law on a lattice crack\"); only "
-              "with fracture_flow = \"cubic\"")
+              "the cubic law's aperture of a facet: its axial opening (the gap normal to the facet); the length "
+              "of its displacement jump (axial opening and slide) where open; or the jump along the crack's "
+              "local normal (through the facet and its cracked neighbours) where that is larger than the axial "
+              "opening. A facet inclined to its crack needs one of the last two to conduct the crack's opening "
+              "(docs/flow.md, \"The cubic law on a lattice crack\"); only with fracture_flow = \"cubic\"")
       .check([](CaseTable& flow, CaseTable& root, RunCase& c) {
         check_cubic_law(flow, c);
         if (const double ramp = c.flow.injection_ramp_time; !(ramp >= 0.0 && std::isfinite(ramp)))

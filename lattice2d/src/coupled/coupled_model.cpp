@@ -552,7 +552,7 @@ void CoupledModel::update_crack_stabiliser(bool keep_unchanged_modes) {
 void CoupledModel::update_crack_openings(const Eigen::VectorXd& u) {
   const FractureFlowSpec& law = flow_->parameters().fracture_flow;
   if (law.law != FractureFlow::cubic) return;
-  flow_->set_crack_openings(crack_facet_openings(lattice(), flow_->crack_weights(), u, law.aperture));
+  flow_->set_crack_openings(crack_facet_openings(lattice(), reference_dual_, flow_->crack_weights(), u, law.aperture));
 }
 
 bool CoupledModel::solve_flow(double dt, int pass, const Eigen::VectorXd& u, const Eigen::VectorXd& pressure_guess,

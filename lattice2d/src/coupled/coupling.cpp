@@ -89,16 +89,58 @@ Eigen::VectorXd crack_opening_volumes(const Lattice& lattice, const DualGraph& d
   return v;
 }
 
-Eigen::VectorXd crack_facet_openings(const Lattice& lattice, const Eigen::VectorXd& crack_weight,
-                                     const Eigen::VectorXd& u, CrackAperture aperture) {
+Eigen::Vector2d local_crack_normal(const Lattice& lattice, const DualGraph& reference,
+                                   const Eigen::VectorXd& crack_weight, int beam) {
+  const Eigen::Vector2d n = lattice.direction.col(beam);
+  const auto [s, t] = lattice.beam_triangles[static_cast<std::size_t>(beam)];
+  if (t < 0) return n;
+  // The far end of the cracked facet `f` that meets this one at triangle `end`, or `end` itself when
+  // f is not cracked (or is a boundary beam, whose segment ends on the boundary, not at a triangle).
+  const auto far_end_through = [&](int f, int end) -> Eigen::Vector2d {
+    const auto [a, b] = lattice.beam_triangles[static_cast<std::size_t>(f)];
+    if (f == beam || !(crack_weight[f] > 0.0) || b < 0) return reference.dual_point.col(end);
+    return reference.dual_point.col(a == end ? b : a);
+  };
+  // The chord's vector from the s side to the t side: (far ends beyond t) - (far ends beyond s), each
+  // side's ends summed as vectors from its triangle so that a branch adds its arms.
+  Eigen::Vector2d chord = reference.dual_point.col(t) - reference.dual_point.col(s);
+  for (const int f : lattice.triangle_beams[static_cast<std::size_t>(t)])
+    chord += far_end_through(f, t) - reference.dual_point.col(t);
+  for (const int f : lattice.triangle_beams[static_cast<std::size_t>(s)])
+    chord += reference.dual_point.col(s) - far_end_through(f, s);
+  const double length = chord.norm();
+  if (!(length > 1e-9 * lattice.length[beam])) return n;
+  const Eigen::Vector2d normal(-chord.y() / length, chord.x() / length);
+  return normal.dot(n) >= 0.0 ? normal : Eigen::Vector2d(-normal);
+}
+
+Eigen::VectorXd crack_facet_openings(const Lattice& lattice, const DualGraph& reference,
+                                     const Eigen::VectorXd& crack_weight, const Eigen::VectorXd& u,
+                                     CrackAperture aperture) {
   assert(crack_weight.size() == lattice.n_beams() && "crack_facet_openings: one weight per beam");
   assert(u.size() == 3 * lattice.n_particles() && "crack_facet_openings: 3 dofs per particle");
+  assert((aperture != CrackAperture::crack_normal || reference.dual_point.cols() == lattice.n_triangles()) &&
+         "crack_facet_openings: the reference dual graph of another lattice");
   Eigen::VectorXd opening = Eigen::VectorXd::Zero(lattice.n_beams());
   for (int e = 0; e < lattice.n_beams(); ++e) {
     if (!(crack_weight[e] > 0.0)) continue;
     const double axial = normal_elongation(lattice, u, e);
-    // A closed facet's gap is its axial opening whatever it slides: the contact shuts it.
-    opening[e] = aperture == CrackAperture::jump && axial > 0.0 ? std::hypot(axial, facet_slide(lattice, u, e)) : axial;
+    switch (aperture) {
+      case CrackAperture::axial: opening[e] = axial; break;
+      case CrackAperture::jump:
+        // A closed facet's gap is its axial opening whatever it slides: the contact shuts it.
+        opening[e] = axial > 0.0 ? std::hypot(axial, facet_slide(lattice, u, e)) : axial;
+        break;
+      case CrackAperture::crack_normal: {
+        // The jump is axial n + slide s, s = n turned by +90 degrees (facet_slide).
+        const Eigen::Vector2d n = lattice.direction.col(e);
+        const Eigen::Vector2d normal = local_crack_normal(lattice, reference, crack_weight, e);
+        const double along_normal =
+            axial * n.dot(normal) + facet_slide(lattice, u, e) * (n.x() * normal.y() - n.y() * normal.x());
+        opening[e] = std::max(axial, along_normal);
+        break;
+      }
+    }
   }
   return opening;
 }

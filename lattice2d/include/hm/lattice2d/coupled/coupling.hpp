@@ -95,13 +95,24 @@ inline double face_pressure_share(double b, double w) { return w == 0.0 ? b : w 
 Eigen::VectorXd crack_opening_volumes(const Lattice& lattice, const DualGraph& dual,
                                       const Eigen::VectorXd& crack_weight, const Eigen::VectorXd& u);
 
+/// The unit normal of the crack through beam `beam`'s facet, on the side of the beam's direction n: the
+/// normal of the chord through the facet (its Voronoi segment in `reference`, the undeformed dual graph)
+/// and the facets with crack weight > 0 that share its ends, each end continued by every such facet (a
+/// chain's chord; a branch adds both arms). n itself for a boundary beam, a facet with no cracked
+/// neighbour, or a chord shorter than 1e-9 of the beam (a crack that turns back on itself).
+Eigen::Vector2d local_crack_normal(const Lattice& lattice, const DualGraph& reference,
+                                   const Eigen::VectorXd& crack_weight, int beam);
+
 /// The openings the cubic law's apertures come from (FlowNetwork::set_crack_openings), one per beam, 0
-/// where the crack weight is 0: the axial opening (u_j - u_i).n, the one crack_opening_volumes charges,
-/// or with CrackAperture::jump, where that is > 0, the length of the facet's displacement jump (with
-/// facet_slide). Rotations move the facet's ends by -s (theta_j - theta_i) along it, s from the beam's
-/// axis: second order for a crack much longer than a beam, and left out.
-Eigen::VectorXd crack_facet_openings(const Lattice& lattice, const Eigen::VectorXd& crack_weight,
-                                     const Eigen::VectorXd& u, CrackAperture aperture);
+/// where the crack weight is 0: the axial opening (u_j - u_i).n, the one crack_opening_volumes charges;
+/// with CrackAperture::jump, where that is > 0, the length of the facet's displacement jump (with
+/// facet_slide); with CrackAperture::crack_normal, the larger of the axial opening and the jump's
+/// component along local_crack_normal. Rotations move the facet's ends by -s (theta_j - theta_i) along
+/// it, s from the beam's axis: second order for a crack much longer than a beam, and left out.
+/// `reference` is read only for crack_normal.
+Eigen::VectorXd crack_facet_openings(const Lattice& lattice, const DualGraph& reference,
+                                     const Eigen::VectorXd& crack_weight, const Eigen::VectorXd& u,
+                                     CrackAperture aperture);
 
 /// The borehole's volume gradient dV_h/du (3 n_particles; zero off the wall): for each wall beam, half
 /// its length times the normal into the solid on each end, the wall traction of pressure_forces per

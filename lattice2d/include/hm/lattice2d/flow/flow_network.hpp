@@ -85,10 +85,16 @@ enum class CrackAperture {
   /// The length of the facet's displacement jump at the beam's midpoint (the axial opening and the slide
   /// beside it) where the facet is open, the axial opening where it is closed: w on every facet of a
   /// crack opened by w, so a straight cut conducts w^3/12 over its Voronoi path's tortuosity (0.78).
+  /// Discontinuous where a sliding facet opens (0 to its whole slide).
   jump,
+  /// The facet's displacement jump along the crack's local normal (the normal of the chord through the
+  /// facet and the cracked facets that share its ends), or the axial opening where that is larger: ~w on
+  /// a crack opened by w, ~0 on a crack sliding along itself, and continuous in the displacements.
+  crack_normal,
 };
 constexpr auto enum_names(CrackAperture) {
-  return core::enum_table<CrackAperture>({{CrackAperture::axial, "axial"}, {CrackAperture::jump, "jump"}});
+  return core::enum_table<CrackAperture>(
+      {{CrackAperture::axial, "axial"}, {CrackAperture::jump, "jump"}, {CrackAperture::crack_normal, "crack_normal"}});
 }
 
 /// A crack's conduction: the law, and its transmissivity where the law has one.
