@@ -121,6 +121,7 @@ int main(int argc, char** argv) {
     FractureFlowSpec cubic;
     cubic.law = FractureFlow::cubic;
     cubic.permeability = 1e-14;
+    cubic.aperture = default_crack_aperture(FractureFlow::cubic);
     const Timing c = run_fig12(n, t_end, SpdSolverKind::cholmod, cubic);
     std::printf(
         "The same with the cubic law for the cracks (k/R^2 = 1e-14): %s, %d steps, %d passes, %d beams broken\n",

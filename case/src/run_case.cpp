@@ -183,7 +183,12 @@ void add_flow_keys(CaseKeys<RunCase>& k) {
               "of its displacement jump (axial opening and slide) where open; or the jump along the crack's "
               "local normal (through the facet and its cracked neighbours) where that is larger than the axial "
               "opening. A facet inclined to its crack needs one of the last two to conduct the crack's opening "
-              "(docs/flow.md, \"The cubic law on a lattice crack\"); only with fracture_flow = \"cubic\"")
+              "(docs/flow.md, \"The cubic law on a lattice crack\"); other than \"axial\" only with "
+              "fracture_flow = \"cubic\"",
+              [](const RunCase& c) { return lt::default_crack_aperture(c.flow.fracture_flow.law); },
+              "`\"" + core::name_of(lt::default_crack_aperture(lt::FractureFlow::cubic)) +
+                  "\"` with fracture_flow = \"cubic\"; `\"" +
+                  core::name_of(lt::default_crack_aperture(lt::FractureFlow::permeability)) + "\"` otherwise")
       .check([](CaseTable& flow, CaseTable& root, RunCase& c) {
         check_cubic_law(flow, c);
         if (const double ramp = c.flow.injection_ramp_time; !(ramp >= 0.0 && std::isfinite(ramp)))

@@ -110,3 +110,29 @@ TEST_CASE("The water-filled borehole: storage \"fluid\" takes deformation \"full
   CHECK_THROWS_WITH(hm::cases::read_run_case(dir.path / "bad.toml"),
                     Catch::Contains("[physics]") && Catch::Contains("E_over_Kw = 0") && Catch::Contains("> 0"));
 }
+
+TEST_CASE("The cubic law's aperture defaults to the jump along the crack's normal, the other laws' to the axial opening",
+          "[case]") {
+  const std::string fig14 = hm::test::slurp(std::string(HM_SOURCE_DIR) + "/cases/fig14_b0.2_quick.toml");
+  TempDir dir("flow-aperture");
+  dir.write("iota.toml", fig14);
+  const hm::cases::RunCase iota = hm::cases::read_run_case(dir.path / "iota.toml");
+  CHECK(iota.flow.fracture_flow.aperture == lt::CrackAperture::axial);
+  std::string cubic = fig14;
+  const auto at = cubic.find("[flow]\n");
+  REQUIRE(at != std::string::npos);
+  cubic.insert(at + 7, "fracture_flow = \"cubic\"\nrock_permeability = 1e-14\n");
+  cubic.replace(cubic.find("\niota = 1e3") + 1, 10, "iota = 1.0");
+  dir.write("cubic.toml", cubic);
+  const hm::cases::RunCase c = hm::cases::read_run_case(dir.path / "cubic.toml");
+  CHECK(c.flow.fracture_flow.aperture == lt::CrackAperture::crack_normal);
+  // The resolved config states it and reads back to it.
+  const std::string config = hm::cases::run_case_to_toml(c, "");
+  CHECK_THAT(config, Catch::Contains("crack_aperture = \"crack_normal\""));
+  dir.write("config.toml", config);
+  CHECK(hm::cases::read_run_case(dir.path / "config.toml").flow.fracture_flow.aperture == lt::CrackAperture::crack_normal);
+  // Given, as given.
+  cubic.insert(at + 7, "crack_aperture = \"axial\"\n");
+  dir.write("axial.toml", cubic);
+  CHECK(hm::cases::read_run_case(dir.path / "axial.toml").flow.fracture_flow.aperture == lt::CrackAperture::axial);
+}

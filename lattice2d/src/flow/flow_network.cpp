@@ -115,6 +115,10 @@ BoreholeDeformation default_borehole_deformation(BoreholeStorage storage) {
   return BoreholeDeformation::biot;
 }
 
+CrackAperture default_crack_aperture(FractureFlow law) {
+  return law == FractureFlow::cubic ? CrackAperture::crack_normal : CrackAperture::axial;
+}
+
 FlowParameters flow_parameters_of(const hm::analytic::DimensionlessParameters& parameters, double dt,
                                   const FlowOptions& options) {
   FlowParameters flow;

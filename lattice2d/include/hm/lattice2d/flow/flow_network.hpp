@@ -111,7 +111,8 @@ struct FractureFlowSpec {
   /// w_r / R, the residual aperture of a crack: a crack closed by its contact still conducts as a
   /// plate this wide, so a pinched point does not block it. Used with law = cubic. Allowed: finite, >= 0.
   double residual_aperture = 0.0;
-  /// The opening that is the cubic law's aperture. Used with law = cubic.
+  /// The opening that is the cubic law's aperture. Used with law = cubic; a case's default is
+  /// default_crack_aperture(law).
   CrackAperture aperture = CrackAperture::axial;
 };
 
@@ -189,6 +190,12 @@ struct FlowParameters : FlowOptions {
 /// coupling loop through the borehole node does not converge (docs/coupling.md, section 3), so a case reader takes this
 /// as the default.
 BoreholeDeformation default_borehole_deformation(BoreholeStorage storage);
+
+/// The aperture that goes with a crack flow law: the jump along the crack's local normal for the cubic
+/// law (with the axial opening a straight lattice crack conducts a few per cent of the parallel plates,
+/// and the jump is discontinuous where a facet opens: docs/flow.md), the axial opening, unused, for the
+/// others. A case reader takes this as the default.
+CrackAperture default_crack_aperture(FractureFlow law);
 
 /// The options of the flow network's CholmodSolver (flow_network.cpp says why each).
 SpdSolverOptions flow_solver_options();
