@@ -5,8 +5,10 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
+#include <mutex>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -167,6 +169,49 @@ TEST_CASE("Every result figure of the paper is drawn by a registered benchmark, 
     INFO("Fig. " << f);
     CHECK(declared.count(f) == 1);
   }
+}
+
+TEST_CASE("Two workers start the longest benchmarks first, one worker takes them in report order",
+          "[verification][harness]") {
+  TempDir dir("harness_order");
+  std::mutex mutex;
+  std::vector<int> started;
+  std::atomic<int> n_started{0};
+  const std::array<double, 4> seconds{0.0, 5.0, 0.0, 9.0};
+  std::vector<Benchmark> benchmarks;
+  for (int id = 0; id < 4; ++id) {
+    benchmarks.push_back({"demo.b" + std::to_string(id), "B", "", Tier::quick, [&, id](const BenchmarkContext&) {
+                            {
+                              std::lock_guard lock(mutex);
+                              started.push_back(id);
+                            }
+                            ++n_started;
+                            // The long ones hold their worker until both workers have started one (at most
+                            // 20 s), so that the first two starts are the two workers' first picks.
+                            for (int i = 0; i < 2000 && seconds[id] > 0.0 && n_started < 2; ++i)
+                              std::this_thread::sleep_for(std::chrono::milliseconds(10));
+                            BenchmarkResult r;
+                            r.metrics.push_back(metric(0.1 * id, 0.0, 1.0));
+                            return r;
+                          }});
+    benchmarks.back().quick_seconds = seconds[id];
+  }
+  HarnessOptions options;
+  options.jobs = 2;
+  options.out_dir = dir.path / "two";
+  std::ostringstream log;
+  REQUIRE(run_harness(benchmarks, options, log).ok());
+  REQUIRE(started.size() == 4);
+  CHECK(std::set<int>{started[0], started[1]} == std::set<int>{1, 3});
+  started.clear();
+  n_started = 0;
+  options.jobs = 1;
+  options.out_dir = dir.path / "one";
+  std::ostringstream serial_log;
+  REQUIRE(run_harness(benchmarks, options, serial_log).ok());
+  CHECK(started == std::vector<int>{0, 1, 2, 3});
+  // The report is in registration order either way.
+  CHECK(slurp(dir.path / "two" / "metrics.json") == slurp(dir.path / "one" / "metrics.json"));
 }
 
 TEST_CASE("Benchmarks run side by side write the report of one after the other, each on one thread",

@@ -97,6 +97,9 @@ struct Benchmark {
   /// The paper's result figures it draws ("7", "15", "C2"): the report's list of every figure and the
   /// benchmarks that regenerate it.
   std::vector<std::string> paper_figures = {};
+  /// Roughly how long its quick tier takes on one core, in seconds (0: a few at most). Several workers
+  /// start the longest first, so that a long benchmark does not start last and run on alone.
+  double quick_seconds = 0.0;
 };
 
 /// One of the paper's result figures: its number ("7", "C2") and what it shows.
