@@ -8,7 +8,7 @@ import pandas as pd
 
 runs, out = sys.argv[1], sys.argv[2]
 rows=[]
-for c in ["fig14_b0.2","fig14_b0.8","fig17_b0.2","fig17_b0.8","fig16_b0.2","fig16_b0.8"]:
+for c in ["fig14_b0.2","fig14_b0.8","fig17_b0.2","fig17_b0.8","fig16_b0.2","fig16_b0.8","fig12_b0.2"]:
     for law in ["iota","cubic"]:
         d=os.path.join(runs, f"{c}_{law}")
         if not os.path.exists(f"{d}/fracture_summary.csv"): continue
