@@ -264,7 +264,9 @@ void add_coupling_keys(CaseKeys<RunCase>& k) {
       .real("initial_relaxation", [](auto& c) -> auto& { return c.coupling.initial_relaxation; }, "0 < value <= 1",
             "Aitken's first factor, Anderson's mixing")
       .integer("anderson_depth", [](auto& c) -> auto& { return c.coupling.anderson_depth; }, 1, 50, "1 ... 50",
-               "residual differences Anderson combines")
+               "residual differences Anderson combines (the paper cases of Figs. 12, 14, 16, 17 use 20: a crack draining "
+               "under the cubic law holds a slow mode that 10 do not span; each costs two vectors of the "
+               "(p, u) state; docs/coupling.md)")
       .choice("fracture_check", [](auto& c) -> auto& { return c.coupling.fracture_check; },
               "when beams are checked for failure: every pass (Fig. 5) or at the coupled equilibrium", {},
               "`\"" + core::name_of(lt::CouplingOptions{}.fracture_check) +
