@@ -9,18 +9,16 @@ using hm::lattice2d::AndersonAcceleration;
 
 namespace {
 
-// Iterations of x <- next(x, g(x)) until |g(x) - x| <= 1e-10 |x*|, for the affine contraction
-// g(x) = A x + c with a slow mode (eigenvalue 0.98) and a fast one.
-int iterations_to_converge(AndersonAcceleration* acceleration, Eigen::VectorXd* fixed_point) {
-  Eigen::Matrix3d A;
-  A << 0.98, 0.0, 0.0, 0.0, 0.5, 0.1, 0.0, -0.1, 0.3;
-  const Eigen::Vector3d c(1.0, -2.0, 0.5);
-  const Eigen::Vector3d exact = (Eigen::Matrix3d::Identity() - A).lu().solve(c);
-  Eigen::VectorXd x = Eigen::Vector3d::Zero();
+// Iterations of x <- next(x, g(x)) from x = 0 until |g(x) - x| <= 1e-10 |x*| (or -1 after 5000), for the
+// affine contraction g(x) = A x + c; without an acceleration, the plain x <- g(x).
+int iterations_to_converge(const Eigen::MatrixXd& A, const Eigen::VectorXd& c, AndersonAcceleration* acceleration,
+                           Eigen::VectorXd* fixed_point = nullptr) {
+  const Eigen::VectorXd exact = (Eigen::MatrixXd::Identity(A.rows(), A.cols()) - A).lu().solve(c);
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(c.size());
   for (int k = 1; k <= 5000; ++k) {
     const Eigen::VectorXd g = A * x + c;
     if ((g - x).norm() <= 1e-10 * exact.norm()) {
-      *fixed_point = x;
+      if (fixed_point) *fixed_point = x;
       return k;
     }
     x = acceleration ? acceleration->next(x, g) : g;
@@ -28,25 +26,23 @@ int iterations_to_converge(AndersonAcceleration* acceleration, Eigen::VectorXd* 
   return -1;
 }
 
-// Iterations until |g(x) - x| <= 1e-10 |x*| (or -1 after 5000) for g(x) = A x + c in R^200 whose A has
-// 15 slow modes (eigenvalues 0.9 ... 0.999) and 185 fast ones (0 ... 0.3): a slow subspace wider than a
-// short history, as a crack draining under the cubic law has. Anderson only takes inner products and
-// combinations of differences, so it does the same in any orthonormal basis: A is diagonal here.
+// A slow mode (eigenvalue 0.98) and a fast one.
+int iterations_to_converge(AndersonAcceleration* acceleration, Eigen::VectorXd* fixed_point) {
+  Eigen::Matrix3d A;
+  A << 0.98, 0.0, 0.0, 0.0, 0.5, 0.1, 0.0, -0.1, 0.3;
+  return iterations_to_converge(A, Eigen::Vector3d(1.0, -2.0, 0.5), acceleration, fixed_point);
+}
+
+// In R^200, 15 slow modes (eigenvalues 0.9 ... 0.999) and 185 fast ones (0 ... 0.3): a slow subspace
+// wider than a short history, as a crack draining under the cubic law has. Anderson only takes inner
+// products and combinations of differences, so it does the same in any orthonormal basis: A is diagonal.
 int iterations_with_slow_subspace(int depth) {
   const int n = 200, n_slow = 15;
   Eigen::VectorXd lambda(n);
   for (int i = 0; i < n; ++i)
     lambda[i] = i < n_slow ? 0.9 + 0.099 * i / (n_slow - 1) : 0.3 * (i - n_slow) / (n - n_slow - 1);
-  const Eigen::VectorXd c = Eigen::VectorXd::Ones(n);
-  const Eigen::VectorXd exact = c.cwiseQuotient((1.0 - lambda.array()).matrix());
   AndersonAcceleration anderson(depth, 0.5);
-  Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
-  for (int k = 1; k <= 5000; ++k) {
-    const Eigen::VectorXd g = lambda.cwiseProduct(x) + c;
-    if ((g - x).norm() <= 1e-10 * exact.norm()) return k;
-    x = anderson.next(x, g);
-  }
-  return -1;
+  return iterations_to_converge(Eigen::MatrixXd(lambda.asDiagonal()), Eigen::VectorXd::Ones(n), &anderson);
 }
 
 }  // namespace
